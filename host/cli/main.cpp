@@ -1,0 +1,50 @@
+// lumibench -- benchmark of real-time approximations of photometric polygonal lights.
+#include "cl/runtime.h"
+#include "cli/commands.h"
+#include "util/error.h"
+
+#include <fmt/format.h>
+
+#include <iostream>
+
+namespace lb::cli {
+void notImplemented(const std::string& what)
+{
+    throw Error(what + ": not implemented yet", kExitNotImplemented);
+}
+} // namespace lb::cli
+
+int main(int argc, char** argv)
+{
+    CLI::App app{"lumibench: a benchmark of real-time approximations of photometric polygonal lights\n"
+                 "(scattered sampling / cubature against Monte Carlo integration and a converged reference).\n"
+                 "Conventions: ../shared/DESIGN.md. Exit codes: 0 ok, 1 error, 2 bad input, 3 not implemented.",
+                 "lumibench"};
+    app.require_subcommand(1);
+    app.set_help_all_flag("--help-all", "Print help for every subcommand");
+    lb::cli::addDevicesCommand(app);
+    lb::cli::addLuminaireCommand(app);
+    lb::cli::addRenderCommand(app);
+    lb::cli::addCompareCommand(app);
+    lb::cli::addRunCommand(app);
+    lb::cli::addMergeCommand(app);
+    lb::cli::addTuneCommand(app);
+    lb::cli::addStabilityCommand(app);
+    lb::cli::addBenchCommand(app);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        int rc = app.exit(e);
+        return rc == 0 ? 0 : lb::kExitInput;
+    } catch (const lb::Error& e) {
+        std::cerr << "lumibench: error: " << e.what() << '\n';
+        return e.code;
+    } catch (const cl::Error& e) {
+        std::cerr << "lumibench: OpenCL error: " << e.what() << " failed: " << lb::ocl::errorString(e.err()) << '\n';
+        return lb::kExitError;
+    } catch (const std::exception& e) {
+        std::cerr << "lumibench: error: " << e.what() << '\n';
+        return lb::kExitError;
+    }
+    return 0;
+}

@@ -1,0 +1,32 @@
+// scene.h -- the normalized evaluation scene of DESIGN section 2.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace lb {
+
+struct Scene {
+    double height = 1.0;                 // h: lower edge at R = pi/2; centre at h + L/2
+    double rotation = 3.14159265358979;  // R: angle between n_L and n_x, pi/2 .. pi
+    double width = 1.0;                  // W along u
+    double length = 1.0;                 // L along v
+    double extent = 5.0;                 // S: side of the imaged square
+    int res = 256;                       // N x N pixels
+
+    glm::dvec3 center() const;
+    glm::dvec3 u() const;
+    glm::dvec3 v() const;   // cross(u, n_L)
+    glm::dvec3 n() const;   // n_L = (0, sin R, cos R)
+    std::array<glm::dvec3, 4> corners() const;  // (-u,-v), (+u,-v), (+u,+v), (-u,+v)
+    glm::dvec3 pixel(int row, int col) const;   // receiver point at a pixel centre
+
+    // The LB_SCENE_SIZE reals the kernels take (kernels/common/scene.h).
+    std::vector<double> params() const;
+    std::string describe() const;
+};
+
+} // namespace lb

@@ -1,0 +1,7 @@
+/* lbmath.h -- the one include for all shared math, in dependency order.
+ * Kernels: #include "common/lbmath.h" once. Host: host/math/kmath.h. */
+#include "vec.h"
+#include "spherical.h"
+#include "polygon.h"
+#include "photometry.h"
+#include "scene.h"

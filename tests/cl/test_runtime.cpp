@@ -1,0 +1,113 @@
+// The OpenCL layer: device listing, build errors, program cache, timing.
+#include "testutil.h"
+#include "util/error.h"
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+
+namespace lb {
+namespace {
+
+TEST(Runtime, ListsAtLeastTheDefaultDevice)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    auto devs = ocl::listDevices();
+    ASSERT_FALSE(devs.empty());
+    EXPECT_EQ(rt->info().index, ocl::chooseDevice(-1));
+    EXPECT_THROW(ocl::chooseDevice(static_cast<int>(devs.size())), InputError);
+}
+
+TEST(Runtime, ErrorStringsAreReadable)
+{
+    EXPECT_EQ(ocl::errorString(CL_OUT_OF_RESOURCES), "CL_OUT_OF_RESOURCES (-5)");
+    EXPECT_EQ(ocl::errorString(-9999), "unknown OpenCL error (-9999)");
+}
+
+TEST(Runtime, BuildFailureCarriesTheLog)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    // A syntax error injected through -D must surface with the compiler's message.
+    try {
+        rt->program("selftest.cl", "-Dlb_clip_polygon=1+");
+        FAIL() << "build should have failed";
+    } catch (const Error& e) {
+        std::string m = e.what();
+        EXPECT_NE(m.find("selftest.cl"), std::string::npos) << m;
+        EXPECT_NE(m.find("CL_BUILD_PROGRAM_FAILURE"), std::string::npos) << m;
+        EXPECT_GT(m.size(), 100u) << "the build log is missing: " << m;
+    }
+}
+
+TEST(Runtime, ProgramCacheReturnsSameProgram)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    cl::Program& a = rt->program("selftest.cl");
+    double t = rt->buildSeconds();
+    cl::Program& b = rt->program("selftest.cl");
+    EXPECT_EQ(a(), b());
+    EXPECT_EQ(rt->buildSeconds(), t); // no second build
+}
+
+TEST(Runtime, TimingIsMedianOfRepetitions)
+{
+    auto t = ocl::summarize({5, 1, 3, 2, 4});
+    EXPECT_EQ(t.median_ms, 3);
+    EXPECT_EQ(t.min_ms, 1);
+    EXPECT_EQ(t.max_ms, 5);
+    EXPECT_EQ(t.reps, 5);
+    EXPECT_EQ(ocl::summarize({4, 1, 3, 2}).median_ms, 2.5);
+}
+
+TEST(Runtime, ProfilingEventsGivePositiveTimes)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    size_t n = 4096;
+    std::vector<float> tri(9 * n, 1.0f);
+    cl::Buffer in(rt->context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, tri.size() * 4, tri.data());
+    cl::Buffer out(rt->context(), CL_MEM_WRITE_ONLY, n * 4);
+    cl::Kernel k = rt->kernel("selftest.cl", "tri_solid_angle");
+    k.setArg(0, in);
+    k.setArg(1, out);
+    k.setArg(2, static_cast<int>(n));
+    auto t = rt->time([&] { return rt->launch1D(k, n); }, 5);
+    EXPECT_EQ(t.reps, 5);
+    EXPECT_GT(t.min_ms, 0.0);
+    EXPECT_LE(t.min_ms, t.median_ms);
+}
+
+// Every kernel file declares its structural variants in a comment line
+//   @variants: "" | "-DFOO" | "-DFOO -DBAR"
+// and must build with each of them (and with -DLB_DOUBLE added where the
+// device has fp64, unless the variant already names it).
+TEST(Runtime, EveryKernelFileBuildsWithEveryVariant)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    namespace fs = std::filesystem;
+    int built = 0;
+    for (auto& e : fs::directory_iterator(ocl::kernelDir())) {
+        if (e.path().extension() != ".cl") continue;
+        std::ifstream f(e.path());
+        std::string line, variants;
+        while (std::getline(f, line))
+            if (auto p = line.find("@variants:"); p != std::string::npos) {
+                variants = line.substr(p + 10);
+                break;
+            }
+        ASSERT_FALSE(variants.empty()) << e.path() << " declares no @variants line";
+        std::regex q("\"([^\"]*)\"");
+        for (std::sregex_iterator it(variants.begin(), variants.end(), q), end; it != end; ++it) {
+            std::string opts = (*it)[1];
+            std::vector<std::string> all = {opts};
+            if (rt->fp64() && opts.find("LB_DOUBLE") == std::string::npos) all.push_back(opts + " -DLB_DOUBLE");
+            for (auto& o : all) {
+                EXPECT_NO_THROW(rt->program(e.path().filename().string(), o)) << e.path() << " " << o;
+                ++built;
+            }
+        }
+    }
+    EXPECT_GE(built, 2);
+}
+
+} // namespace
+} // namespace lb

@@ -1,0 +1,76 @@
+// build/lumibench as outside tools call it (DESIGN section 7).
+#include "testutil.h"
+
+#include <array>
+#include <cstdio>
+#include <memory>
+
+namespace lb {
+namespace {
+
+struct Result {
+    int code;
+    std::string out;
+};
+
+// Runs build/lumibench with `args`, capturing stdout and stderr together.
+Result run(const std::string& args)
+{
+    std::string cmd = test::binary() + " " + args + " 2>&1";
+    std::unique_ptr<FILE, int (*)(FILE*)> p(popen(cmd.c_str(), "r"), pclose);
+    Result r{-1, ""};
+    std::array<char, 4096> buf;
+    size_t n;
+    while ((n = fread(buf.data(), 1, buf.size(), p.get())) > 0) r.out.append(buf.data(), n);
+    int st = pclose(p.release());
+    r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+    return r;
+}
+
+TEST(Cli, HelpListsEverySubcommand)
+{
+    auto r = run("--help");
+    EXPECT_EQ(r.code, 0) << r.out;
+    for (const char* c : {"devices", "luminaire", "render", "compare", "run", "merge", "tune", "stability", "bench"})
+        EXPECT_NE(r.out.find(c), std::string::npos) << c << "\n" << r.out;
+}
+
+TEST(Cli, EverySubcommandHasHelp)
+{
+    for (const char* c : {"devices", "luminaire", "luminaire info", "luminaire eval", "render", "compare"}) {
+        auto r = run(std::string(c) + " --help");
+        EXPECT_EQ(r.code, 0) << c << "\n" << r.out;
+        EXPECT_NE(r.out.find("Usage"), std::string::npos) << c << "\n" << r.out;
+    }
+}
+
+TEST(Cli, UnknownSubcommandIsAnInputError)
+{
+    auto r = run("frobnicate");
+    EXPECT_EQ(r.code, 2) << r.out;
+}
+
+TEST(Cli, DevicesListsThePoclDevice)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    auto r = run("devices");
+    EXPECT_EQ(r.code, 0) << r.out;
+    EXPECT_NE(r.out.find(rt->info().name), std::string::npos) << r.out;
+    auto j = run("devices --json");
+    EXPECT_EQ(j.code, 0) << j.out;
+    EXPECT_NE(j.out.find("\"default\": true"), std::string::npos) << j.out;
+}
+
+TEST(Cli, BadDeviceIndexIsAnInputError)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    auto r = run("devices --json");
+    setenv("LUMIBENCH_DEVICE", "99", 1);
+    auto b = run("devices");
+    unsetenv("LUMIBENCH_DEVICE");
+    EXPECT_EQ(b.code, 2) << b.out;
+    EXPECT_NE(b.out.find("LUMIBENCH_DEVICE"), std::string::npos) << b.out;
+}
+
+} // namespace
+} // namespace lb

@@ -1,0 +1,60 @@
+// testutil.h -- shared helpers for the GoogleTest suite.
+#pragma once
+
+#include "cl/runtime.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+namespace lb::test {
+
+// The OpenCL runtime shared by all tests of this process, or nullptr when the
+// machine has no OpenCL device. Tests skip then, unless
+// LUMIBENCH_REQUIRE_DEVICE=1 (set by .ci/run), where a missing device fails.
+inline ocl::Runtime* runtime()
+{
+    static std::unique_ptr<ocl::Runtime> rt;
+    static bool tried = false;
+    if (!tried) {
+        tried = true;
+        try {
+            rt = std::make_unique<ocl::Runtime>();
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "no OpenCL runtime: %s\n", e.what());
+        }
+    }
+    return rt.get();
+}
+
+inline bool deviceRequired()
+{
+    const char* e = std::getenv("LUMIBENCH_REQUIRE_DEVICE");
+    return e && std::string(e) == "1";
+}
+
+#define LB_REQUIRE_RUNTIME(rt)                                                                  \
+    ocl::Runtime* rt = ::lb::test::runtime();                                                   \
+    if (!rt) {                                                                                  \
+        if (::lb::test::deviceRequired()) FAIL() << "LUMIBENCH_REQUIRE_DEVICE=1 but no device"; \
+        GTEST_SKIP() << "no OpenCL device";                                                     \
+    }
+
+// ../shared beside the checkout (luminaires, seeds), or "" when absent.
+inline std::string sharedDir()
+{
+    std::filesystem::path p = LB_SHARED_DIR;
+    return std::filesystem::is_directory(p / "luminaires") ? p.string() : std::string();
+}
+
+#define LB_REQUIRE_SHARED(dir)                                   \
+    std::string dir = ::lb::test::sharedDir();                   \
+    if (dir.empty()) GTEST_SKIP() << "../shared is not present";
+
+inline std::string sourceDir() { return LB_SOURCE_DIR; }
+inline std::string binary() { return LB_BINARY; }
+
+} // namespace lb::test
