@@ -1,0 +1,58 @@
+#include "metrics/image.h"
+
+#include "util/error.h"
+
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
+#include <fmt/format.h>
+
+#include <exception>
+
+namespace lb {
+
+void writeExr(const std::string& path, const Image& img)
+{
+    std::vector<float> f(img.px.begin(), img.px.end());
+    try {
+        Imf::Header header(img.width, img.height);
+        header.channels().insert("Y", Imf::Channel(Imf::FLOAT));
+        Imf::OutputFile file(path.c_str(), header);
+        Imf::FrameBuffer fb;
+        fb.insert("Y", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(f.data()), sizeof(float),
+                                  sizeof(float) * static_cast<size_t>(img.width)));
+        file.setFrameBuffer(fb);
+        file.writePixels(img.height);
+    } catch (const std::exception& e) {
+        throw Error(fmt::format("{}: cannot write OpenEXR: {}", path, e.what()));
+    }
+}
+
+Image readExr(const std::string& path)
+{
+    try {
+        Imf::InputFile file(path.c_str());
+        auto dw = file.header().dataWindow();
+        int w = dw.max.x - dw.min.x + 1, h = dw.max.y - dw.min.y + 1;
+        if (!file.header().channels().findChannel("Y"))
+            throw InputError(fmt::format("{}: expected an OpenEXR channel named Y (irradiance in lux)", path));
+        std::vector<float> f(static_cast<size_t>(w) * h);
+        Imf::FrameBuffer fb;
+        char* base = reinterpret_cast<char*>(f.data()) -
+                     (static_cast<ptrdiff_t>(dw.min.x) + static_cast<ptrdiff_t>(dw.min.y) * w) * sizeof(float);
+        fb.insert("Y", Imf::Slice(Imf::FLOAT, base, sizeof(float), sizeof(float) * static_cast<size_t>(w)));
+        file.setFrameBuffer(fb);
+        file.readPixels(dw.min.y, dw.max.y);
+        Image img(w, h);
+        for (size_t i = 0; i < f.size(); ++i) img.px[i] = f[i];
+        return img;
+    } catch (const Error&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw InputError(fmt::format("{}: cannot read OpenEXR: {}", path, e.what()));
+    }
+}
+
+} // namespace lb
