@@ -1,0 +1,15 @@
+// load.h -- reading luminaire files into a Table (DESIGN section 3).
+#pragma once
+
+#include "photometry/table.h"
+
+#include <string>
+
+namespace lb::photometry {
+
+// Reads an IES LM-63 or EULUMDAT file (chosen by extension, then by content)
+// into an unfolded table of absolute candela. Bad input throws lb::InputError
+// with "FILE:LINE: expected ..., got ...".
+Table load(const std::string& path);
+
+} // namespace lb::photometry
