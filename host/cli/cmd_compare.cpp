@@ -1,13 +1,112 @@
-// lumibench compare (not implemented yet: see the open issues).
+// lumibench compare REFERENCE.exr TEST.exr [--json] [--png PREFIX] [--k K] [--bound B]
+//
+// The error metrics of DESIGN section 5 (metrics/metrics.h) as a table or one
+// JSON object, and optionally the pictures of a figure row: PREFIX_ref.png and
+// PREFIX_test.png tone mapped with one k (default 1 / mean(reference), or --k
+// so that several rows share one k), PREFIX_err.png (orange too bright, blue
+// too dark, white no error, saturated at UEB / |LEB| or at --bound).
 #include "cli/commands.h"
+#include "metrics/image.h"
+#include "metrics/metrics.h"
+#include "metrics/png.h"
+#include "metrics/tonemap.h"
+#include "util/error.h"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <iostream>
+#include <memory>
 
 namespace lb::cli {
 
+namespace {
+
+struct CompareArgs {
+    std::string ref, test, png;
+    bool json = false;
+    double k = 0;      // 0: default 1 / mean(reference)
+    double bound = 0;  // 0: UEB and |LEB|
+};
+
+// "1.234567e-03" or "n/a" for an undefined value.
+std::string num(double v) { return std::isfinite(v) ? fmt::format("{:.6e}", v) : std::string("n/a"); }
+
+void runCompare(const CompareArgs& a)
+{
+    Image R = readExr(a.ref), A = readExr(a.test);
+    metrics::Metrics m;
+    try {
+        m = metrics::compare(R, A);
+    } catch (const InputError& e) {
+        throw InputError(fmt::format("{} vs {}: {}", a.ref, a.test, e.what()));
+    }
+
+    nlohmann::json j = m;
+    j["reference"] = a.ref;
+    j["test"] = a.test;
+    j["width"] = R.width;
+    j["height"] = R.height;
+
+    if (!a.png.empty()) {
+        const double k = a.k > 0 ? a.k : tonemap::defaultK(R);
+        // The bounds the error picture saturates at; UEB / LEB may be NaN only
+        // when every test pixel is non-finite, and then everything is magenta.
+        const double over = a.bound > 0 ? a.bound : (std::isfinite(m.ueb) ? m.ueb : 0.0);
+        const double under = a.bound > 0 ? a.bound : (std::isfinite(m.leb) ? -m.leb : 0.0);
+        const std::string fr = a.png + "_ref.png", ft = a.png + "_test.png", fe = a.png + "_err.png";
+        writePng(fr, tonemap::tonemapPicture(R, k));
+        writePng(ft, tonemap::tonemapPicture(A, k));
+        writePng(fe, tonemap::errorPicture(R, A, over, under));
+        j["k"] = k;
+        j["bound_over"] = over;
+        j["bound_under"] = under;
+        j["pictures"] = {{"ref", fr}, {"test", ft}, {"err", fe}};
+    }
+
+    if (a.json) {
+        std::cout << j.dump(2) << '\n';
+        return;
+    }
+    std::cout << fmt::format("reference  {} ({}x{}, mean {} lx)\n", a.ref, R.width, R.height, num(m.mean_ref))
+              << fmt::format("test       {} (mean {} lx)\n", a.test, num(m.mean_test))
+              << fmt::format("pixels     {} ({} non-finite in test, excluded from every average)\n", m.pixels,
+                             m.nonfinite)
+              << fmt::format("NMSE       {}\n", num(m.nmse)) << fmt::format("NRMSE      {}\n", num(m.nrmse))
+              << fmt::format("relMSE     {}\n", num(m.relmse))
+              << fmt::format("UEB        {} lx (largest over-estimate, max(test - reference, 0))\n", num(m.ueb))
+              << fmt::format("LEB        {} lx (largest under-estimate, min(test - reference, 0))\n", num(m.leb));
+    if (!a.png.empty())
+        std::cout << fmt::format("pictures   {} {} {} (k = {}, error saturates at +{} / -{} lx)\n",
+                                 j["pictures"]["ref"].get<std::string>(), j["pictures"]["test"].get<std::string>(),
+                                 j["pictures"]["err"].get<std::string>(), num(j["k"].get<double>()),
+                                 num(j["bound_over"].get<double>()), num(j["bound_under"].get<double>()));
+    if (m.nonfinite > 0)
+        std::cerr << fmt::format("lumibench: warning: {} has {} non-finite pixels (excluded; magenta in pictures)\n",
+                                 a.test, m.nonfinite);
+}
+
+} // namespace
+
 void addCompareCommand(CLI::App& app)
 {
-    auto* cmd = app.add_subcommand("compare", "Error metrics (NMSE, NRMSE, relMSE, UEB, LEB) of TEST.exr against REFERENCE.exr");
-    cmd->allow_extras();
-    cmd->callback([] { notImplemented("compare"); });
+    auto* cmd = app.add_subcommand(
+        "compare", "Error metrics (NMSE, NRMSE, relMSE, UEB, LEB) of TEST.exr against REFERENCE.exr, and pictures");
+    auto a = std::make_shared<CompareArgs>();
+    cmd->add_option("reference", a->ref, "Reference image (OpenEXR, channel Y, lux)")->required();
+    cmd->add_option("test", a->test, "Test image of the same size")->required();
+    cmd->add_flag("--json", a->json, "Print one JSON object (nmse, nrmse, relmse, ueb, leb, nonfinite, pixels, "
+                                     "mean_ref, mean_test, ...) instead of a table");
+    cmd->add_option("--png", a->png, "Write PREFIX_ref.png, PREFIX_test.png (tone mapped) and PREFIX_err.png "
+                                     "(orange too bright, blue too dark, white no error, magenta non-finite)");
+    cmd->add_option("--k", a->k, "Tone-mapping scale: display L/(1+L) of L = k E (default 1/mean(reference); "
+                                 "give one k to every row of a figure)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--bound", a->bound, "Error (lux) at which the error picture saturates on both sides "
+                                         "(default UEB for orange, |LEB| for blue)")
+        ->check(CLI::PositiveNumber);
+    cmd->callback([a] { runCompare(*a); });
 }
 
 } // namespace lb::cli

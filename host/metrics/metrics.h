@@ -1,0 +1,53 @@
+// metrics.h -- error of an approximation image A against a reference image R
+// (DESIGN section 5, thesis 6.2).
+//
+// All sums run in double over the pixels where A is finite; pixels where A is
+// NaN or infinite are counted in `nonfinite` and left out of every average,
+// the means included (so NMSE compares the same pixel set in numerator and
+// denominator). A non-finite pixel in the reference is bad input.
+//
+//   NMSE   = (1/P) sum_i (R_i - A_i)^2 / (mean(R) mean(A))
+//            thesis Eq. 6.7 (000_*.txt line 1137: "NMSE = 1/N sum_i (x_{R,i} -
+//            x_{A,i})^2 / (\bar{R} \bar{A})", N the number of pixels, \bar{R},
+//            \bar{A} the means of the reference and the approximation).
+//   NRMSE  = sqrt(mean((R - A)^2)) / mean(R)
+//   relMSE = mean((R - A)^2 / (R^2 + 1e-2 mean(R)^2))
+//   UEB    = max(0, max_i (A_i - R_i))   largest over-estimate, >= 0, in lux
+//   LEB    = min(0, min_i (A_i - R_i))   largest under-estimate, <= 0, in lux
+//
+// Sign convention of the bounds: both are values of the signed error A - R,
+// as in the thesis' tables (e.g. Table B.1: UEB 160.25, LEB -8.4375), so LEB
+// is negative (or zero when nothing is under-estimated) and |LEB| is the
+// magnitude of the largest under-estimate.
+//
+// Undefined ratios (mean(R) = 0, mean(A) = 0, every pixel non-finite) come out
+// as NaN or infinity, which the JSON form writes as null: never a made-up 0.
+#pragma once
+
+#include "metrics/image.h"
+
+#include <nlohmann/json_fwd.hpp>
+
+#include <cstdint>
+
+namespace lb::metrics {
+
+struct Metrics {
+    double nmse = 0, nrmse = 0, relmse = 0;
+    double ueb = 0;        // >= 0, lux
+    double leb = 0;        // <= 0, lux
+    int64_t nonfinite = 0; // test pixels that are NaN or +-inf (excluded)
+    int64_t pixels = 0;    // all pixels of the image, non-finite ones included
+    double mean_ref = 0, mean_test = 0;  // over the finite pixels, lux
+};
+
+// Throws lb::InputError when the sizes differ, the images are empty or the
+// reference holds a non-finite pixel.
+Metrics compare(const Image& reference, const Image& test);
+
+// JSON object with the keys nmse, nrmse, relmse, ueb, leb, nonfinite, pixels,
+// mean_ref, mean_test (non-finite numbers become null).
+void to_json(nlohmann::json& j, const Metrics& m);
+void from_json(const nlohmann::json& j, Metrics& m);
+
+} // namespace lb::metrics
