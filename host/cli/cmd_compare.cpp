@@ -65,6 +65,10 @@ void runCompare(const CompareArgs& a)
         j["pictures"] = {{"ref", fr}, {"test", ft}, {"err", fe}};
     }
 
+    // Said on stderr in both modes, so that it is seen even when stdout is parsed.
+    if (m.nonfinite > 0)
+        std::cerr << fmt::format("lumibench: warning: {} has {} non-finite pixels (excluded; magenta in pictures)\n",
+                                 a.test, m.nonfinite);
     if (a.json) {
         std::cout << j.dump(2) << '\n';
         return;
@@ -82,9 +86,6 @@ void runCompare(const CompareArgs& a)
                                  j["pictures"]["ref"].get<std::string>(), j["pictures"]["test"].get<std::string>(),
                                  j["pictures"]["err"].get<std::string>(), num(j["k"].get<double>()),
                                  num(j["bound_over"].get<double>()), num(j["bound_under"].get<double>()));
-    if (m.nonfinite > 0)
-        std::cerr << fmt::format("lumibench: warning: {} has {} non-finite pixels (excluded; magenta in pictures)\n",
-                                 a.test, m.nonfinite);
 }
 
 } // namespace
