@@ -1,0 +1,98 @@
+#!/usr/bin/python3
+"""Figure grid: reference | method | error, one row per comparison.
+
+Each row is the PNG triple that `lumibench compare --png PREFIX` writes:
+PREFIX_ref.png, PREFIX_test.png (tone mapped, L/(1+L) of L = k E) and
+PREFIX_err.png (orange too bright, blue too dark, white no error, magenta
+non-finite). When PREFIX.json exists (`lumibench compare ... --json --png PREFIX
+> PREFIX.json`), its NMSE, UEB and LEB are printed under the error picture, as
+in the thesis' tables (Prost 2019, Table 6.2).
+
+Give every row of one figure the same --k in `compare`, so that the tone-mapped
+pictures are comparable (thesis 6.2).
+
+    python3 plots/image_grid.py --out fig.png \\
+        "cubature h=0.1=out/cub_h0.1" "MCI-40 h=0.1=out/mc40_h0.1"
+
+A row is LABEL=PREFIX (the label is what precedes the last '=') or just PREFIX.
+"""
+import argparse
+import json
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")  # files only, no display
+import matplotlib.image as mpimg  # noqa: E402
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def parse_row(spec):
+    """'label=prefix' or 'prefix' -> (label, prefix)."""
+    if "=" in spec:
+        label, prefix = spec.rsplit("=", 1)
+    else:
+        label, prefix = os.path.basename(spec), spec
+    return label, prefix
+
+
+def fmt(v, spec):
+    return "n/a" if v is None or (isinstance(v, float) and not math.isfinite(v)) else format(v, spec)
+
+
+def caption(prefix):
+    """NMSE / UEB / LEB from PREFIX.json, or '' when there is none."""
+    path = prefix + ".json"
+    if not os.path.exists(path):
+        return ""
+    with open(path) as f:
+        m = json.load(f)
+    text = "NMSE {}  UEB {} lx  LEB {} lx".format(
+        fmt(m.get("nmse"), ".3g"), fmt(m.get("ueb"), "+.3g"), fmt(m.get("leb"), "+.3g"))
+    if m.get("nonfinite"):
+        text += "\n{} non-finite pixels".format(m["nonfinite"])
+    return text
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("rows", nargs="+", help="LABEL=PREFIX or PREFIX (PNGs of lumibench compare --png PREFIX)")
+    ap.add_argument("--out", required=True, help="output figure (.png, .pdf, .svg)")
+    ap.add_argument("--columns", default="Reference,Method,Error", help="three column titles, comma separated")
+    ap.add_argument("--title", default="", help="figure title")
+    ap.add_argument("--size", type=float, default=2.6, help="size of one picture in inches (default 2.6)")
+    ap.add_argument("--dpi", type=int, default=150)
+    args = ap.parse_args(argv)
+
+    columns = args.columns.split(",")
+    if len(columns) != 3:
+        ap.error("--columns needs three comma-separated titles")
+    rows = [parse_row(r) for r in args.rows]
+    for _, prefix in rows:
+        for suffix in ("_ref.png", "_test.png", "_err.png"):
+            if not os.path.exists(prefix + suffix):
+                sys.exit(f"image_grid: {prefix + suffix} not found (write it with lumibench compare --png {prefix})")
+
+    n = len(rows)
+    fig, axes = plt.subplots(n, 3, figsize=(3 * args.size, n * (args.size + 0.35)), squeeze=False)
+    for i, (label, prefix) in enumerate(rows):
+        for j, suffix in enumerate(("_ref.png", "_test.png", "_err.png")):
+            ax = axes[i][j]
+            ax.imshow(mpimg.imread(prefix + suffix), interpolation="nearest")
+            ax.set_xticks([])
+            ax.set_yticks([])
+            if i == 0:
+                ax.set_title(columns[j])
+        axes[i][0].set_ylabel(label)
+        axes[i][2].set_xlabel(caption(prefix), fontsize=8)
+    if args.title:
+        fig.suptitle(args.title)
+    fig.tight_layout()
+    fig.savefig(args.out, dpi=args.dpi)
+    print(args.out)
+
+
+if __name__ == "__main__":
+    main()

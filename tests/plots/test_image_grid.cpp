@@ -1,0 +1,55 @@
+// plots/image_grid.py on the pictures `lumibench compare --png` writes (~1 s:
+// one matplotlib start-up).
+#include "metrics/image.h"
+#include "metrics/png.h"
+#include "testutil.h"
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace lb {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The Debian interpreter, which has python3-matplotlib (a python3 earlier on
+// PATH, e.g. pyenv's, may not).
+std::string python() { return fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3"; }
+
+int sh(const std::string& cmd)
+{
+    int st = std::system(cmd.c_str());
+    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+TEST(Plots, ImageGridOfComparePictures)
+{
+    fs::path dir = fs::temp_directory_path() / ("lb_grid_" + std::to_string(getpid()));
+    fs::create_directories(dir);
+    Image r(16, 16), a(16, 16);
+    for (size_t i = 0; i < r.px.size(); ++i) {
+        r.px[i] = 1.0 + 0.1 * static_cast<double>(i % 16);
+        a.px[i] = r.px[i] * (i % 3 == 0 ? 1.2 : 0.9);
+    }
+    writeExr((dir / "r.exr").string(), r);
+    writeExr((dir / "a.exr").string(), a);
+    const std::string prefix = (dir / "row").string();
+    ASSERT_EQ(sh(test::binary() + " compare " + (dir / "r.exr").string() + " " + (dir / "a.exr").string() +
+                 " --json --png " + prefix + " > " + prefix + ".json"),
+              0);
+    const std::string script = test::sourceDir() + "/plots/image_grid.py";
+    const std::string out = (dir / "grid.png").string();
+    ASSERT_EQ(sh(python() + " " + script + " --out " + out + " 'test row=" + prefix + "' > /dev/null"), 0);
+    auto g = readPng(out);  // a real PNG with room for a 1 x 3 grid
+    EXPECT_GT(g.width, g.height);
+    // A missing picture is a clear error, not a traceback.
+    EXPECT_NE(sh(python() + " " + script + " --out " + out + " " + (dir / "nothing").string() + " 2> /dev/null"), 0);
+    fs::remove_all(dir);
+}
+
+} // namespace
+} // namespace lb
