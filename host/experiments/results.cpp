@@ -1,0 +1,295 @@
+#include "experiments/results.h"
+
+#include "util/error.h"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <memory>
+#include <set>
+#include <cstring>
+#include <unordered_map>
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/utsname.h>
+#include <unistd.h>
+
+#ifndef LB_VERSION
+#error "LB_VERSION (the project version) is defined by CMakeLists.txt"
+#endif
+
+namespace lb::results {
+
+namespace {
+
+using json = nlohmann::json;
+
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+
+const char* typeName(const json& v) { return v.type_name(); }
+
+// The value of `key` in `j` as T, or an InputError saying which key was
+// expected and what was found.
+template <class T>
+T field(const json& j, const char* key)
+{
+    auto it = j.find(key);
+    if (it == j.end()) throw InputError(fmt::format("missing key \"{}\"", key));
+    try {
+        return it->get<T>();
+    } catch (const json::exception&) {
+        throw InputError(fmt::format("key \"{}\": unexpected {} {}", key, typeName(*it), it->dump()));
+    }
+}
+
+// A number that may be null (undefined, read as NaN).
+double numField(const json& j, const char* key)
+{
+    auto it = j.find(key);
+    if (it == j.end()) throw InputError(fmt::format("missing key \"{}\"", key));
+    if (it->is_null()) return kNaN;
+    if (!it->is_number()) throw InputError(fmt::format("key \"{}\": expected a number or null, found {} {}", key,
+                                                       typeName(*it), it->dump()));
+    return it->get<double>();
+}
+
+const std::set<std::string> kKnownKeys = {
+    "method", "params", "luminaire", "height", "rotation", "res", "precision", "device", "driver", "time_ms",
+    "nmse", "nrmse", "relmse", "ueb", "leb", "nonfinite", "pixels", "mean_ref", "mean_test", "equal_time_to", "n"};
+
+// Output of a shell command with surrounding white space trimmed, "" on failure.
+std::string capture(const std::string& cmd)
+{
+    std::unique_ptr<FILE, int (*)(FILE*)> p(popen(cmd.c_str(), "r"), pclose);
+    if (!p) return "";
+    std::string out;
+    std::array<char, 256> buf;
+    size_t n;
+    while ((n = fread(buf.data(), 1, buf.size(), p.get())) > 0) out.append(buf.data(), n);
+    if (pclose(p.release()) != 0) return "";
+    auto b = out.find_first_not_of(" \t\r\n"), e = out.find_last_not_of(" \t\r\n");
+    return b == std::string::npos ? "" : out.substr(b, e - b + 1);
+}
+
+} // namespace
+
+std::string Record::key() const
+{
+    json k = json::array({method, params, luminaire, num(height), num(rotation), res, precision, device,
+                          equal_time_to ? json(*equal_time_to) : json(nullptr)});
+    return k.dump();  // objects dump with sorted keys: a canonical string
+}
+
+void to_json(json& j, const Record& r)
+{
+    j = r.extra.is_object() ? r.extra : json::object();
+    j["method"] = r.method;
+    j["params"] = r.params;
+    j["luminaire"] = r.luminaire;
+    j["height"] = num(r.height);
+    j["rotation"] = num(r.rotation);
+    j["res"] = r.res;
+    j["precision"] = r.precision;
+    j["device"] = r.device;
+    j["driver"] = r.driver;
+    j["time_ms"] = {{"median", num(r.time_ms.median)}, {"min", num(r.time_ms.min)}, {"reps", r.time_ms.reps}};
+    j.update(json(r.error));  // nmse, nrmse, relmse, ueb, leb, nonfinite, pixels, mean_ref, mean_test
+    if (r.equal_time_to) j["equal_time_to"] = *r.equal_time_to;
+    if (r.n) j["n"] = *r.n;
+}
+
+void from_json(const json& j, Record& r)
+{
+    if (!j.is_object()) throw InputError(fmt::format("a record must be a JSON object, found {}", typeName(j)));
+    r = Record{};
+    r.method = field<std::string>(j, "method");
+    r.params = j.value("params", json::object());
+    if (!r.params.is_object()) throw InputError("key \"params\": expected an object");
+    r.luminaire = field<std::string>(j, "luminaire");
+    r.height = numField(j, "height");
+    r.rotation = numField(j, "rotation");
+    r.res = field<int>(j, "res");
+    r.precision = field<std::string>(j, "precision");
+    if (r.precision != "float" && r.precision != "double")
+        throw InputError(fmt::format("key \"precision\": expected \"float\" or \"double\", found \"{}\"", r.precision));
+    r.device = field<std::string>(j, "device");
+    r.driver = field<std::string>(j, "driver");
+    const json t = field<json>(j, "time_ms");
+    r.time_ms.median = numField(t, "median");
+    r.time_ms.min = numField(t, "min");
+    r.time_ms.reps = field<int>(t, "reps");
+    r.error.nmse = numField(j, "nmse");
+    r.error.nrmse = numField(j, "nrmse");
+    r.error.relmse = numField(j, "relmse");
+    r.error.ueb = numField(j, "ueb");
+    r.error.leb = numField(j, "leb");
+    r.error.nonfinite = field<int64_t>(j, "nonfinite");
+    // Not in every record (e.g. written by a hand or an older runner): optional.
+    r.error.pixels = j.contains("pixels") ? field<int64_t>(j, "pixels") : 0;
+    r.error.mean_ref = j.contains("mean_ref") ? numField(j, "mean_ref") : kNaN;
+    r.error.mean_test = j.contains("mean_test") ? numField(j, "mean_test") : kNaN;
+    if (j.contains("equal_time_to")) r.equal_time_to = field<std::string>(j, "equal_time_to");
+    if (j.contains("n")) r.n = field<int64_t>(j, "n");
+    for (auto it = j.begin(); it != j.end(); ++it)
+        if (!kKnownKeys.count(it.key())) r.extra[it.key()] = it.value();
+}
+
+void to_json(json& j, const Results& d)
+{
+    j = json{{"context", d.context}, {"records", d.records}};
+}
+
+void from_json(const json& j, Results& d)
+{
+    if (!j.is_object() || !j.contains("context") || !j.contains("records"))
+        throw InputError("expected a JSON object with \"context\" and \"records\"");
+    if (!j["context"].is_object()) throw InputError("\"context\" must be an object");
+    if (!j["records"].is_array()) throw InputError("\"records\" must be an array");
+    d.context = j["context"];
+    d.records.clear();
+    size_t i = 0;
+    for (const auto& rj : j["records"]) {
+        try {
+            d.records.push_back(rj.get<Record>());
+        } catch (const InputError& e) {
+            throw InputError(fmt::format("record {}: {}", i, e.what()));
+        }
+        ++i;
+    }
+}
+
+json makeContext(const std::string& device, const std::string& driver, const json& extra)
+{
+    json c;
+    c["device"] = device;
+    c["driver"] = driver;
+    const std::string dir = LB_SOURCE_DIR;
+    std::string commit = capture("git -C '" + dir + "' rev-parse HEAD 2>/dev/null");
+    c["commit"] = commit.empty() ? "unknown" : commit;
+    if (!commit.empty())
+        c["commit_dirty"] = !capture("git -C '" + dir + "' status --porcelain --untracked-files=no 2>/dev/null").empty();
+
+    std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+    std::tm tm{};
+    gmtime_r(&now, &tm);
+    std::array<char, 32> date{};
+    std::strftime(date.data(), date.size(), "%Y-%m-%dT%H:%M:%SZ", &tm);
+    c["date"] = date.data();
+
+    std::array<char, 256> host{};
+    c["host"] = gethostname(host.data(), host.size() - 1) == 0 ? host.data() : "unknown";
+    c["lumibench_version"] = LB_VERSION;
+#ifdef __VERSION__
+    c["compiler"] = __VERSION__;
+#endif
+    utsname u{};
+    if (uname(&u) == 0) c["os"] = fmt::format("{} {} {}", u.sysname, u.release, u.machine);
+    if (extra.is_object()) c.update(extra);
+    return c;
+}
+
+Results load(const std::string& path)
+{
+    std::ifstream in(path);
+    if (!in) throw InputError(fmt::format("{}: cannot open results file", path));
+    json j;
+    try {
+        j = json::parse(in);
+    } catch (const json::parse_error& e) {
+        throw InputError(fmt::format("{}: not a JSON document: {}", path, e.what()));
+    }
+    try {
+        return j.get<Results>();
+    } catch (const InputError& e) {
+        throw InputError(fmt::format("{}: {}", path, e.what()));
+    }
+}
+
+void save(const std::string& path, const Results& doc)
+{
+    const std::string text = json(doc).dump(1) + '\n';
+    const std::string tmp = fmt::format("{}.tmp.{}", path, getpid());
+    FILE* f = std::fopen(tmp.c_str(), "wb");
+    if (!f) throw Error(fmt::format("{}: cannot write: {}", tmp, std::strerror(errno)));
+    bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+    ok = std::fflush(f) == 0 && ok;
+    ok = ::fsync(fileno(f)) == 0 && ok;  // on disk before the rename makes it visible
+    ok = std::fclose(f) == 0 && ok;
+    std::error_code ec;
+    if (ok) std::filesystem::rename(tmp, path, ec);  // atomic on POSIX within one file system
+    if (!ok || ec) {
+        std::filesystem::remove(tmp, ec);
+        throw Error(fmt::format("{}: cannot write results", path));
+    }
+}
+
+void appendRecord(const std::string& path, const json& context, const Record& r)
+{
+    // An exclusive lock on a side file: the results file itself is replaced by
+    // every save, so a lock on it would not serialise anything.
+    const std::string lockPath = path + ".lock";
+    int fd = ::open(lockPath.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
+    if (fd < 0) throw Error(fmt::format("{}: cannot open lock file: {}", lockPath, std::strerror(errno)));
+    struct Unlock {
+        int fd;
+        ~Unlock() { ::close(fd); }  // closing releases the flock
+    } unlock{fd};
+    if (::flock(fd, LOCK_EX) != 0) throw Error(fmt::format("{}: cannot lock: {}", lockPath, std::strerror(errno)));
+
+    Results doc;
+    if (std::filesystem::exists(path))
+        doc = load(path);
+    else
+        doc.context = context;
+    const std::string k = r.key();
+    bool replaced = false;
+    for (auto& old : doc.records)
+        if (old.key() == k) {
+            old = r;
+            replaced = true;
+        }
+    if (!replaced) doc.records.push_back(r);
+    save(path, doc);
+}
+
+Results mergeResults(const std::vector<std::string>& paths, MergeStats* stats)
+{
+    Results out;
+    MergeStats s;
+    json sources = json::array();
+    std::unordered_map<std::string, size_t> index;  // cell key -> position in out.records
+    for (const auto& p : paths) {
+        Results d = load(p);
+        if (s.files == 0) out.context = d.context;
+        sources.push_back({{"file", p}, {"context", d.context}});
+        ++s.files;
+        for (auto& r : d.records) {
+            ++s.records_in;
+            const std::string k = r.key();
+            auto [it, fresh] = index.emplace(k, out.records.size());
+            if (fresh) {
+                out.records.push_back(std::move(r));
+            } else {
+                out.records[it->second] = std::move(r);  // the later file wins
+                ++s.replaced;
+            }
+        }
+    }
+    out.context["merged_from"] = sources;
+    s.records_out = out.records.size();
+    if (stats) *stats = s;
+    return out;
+}
+
+} // namespace lb::results

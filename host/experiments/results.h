@@ -1,0 +1,106 @@
+// results.h -- the results JSON document of an experiment run (issue 6):
+//
+//   {"context": {"device": ..., "driver": ..., "commit": ..., "date": ...,
+//                "host": ..., "lumibench_version": ..., ...},
+//    "records": [{"method": "cubature", "params": {...}, "luminaire": "...",
+//                 "height": 0.1, "rotation": 1.5707963267948966, "res": 512,
+//                 "precision": "float", "device": ..., "driver": ...,
+//                 "time_ms": {"median": ..., "min": ..., "reps": 5},
+//                 "nmse": ..., "nrmse": ..., "relmse": ..., "ueb": ..., "leb": ...,
+//                 "nonfinite": 0, "pixels": ..., "mean_ref": ..., "mean_test": ...,
+//                 "equal_time_to": "cubature:...", "n": 40}, ...]}
+//
+// One record is one cell of an experiment: a method with its parameters at
+// one scene, precision and device. Its cell key (Record::key) is what
+// appendRecord replaces and mergeResults deduplicates by. Every record carries
+// device, driver, time and error (DESIGN section 6), so records of several
+// files can be plotted together. Keys a record does not know are kept in
+// `extra` through load and save, so that later fields survive older code.
+// Undefined numbers (NaN, infinity) are written as null and read back as NaN.
+#pragma once
+
+#include "metrics/metrics.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lb::results {
+
+// Kernel time from OpenCL profiling events (DESIGN section 6), milliseconds.
+struct TimeMs {
+    double median = 0, min = 0;
+    int reps = 0;
+};
+
+struct Record {
+    std::string method;                                 // DESIGN section 4 name, e.g. "mc"
+    nlohmann::json params = nlohmann::json::object();  // method parameters, e.g. {"n": 24}
+    std::string luminaire;                              // file name or synthetic name
+    double height = 0, rotation = 0;                    // metres, radians (DESIGN section 2)
+    int res = 0;                                        // image is res x res
+    std::string precision = "float";                    // "float" | "double"
+    std::string device, driver;
+    TimeMs time_ms;
+    metrics::Metrics error;                  // serialised flat: nmse, nrmse, ... at the record's top level
+    std::optional<std::string> equal_time_to;  // MC at equal time: the method spec it matches
+    std::optional<int64_t> n;                  // sample count where it is a result (N_eq), not a parameter
+    nlohmann::json extra = nlohmann::json::object();  // any other keys, kept as they are
+
+    // The cell key: method, params, luminaire, height, rotation, res,
+    // precision, device and equal_time_to. Anything else that tells two cells
+    // apart must go into params.
+    std::string key() const;
+};
+
+void to_json(nlohmann::json& j, const Record& r);
+// Throws lb::InputError naming the missing or mistyped key.
+void from_json(const nlohmann::json& j, Record& r);
+
+struct Results {
+    nlohmann::json context = nlohmann::json::object();
+    std::vector<Record> records;
+};
+
+void to_json(nlohmann::json& j, const Results& d);
+void from_json(const nlohmann::json& j, Results& d);
+
+// The run's context: device and driver as given, the source commit (`git -C
+// LB_SOURCE_DIR rev-parse HEAD` at run time, "unknown" when git or the
+// repository is absent) and whether the tree had uncommitted changes
+// (commit_dirty), the UTC date (ISO 8601), host name, lumibench_version,
+// compiler and OS. The keys of `extra` (an object) are added or override.
+nlohmann::json makeContext(const std::string& device, const std::string& driver,
+                           const nlohmann::json& extra = nlohmann::json::object());
+
+// Reads a results file; throws lb::InputError naming the file (and the record
+// index) when it is missing, not JSON or not a results document.
+Results load(const std::string& path);
+
+// Writes `doc` atomically: to a temporary file beside `path`, flushed to disk,
+// then renamed over `path`, so that a reader or an interrupted run sees the
+// old or the new document, never half of one. Throws lb::Error.
+void save(const std::string& path, const Results& doc);
+
+// Adds `r` to the results file at `path` (created with `context` when it does
+// not exist; an existing file keeps its context). A record with the same cell
+// key is replaced, so a re-run cell is not counted twice. Atomic as save(),
+// and serialised with other processes appending to the same file by an
+// exclusive lock on `path`.lock (left in place).
+void appendRecord(const std::string& path, const nlohmann::json& context, const Record& r);
+
+struct MergeStats {
+    size_t files = 0, records_in = 0, records_out = 0, replaced = 0;
+};
+
+// Merges results files (e.g. the shards of one experiment) into one document.
+// Records are deduplicated by cell key; of several with the same key the one
+// from the later file (in the order given) wins. The merged context is the
+// first file's, with "merged_from": [{"file": ..., "context": ...}, ...] for
+// every input. Throws lb::InputError for an unreadable input.
+Results mergeResults(const std::vector<std::string>& paths, MergeStats* stats = nullptr);
+
+} // namespace lb::results
