@@ -95,9 +95,8 @@ Table readIes(const TextFile& f, IesExtra* extraOut)
         if (k > 0 && !(v[k] > v[k - 1]))
             f.fail(l, fmt::format("vertical angles ascending (after {})", v[k - 1]), fmt::format("{}", v[k]));
     }
-    size_t vLine = in.lineNo();
     if (!((v.front() == 0 || v.front() == 90) && (v.back() == 90 || v.back() == 180) && v.front() < v.back()))
-        f.fail(vLine - 1, "vertical angles 0-90, 90-180 or 0-180",
+        f.fail(in.lastLine(), "vertical angles 0-90, 90-180 or 0-180",
                fmt::format("{}-{}", v.front(), v.back()));
     for (int k = 0; k < nh; ++k) {
         l = in.lineNo();
@@ -119,7 +118,7 @@ Table readIes(const TextFile& f, IesExtra* extraOut)
     else if (h0 == 0 && h1 > 180 && h1 <= 360)
         isym = 0;
     else
-        f.fail(in.lineNo() - 1, "horizontal angles {0}, 0-90, 0-180, 90-270, 0-360 or 0 to (180, 360)",
+        f.fail(in.lastLine(), "horizontal angles {0}, 0-90, 0-180, 90-270, 0-360 or 0 to (180, 360)",
                fmt::format("{}-{}", h0, h1));
 
     const double scale = x.multiplier * x.ballastFactor * x.ballastLampFactor;
@@ -151,7 +150,7 @@ static std::string num(double v) { return fmt::format("{}", v); }
 std::string iesText(const Table& t, const std::string& name)
 {
     t.validate();
-    bool rotational = true;
+    bool rotational = t.nc() == 2; // one plane read, one plane written
     for (size_t ic = 1; ic < t.nc() && rotational; ++ic)
         for (size_t ig = 0; ig < t.ng(); ++ig)
             if (t.at(ic, ig) != t.at(0, ig)) rotational = false;

@@ -30,7 +30,7 @@ Table readIes(const TextFile& f, IesExtra* extra = nullptr);
 Table readIes(const std::string& path, IesExtra* extra = nullptr);
 
 // LM-63-2002 text of the full table (0-360 horizontal, or {0} when every
-// plane is equal), TILT=NONE, lumens -1, multiplier 1, metres.
+// plane is equal, i.e. the table has C = {0, 360}), TILT=NONE, lumens -1, multiplier 1, metres.
 std::string iesText(const Table& t, const std::string& name);
 void writeIes(const Table& t, const std::string& path, const std::string& name);
 

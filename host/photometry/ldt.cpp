@@ -142,17 +142,31 @@ Table readLdt(const TextFile& f)
 }
 
 // Shortest text that reads back as the same double.
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+
 static std::string num(double v) { return fmt::format("{}", v); }
 
 std::string ldtText(const Table& t, const std::string& name)
 {
     t.validate();
-    bool rotational = true;
+    bool rotational = t.nc() == 2; // write what was read: only a one-plane table as Isym 1
     for (size_t ic = 1; ic < t.nc() && rotational; ++ic)
         for (size_t ig = 0; ig < t.ng(); ++ig)
             if (t.at(ic, ig) != t.at(0, ig)) rotational = false;
     size_t nc = t.nc() - 1; // the 360 plane is implied
-    double flux = t.declaredFluxLm > 0 ? t.declaredFluxLm : t.fluxLm();
+    // Flux and downward fraction by the trapezoidal rule on the nodes (cheap;
+    // the lamp flux only sets the cd/klm scale, which reading undoes).
+    double total = 0, down = 0;
+    for (size_t ic = 0; ic + 1 < t.nc(); ++ic)
+        for (size_t ig = 0; ig + 1 < t.ng(); ++ig) {
+            double g0 = t.gamma[ig] * kDeg, g1 = t.gamma[ig + 1] * kDeg;
+            double i = 0.25 * (t.at(ic, ig) + t.at(ic, ig + 1) + t.at(ic + 1, ig) + t.at(ic + 1, ig + 1));
+            double f = i * (std::cos(g0) - std::cos(g1)) * (t.c[ic + 1] - t.c[ic]) * kDeg;
+            total += f;
+            if (t.gamma[ig + 1] <= 90) down += f;
+        }
+    double downFraction = total > 0 ? down / total : 1;
+    double flux = t.declaredFluxLm > 0 ? t.declaredFluxLm : (total > 0 ? total : 1000);
     auto uniformStep = [](const std::vector<double>& a, size_t n) {
         if (n < 2) return 0.0;
         double d = a[1] - a[0];
@@ -180,13 +194,7 @@ std::string ldtText(const Table& t, const std::string& name)
     line(num(t.lengthM * 1000));
     line(num(t.widthM * 1000));
     for (int i = 0; i < 4; ++i) line("0");
-    // Downward flux fraction from the table itself (share of flux with gamma < 90).
-    Table down = t;
-    for (size_t ic = 0; ic < t.nc(); ++ic)
-        for (size_t ig = 0; ig < t.ng(); ++ig)
-            if (t.gamma[ig] > 90) down.cd[ic * t.ng() + ig] = 0;
-    double total = t.fluxLm();
-    line(num(total > 0 ? std::round(1000 * down.fluxLm() / total) / 10 : 0));
+    line(num(std::round(1000 * downFraction) / 10));
     line("100");
     line("1");
     line("0");

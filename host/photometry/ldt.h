@@ -15,7 +15,7 @@ namespace lb::photometry {
 Table readLdt(const TextFile& f);
 Table readLdt(const std::string& path);
 
-// Writes the full table (Isym 1 when every plane is equal, else Isym 0) with
+// Writes the full table (Isym 1 for a one-plane table with C = {0, 360}, else Isym 0) with
 // one lamp set whose flux is the table's declared flux (else its integrated
 // flux) and LOR 100 %. Reading it back gives the same table (to ~1e-15).
 std::string ldtText(const Table& t, const std::string& name);

@@ -61,7 +61,8 @@ public:
     {
     }
     bool atEnd();                  // no token left
-    size_t lineNo() const { return line_ + 1; }
+    size_t lineNo() { fill(); return line_ + 1; } // of the next token
+    size_t lastLine() const { return tokLine_; } // of the token read last
     std::string token(const std::string& what);
     double number(const std::string& what);
     int integer(const std::string& what, int lo, int hi);
