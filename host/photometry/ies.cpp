@@ -104,6 +104,7 @@ Table readIes(const TextFile& f, IesExtra* extraOut)
         if (k > 0 && !(h[k] > h[k - 1]))
             f.fail(l, fmt::format("horizontal angles ascending (after {})", h[k - 1]), fmt::format("{}", h[k]));
     }
+    const size_t hLine = in.lastLine();
     // Horizontal set -> symmetry.
     int isym;
     double h0 = h.front(), h1 = h.back();
@@ -132,7 +133,7 @@ Table readIes(const TextFile& f, IesExtra* extraOut)
         }
     // A full set that stores 360 keeps its own 360 plane; one that stops short
     // gets 360 = 0 (unfold).
-    Table t = unfold(isym, h, v, planes, f.path);
+    Table t = unfold(isym, h, v, planes, fmt::format("{}:{}", f.path, hLine));
     t.source = f.path;
     t.format = "ies";
     t.isym = isym;

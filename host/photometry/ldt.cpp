@@ -129,7 +129,7 @@ Table readLdt(const TextFile& f)
             planes[p][i] = v * scale;
         }
 
-    Table t = unfold(isym, cStored, gamma, planes, f.path);
+    Table t = unfold(isym, cStored, gamma, planes, fmt::format("{}:{}", f.path, isymLine));
     t.source = f.path;
     t.format = "ldt";
     t.isym = isym;

@@ -35,6 +35,19 @@ double foldC(int isym, double c)
     }
 }
 
+// The table gate, as bad input: values finite after scaling (a huge value
+// times a multiplier can overflow), angles ascending.
+static void check(const Table& t, const std::string& where)
+{
+    try {
+        t.validate();
+    } catch (const InputError&) {
+        throw;
+    } catch (const Error& e) {
+        throw InputError(fmt::format("{}: expected a valid table, got {}", where, e.what()));
+    }
+}
+
 Table unfold(int isym, const std::vector<double>& c, const std::vector<double>& gamma,
              const std::vector<std::vector<double>>& planes, const std::string& where)
 {
@@ -52,7 +65,7 @@ Table unfold(int isym, const std::vector<double>& c, const std::vector<double>& 
         t.cd.insert(t.cd.end(), planes[0].begin(), planes[0].end());
         t.isym = 1;
         t.symmetry = symmetryName(1);
-        t.validate();
+        check(t, where);
         return t;
     }
     // The stored plane a full-table angle takes its values from: the one at its
@@ -91,7 +104,7 @@ Table unfold(int isym, const std::vector<double>& c, const std::vector<double>& 
     t.c.back() = 360;
     t.isym = isym;
     t.symmetry = symmetryName(isym);
-    t.validate();
+    check(t, where);
     return t;
 }
 
