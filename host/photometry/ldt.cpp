@@ -31,7 +31,9 @@ Table readLdt(const TextFile& f)
     size_t isymLine = in.lineNo();
     int isym = in.integer("the symmetry indicator Isym", 0, 4);
     size_t ncLine = in.lineNo();
-    int nc = in.integer("the number of C planes Nc", 1, kMaxAngles);
+    int nc = in.integer("the number of C planes Nc", 0, kMaxAngles);
+    // Rotational files sometimes list no C angle at all (Nc = 0); others need one.
+    if (nc == 0 && isym != 1) f.fail(ncLine, "Nc >= 1 unless Isym = 1", "Nc = 0");
     in.number("the C plane distance Dc");
     int ng = in.integer("the number of gamma angles Ng", 2, kMaxAngles);
     in.number("the gamma distance Dg");
@@ -109,9 +111,10 @@ Table readLdt(const TextFile& f)
         break;
     default: break;
     }
-    std::vector<double> cStored(cAll.begin() + first, cAll.begin() + first + mc);
+    // (Isym 1 may list no angle at all; its one plane stands for every C.)
+    std::vector<double> cStored = {0};
+    if (isym != 1) cStored.assign(cAll.begin() + first, cAll.begin() + first + mc);
     const double lastC[] = {-1, 0, 180, 270, 90};
-    if (isym == 1) cStored = {0};
     if (isym >= 2 && cStored.back() != lastC[isym])
         f.fail(isymLine, fmt::format("stored planes ending at C = {} for Isym {}", lastC[isym], isym),
                fmt::format("C = {}", cStored.back()));

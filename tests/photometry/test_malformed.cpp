@@ -59,9 +59,9 @@ TEST(Malformed, Ldt)
     auto l = ldtLines();
     expectLdtError({l.begin(), l.begin() + 52}, "t.ldt:53: expected intensity 1 of plane C = 90 (cd/klm), got end of file");
     l = ldtLines(), l[3] = "abc";
-    expectLdtError(l, "t.ldt:4: expected the number of C planes Nc (an integer in [1, 10000]), got \"abc\"");
+    expectLdtError(l, "t.ldt:4: expected the number of C planes Nc (an integer in [0, 10000]), got \"abc\"");
     l = ldtLines(), l[3] = "-4";
-    expectLdtError(l, "t.ldt:4: expected the number of C planes Nc (an integer in [1, 10000]), got \"-4\"");
+    expectLdtError(l, "t.ldt:4: expected the number of C planes Nc (an integer in [0, 10000]), got \"-4\"");
     l = ldtLines(), l[5] = "100000"; // capped before anything is allocated
     expectLdtError(l, "t.ldt:6: expected the number of gamma angles Ng (an integer in [2, 10000]), got \"100000\"");
     l = ldtLines(), l[2] = "4", l[43] = "80"; // Isym 4 stores Nc/4 + 1 = 2 planes: 0 and 80, not 90

@@ -92,6 +92,28 @@ TEST(Readers, LdtSymmetryUnfoldingPlaneByPlane)
     }
 }
 
+TEST(Readers, LoadDispatchesByExtensionThenContent)
+{
+    auto dir = fs::temp_directory_path();
+    auto write = [&](const std::string& name, const std::string& text) {
+        std::ofstream(dir / name, std::ios::binary) << text;
+        return (dir / name).string();
+    };
+    Table a = readLdtString(tinyLdt(2, 8, 5));
+    // No telling extension: an IES file has a TILT= line, EULUMDAT does not.
+    EXPECT_EQ(load(write("lb_dispatch_a.txt", ldtText(a, "a"))).format, "ldt");
+    EXPECT_EQ(load(write("lb_dispatch_b.dat", iesText(a, "b"))).format, "ies");
+    EXPECT_EQ(load(write("lb_dispatch_c.IES", iesText(a, "c"))).format, "ies");
+    // Rotational EULUMDAT with Nc = 0 (no C angle listed) reads as one plane.
+    std::string s = tinyLdt(1, 1, 1);
+    s.replace(s.find("\n1\n1\n360\n"), 9, "\n1\n0\n0\n");
+    s.replace(s.find("0.5\n0\n0\n45\n90\n"), 14, "0.5\n0\n45\n90\n");
+    Table r = readLdtString(s);
+    EXPECT_EQ(r.nc(), 2u);
+    EXPECT_EQ(r.at(1, 2), 2.0);
+    for (const char* n : {"lb_dispatch_a.txt", "lb_dispatch_b.dat", "lb_dispatch_c.IES"}) fs::remove(dir / n);
+}
+
 TEST(Readers, LdtAbsoluteCandelaSumsLampSetsAndDecimalCommas)
 {
     // Two lamp sets of 600 and 900,5 lm (decimal comma, CRLF): cd = value x 1500.5 / 1000.
