@@ -1,13 +1,35 @@
-// Placeholder until the photometry issue lands its readers.
+// Reading a luminaire file: by extension (.ldt / .ies, any case), else by
+// content (an IES file has a TILT= line; EULUMDAT does not).
 #include "photometry/load.h"
 
+#include "photometry/ies.h"
+#include "photometry/ldt.h"
+#include "photometry/text.h"
 #include "util/error.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
 
 namespace lb::photometry {
 
-Table load(const std::string& path)
+Table load(const std::string& pathIn)
 {
-    throw Error(path + ": luminaire readers not implemented yet", kExitNotImplemented);
+    std::string path = pathIn;
+    // The suite's own luminaires by short name: "lambert" -> luminaires/lambert.ldt.
+    namespace fs = std::filesystem;
+    if (!fs::exists(path) && fs::path(path).extension().empty() && path.find('/') == std::string::npos) {
+        fs::path own = fs::path(LB_SOURCE_DIR) / "luminaires" / (path + ".ldt");
+        if (fs::exists(own)) path = own.string();
+    }
+    TextFile f = TextFile::read(path);
+    std::string ext = fs::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (ext == ".ldt") return readLdt(f);
+    if (ext == ".ies") return readIes(f);
+    for (const auto& l : f.lines)
+        if (l.find("TILT=") != std::string::npos) return readIes(f);
+    return readLdt(f);
 }
 
 } // namespace lb::photometry

@@ -1,0 +1,193 @@
+// IES LM-63 layout: a version line (absent in LM-63-1986), keyword lines
+// ("[KEY] text", free form, may continue with [MORE]) up to the line
+// "TILT=NONE|INCLUDE|<file>"; with INCLUDE: geometry, N, N angles, N factors.
+// Then numbers, separated by blanks (or commas) and split over lines freely:
+// lamps, lumens/lamp, multiplier, Nv, Nh, photometric type, units (1 ft, 2 m),
+// width, length, height; ballast factor, ballast-lamp factor (1995: "future
+// use"), input watts; Nv vertical angles; Nh horizontal angles; Nh x Nv candela
+// (vertical fastest).
+#include "photometry/ies.h"
+
+#include "photometry/symmetry.h"
+#include "util/error.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <fstream>
+
+namespace lb::photometry {
+
+Table readIes(const std::string& path, IesExtra* extra) { return readIes(TextFile::read(path), extra); }
+
+static std::string trimmed(const std::string& s)
+{
+    size_t a = s.find_first_not_of(" \t");
+    if (a == std::string::npos) return "";
+    return s.substr(a, s.find_last_not_of(" \t") - a + 1);
+}
+
+Table readIes(const TextFile& f, IesExtra* extraOut)
+{
+    IesExtra x;
+    // Header: everything up to the TILT= line.
+    size_t i = 0;
+    if (!f.lines.empty()) {
+        std::string first = trimmed(f.lines[0]);
+        if (first.rfind("IES", 0) == 0) x.version = first;
+    }
+    while (i < f.lines.size() && trimmed(f.lines[i]).rfind("TILT", 0) != 0) ++i;
+    if (i == f.lines.size())
+        f.fail(f.lines.size() + 1, "a TILT= line (IES LM-63)",
+               f.lines.empty() ? "an empty file" : "end of file");
+    std::string tiltLine = trimmed(f.lines[i]);
+    auto eq = tiltLine.find('=');
+    std::string tilt = eq == std::string::npos ? "" : trimmed(tiltLine.substr(eq + 1));
+    size_t tiltLineNo = i + 1;
+    ++i;
+    TokenCursor in(f, i, true, false);
+    if (tilt == "NONE") {
+        x.tilt = "NONE";
+    } else if (tilt == "INCLUDE") {
+        x.tilt = "INCLUDE";
+        x.tiltGeometry = in.integer("the TILT lamp-to-luminaire geometry", 1, 3);
+        int n = in.integer("the number of TILT angle-factor pairs", 1, kMaxAngles);
+        x.tiltAngles.resize(n);
+        x.tiltFactors.resize(n);
+        for (int k = 0; k < n; ++k) x.tiltAngles[k] = in.number(fmt::format("TILT angle {} of {}", k + 1, n));
+        for (int k = 0; k < n; ++k) {
+            size_t l = in.lineNo();
+            x.tiltFactors[k] = in.number(fmt::format("TILT factor {} of {}", k + 1, n));
+            if (x.tiltFactors[k] < 0) f.fail(l, "a TILT factor >= 0", fmt::format("{}", x.tiltFactors[k]));
+        }
+    } else {
+        f.fail(tiltLineNo, "TILT=NONE or TILT=INCLUDE (a TILT file is not supported)", quote(tiltLine));
+    }
+
+    x.lamps = in.integer("the number of lamps", -1000000, 1000000);
+    x.lampLumens = in.number("the lumens per lamp (-1 = absolute)");
+    size_t l = in.lineNo();
+    x.multiplier = in.number("the candela multiplier");
+    if (!(x.multiplier > 0)) f.fail(l, "a candela multiplier > 0", fmt::format("{}", x.multiplier));
+    int nv = in.integer("the number of vertical angles", 2, kMaxAngles);
+    int nh = in.integer("the number of horizontal angles", 1, kMaxAngles);
+    l = in.lineNo();
+    x.photometricType = in.integer("the photometric type (1 = C)", 1, 3);
+    if (x.photometricType == 2)
+        f.fail(l, "photometric type 1 (C); type B (2, floodlights) is not supported, convert it to type C", "2");
+    if (x.photometricType == 3) f.fail(l, "photometric type 1 (C); type A (3) is not supported", "3");
+    int units = in.integer("the units type (1 feet, 2 metres)", 1, 2);
+    double w = in.number("the luminous width");
+    double len = in.number("the luminous length");
+    in.number("the luminous height");
+    l = in.lineNo();
+    x.ballastFactor = in.number("the ballast factor");
+    if (!(x.ballastFactor > 0)) f.fail(l, "a ballast factor > 0", fmt::format("{}", x.ballastFactor));
+    l = in.lineNo();
+    x.ballastLampFactor = in.number("the ballast-lamp photometric factor");
+    if (!(x.ballastLampFactor > 0)) f.fail(l, "a ballast-lamp photometric factor > 0", fmt::format("{}", x.ballastLampFactor));
+    x.inputWatts = in.number("the input watts");
+
+    std::vector<double> v(nv), h(nh);
+    for (int k = 0; k < nv; ++k) {
+        l = in.lineNo();
+        v[k] = in.number(fmt::format("vertical angle {} of {}", k + 1, nv));
+        if (k > 0 && !(v[k] > v[k - 1]))
+            f.fail(l, fmt::format("vertical angles ascending (after {})", v[k - 1]), fmt::format("{}", v[k]));
+    }
+    if (!((v.front() == 0 || v.front() == 90) && (v.back() == 90 || v.back() == 180) && v.front() < v.back()))
+        f.fail(in.lastLine(), "vertical angles 0-90, 90-180 or 0-180",
+               fmt::format("{}-{}", v.front(), v.back()));
+    for (int k = 0; k < nh; ++k) {
+        l = in.lineNo();
+        h[k] = in.number(fmt::format("horizontal angle {} of {}", k + 1, nh));
+        if (k > 0 && !(h[k] > h[k - 1]))
+            f.fail(l, fmt::format("horizontal angles ascending (after {})", h[k - 1]), fmt::format("{}", h[k]));
+    }
+    const size_t hLine = in.lastLine();
+    // Horizontal set -> symmetry.
+    int isym;
+    double h0 = h.front(), h1 = h.back();
+    if (nh == 1 && h0 == 0)
+        isym = 1;
+    else if (h0 == 0 && h1 == 90)
+        isym = 4;
+    else if (h0 == 0 && h1 == 180)
+        isym = 2;
+    else if (h0 == 90 && h1 == 270)
+        isym = 3;
+    else if (h0 == 0 && h1 > 180 && h1 <= 360)
+        isym = 0;
+    else
+        f.fail(in.lastLine(), "horizontal angles {0}, 0-90, 0-180, 90-270, 0-360 or 0 to (180, 360)",
+               fmt::format("{}-{}", h0, h1));
+
+    const double scale = x.multiplier * x.ballastFactor * x.ballastLampFactor;
+    std::vector<std::vector<double>> planes(nh, std::vector<double>(nv));
+    for (int p = 0; p < nh; ++p)
+        for (int k = 0; k < nv; ++k) {
+            l = in.lineNo();
+            double c = in.number(fmt::format("candela {} of {} at horizontal angle {}", k + 1, nv, h[p]));
+            if (c < 0) f.fail(l, "a candela value >= 0", fmt::format("{}", c));
+            planes[p][k] = c * scale;
+        }
+    // A full set that stores 360 keeps its own 360 plane; one that stops short
+    // gets 360 = 0 (unfold).
+    Table t = unfold(isym, h, v, planes, fmt::format("{}:{}", f.path, hLine));
+    t.source = f.path;
+    t.format = "ies";
+    t.isym = isym;
+    t.symmetry = symmetryName(isym);
+    const double toM = units == 1 ? 0.3048 : 1.0;
+    t.widthM = std::abs(w) * toM; // LM-63-2019: negative = rounded shapes
+    t.lengthM = std::abs(len) * toM;
+    t.validate();
+    if (extraOut) *extraOut = x;
+    return t;
+}
+
+static std::string num(double v) { return fmt::format("{}", v); }
+
+std::string iesText(const Table& t, const std::string& name)
+{
+    t.validate();
+    bool rotational = t.nc() == 2; // one plane read, one plane written
+    for (size_t ic = 1; ic < t.nc() && rotational; ++ic)
+        for (size_t ig = 0; ig < t.ng(); ++ig)
+            if (t.at(ic, ig) != t.at(0, ig)) rotational = false;
+    size_t nh = rotational ? 1 : t.nc();
+    std::string s;
+    auto line = [&](const std::string& x) { s += x + "\r\n"; };
+    line("IESNA:LM-63-2002");
+    line("[TEST] " + name);
+    line("[MANUFAC] lumibench");
+    line("[LUMINAIRE] " + name + " (generated by lumibench luminaire synth)");
+    line("[OTHER] absolute photometry");
+    line("TILT=NONE");
+    line(fmt::format("1 -1 1 {} {} 1 2 {} {} 0", t.ng(), nh, num(t.widthM), num(t.lengthM)));
+    line("1 1 0");
+    // Values ten to a line, as the standard recommends (lines <= 256 chars).
+    auto block = [&](auto get, size_t n) {
+        std::string cur;
+        for (size_t i = 0; i < n; ++i) {
+            cur += (cur.empty() ? "" : " ") + num(get(i));
+            if ((i + 1) % 10 == 0 || i + 1 == n) {
+                line(cur);
+                cur.clear();
+            }
+        }
+    };
+    block([&](size_t i) { return t.gamma[i]; }, t.ng());
+    block([&](size_t i) { return t.c[i]; }, nh);
+    for (size_t ic = 0; ic < nh; ++ic) block([&](size_t i) { return t.at(ic, i); }, t.ng());
+    return s;
+}
+
+void writeIes(const Table& t, const std::string& path, const std::string& name)
+{
+    std::ofstream out(path, std::ios::binary);
+    out << iesText(t, name);
+    if (!out) throw Error(fmt::format("{}: cannot write", path));
+}
+
+} // namespace lb::photometry

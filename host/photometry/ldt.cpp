@@ -1,0 +1,227 @@
+// EULUMDAT layout (one field per line): 1 company, 2 Ityp, 3 Isym, 4 Nc,
+// 5 Dc, 6 Ng, 7 Dg, 8-12 texts, 13-15 luminaire size (mm), 16-17 luminous
+// area length / width (mm), 18-21 luminous area heights, 22 DFF %, 23 LOR %,
+// 24 conversion factor, 25 tilt, 26 number of lamp sets n, then per set: lamps,
+// type, total lamp flux (lm), colour, CRI, watts; 10 direct ratios; Nc C
+// angles; Ng gamma angles; Mc x Ng intensities (cd/klm), plane by plane.
+//
+// Stored planes Mc by Isym: 0 all Nc; 1 one; 2 C0..C180 (Nc/2 + 1);
+// 3 C90..C270 (Nc/2 + 1, starting at the C = 90 entry of the angle list, the
+// reading of DIN EN 13032 / DIALux); 4 C0..C90 (Nc/4 + 1).
+#include "photometry/ldt.h"
+
+#include "photometry/symmetry.h"
+#include "util/error.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+
+namespace lb::photometry {
+
+Table readLdt(const std::string& path) { return readLdt(TextFile::read(path)); }
+
+Table readLdt(const TextFile& f)
+{
+    LineCursor in(f);
+    in.text("a company line (line 1)");
+    in.integer("the type indicator Ityp", 0, 3);
+    size_t isymLine = in.lineNo();
+    int isym = in.integer("the symmetry indicator Isym", 0, 4);
+    size_t ncLine = in.lineNo();
+    int nc = in.integer("the number of C planes Nc", 0, kMaxAngles);
+    // Rotational files sometimes list no C angle at all (Nc = 0); others need one.
+    if (nc == 0 && isym != 1) f.fail(ncLine, "Nc >= 1 unless Isym = 1", "Nc = 0");
+    in.number("the C plane distance Dc");
+    int ng = in.integer("the number of gamma angles Ng", 2, kMaxAngles);
+    in.number("the gamma distance Dg");
+    for (int i = 8; i <= 12; ++i) in.text(fmt::format("text field {}", i));
+    for (int i = 13; i <= 15; ++i) in.number(fmt::format("a luminaire dimension in mm (field {})", i));
+    double lenMm = in.number("the length / diameter of the luminous area in mm (field 16)");
+    double widMm = in.number("the width of the luminous area in mm (field 17)");
+    for (int i = 18; i <= 21; ++i) in.number(fmt::format("a luminous area height in mm (field {})", i));
+    in.number("the downward flux fraction DFF in % (field 22)");
+    size_t lorLine = in.lineNo();
+    double lor = in.number("the light output ratio LOR in % (field 23)");
+    if (lor < 0) f.fail(lorLine, "a light output ratio >= 0", fmt::format("{}", lor));
+    in.number("the conversion factor (field 24)");
+    in.number("the tilt angle (field 25)");
+    int sets = in.integer("the number of lamp sets n (field 26)", 1, 1000);
+    double lampFlux = 0;
+    for (int s = 0; s < sets; ++s) {
+        in.integer(fmt::format("the number of lamps of set {}", s + 1), -100000, 100000);
+        in.text(fmt::format("the lamp type of set {}", s + 1));
+        size_t l = in.lineNo();
+        double fl = in.number(fmt::format("the total lamp flux in lm of set {}", s + 1));
+        if (fl < 0) f.fail(l, fmt::format("a lamp flux >= 0 for set {}", s + 1), fmt::format("{}", fl));
+        lampFlux += fl;
+        in.text(fmt::format("the colour of set {}", s + 1));
+        in.text(fmt::format("the colour rendering of set {}", s + 1));
+        in.number(fmt::format("the wattage of set {}", s + 1));
+    }
+    if (!(lampFlux > 0)) f.fail(in.lineNo() - 4, "a total lamp flux > 0 over all lamp sets", "0");
+    for (int i = 0; i < 10; ++i) in.number(fmt::format("direct ratio {} of 10", i + 1));
+
+    // Angles. Numeric blocks are read as tokens, so a file that puts several
+    // numbers on a line still reads; the usual layout is one per line.
+    TokenCursor tok(f, in.index(), false, true);
+    std::vector<double> cAll(static_cast<size_t>(nc)), gamma(static_cast<size_t>(ng));
+    for (int i = 0; i < nc; ++i) {
+        size_t l = tok.lineNo();
+        cAll[i] = tok.number(fmt::format("C angle {} of {}", i + 1, nc));
+        if (isym != 1) {
+            if (cAll[i] < 0 || cAll[i] >= 360) f.fail(l, "a C angle in [0, 360)", fmt::format("{}", cAll[i]));
+            if (i > 0 && !(cAll[i] > cAll[i - 1]))
+                f.fail(l, fmt::format("C angles ascending (after {})", cAll[i - 1]), fmt::format("{}", cAll[i]));
+        }
+    }
+    for (int i = 0; i < ng; ++i) {
+        size_t l = tok.lineNo();
+        gamma[i] = tok.number(fmt::format("gamma angle {} of {}", i + 1, ng));
+        if (gamma[i] < 0 || gamma[i] > 180) f.fail(l, "a gamma angle in [0, 180]", fmt::format("{}", gamma[i]));
+        if (i > 0 && !(gamma[i] > gamma[i - 1]))
+            f.fail(l, fmt::format("gamma angles ascending (after {})", gamma[i - 1]), fmt::format("{}", gamma[i]));
+    }
+
+    // Which of the listed C angles carry data.
+    size_t first = 0, mc = static_cast<size_t>(nc);
+    auto need = [&](bool ok, const std::string& what) {
+        if (!ok) f.fail(ncLine, what, fmt::format("Nc = {} with Isym = {}", nc, isym));
+    };
+    switch (isym) {
+    case 1: mc = 1; break;
+    case 2:
+        need(nc % 2 == 0, "an even Nc for Isym 2");
+        mc = nc / 2 + 1;
+        break;
+    case 3: {
+        need(nc % 2 == 0, "an even Nc for Isym 3");
+        mc = nc / 2 + 1;
+        auto it = std::find(cAll.begin(), cAll.end(), 90.0);
+        need(it != cAll.end(), "a C = 90 plane in the angle list for Isym 3");
+        first = static_cast<size_t>(it - cAll.begin());
+        need(first + mc <= cAll.size(), "Nc/2 + 1 planes from C = 90 on for Isym 3");
+        break;
+    }
+    case 4:
+        need(nc % 4 == 0, "Nc divisible by 4 for Isym 4");
+        mc = nc / 4 + 1;
+        break;
+    default: break;
+    }
+    // (Isym 1 may list no angle at all; its one plane stands for every C.)
+    std::vector<double> cStored = {0};
+    if (isym != 1) cStored.assign(cAll.begin() + first, cAll.begin() + first + mc);
+    const double lastC[] = {-1, 0, 180, 270, 90};
+    if (isym >= 2 && cStored.back() != lastC[isym])
+        f.fail(isymLine, fmt::format("stored planes ending at C = {} for Isym {}", lastC[isym], isym),
+               fmt::format("C = {}", cStored.back()));
+    if ((isym == 0 || isym == 2 || isym == 4) && cAll[0] != 0)
+        f.fail(isymLine, "the first C angle 0", fmt::format("{}", cAll[0]));
+
+    // Intensities, cd/klm -> absolute cd.
+    const double scale = lampFlux / 1000.0;
+    std::vector<std::vector<double>> planes(mc, std::vector<double>(static_cast<size_t>(ng)));
+    for (size_t p = 0; p < mc; ++p)
+        for (int i = 0; i < ng; ++i) {
+            size_t l = tok.lineNo();
+            double v = tok.number(fmt::format("intensity {} of plane C = {} (cd/klm)", i + 1, cStored[p]));
+            if (v < 0) f.fail(l, "an intensity >= 0", fmt::format("{}", v));
+            planes[p][i] = v * scale;
+        }
+
+    Table t = unfold(isym, cStored, gamma, planes, fmt::format("{}:{}", f.path, isymLine));
+    t.source = f.path;
+    t.format = "ldt";
+    t.isym = isym;
+    t.symmetry = symmetryName(isym);
+    t.declaredFluxLm = lampFlux * lor / 100.0;
+    t.lengthM = lenMm / 1000.0;
+    t.widthM = (widMm > 0 ? widMm : lenMm) / 1000.0; // b1 = 0: circular, diameter = length
+    t.validate();
+    return t;
+}
+
+// Shortest text that reads back as the same double.
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+
+static std::string num(double v) { return fmt::format("{}", v); }
+
+std::string ldtText(const Table& t, const std::string& name)
+{
+    t.validate();
+    bool rotational = t.nc() == 2; // write what was read: only a one-plane table as Isym 1
+    for (size_t ic = 1; ic < t.nc() && rotational; ++ic)
+        for (size_t ig = 0; ig < t.ng(); ++ig)
+            if (t.at(ic, ig) != t.at(0, ig)) rotational = false;
+    size_t nc = t.nc() - 1; // the 360 plane is implied
+    // Flux and downward fraction by the trapezoidal rule on the nodes (cheap;
+    // the lamp flux only sets the cd/klm scale, which reading undoes).
+    double total = 0, down = 0;
+    for (size_t ic = 0; ic + 1 < t.nc(); ++ic)
+        for (size_t ig = 0; ig + 1 < t.ng(); ++ig) {
+            double g0 = t.gamma[ig] * kDeg, g1 = t.gamma[ig + 1] * kDeg;
+            double i = 0.25 * (t.at(ic, ig) + t.at(ic, ig + 1) + t.at(ic + 1, ig) + t.at(ic + 1, ig + 1));
+            double f = i * (std::cos(g0) - std::cos(g1)) * (t.c[ic + 1] - t.c[ic]) * kDeg;
+            total += f;
+            if (t.gamma[ig + 1] <= 90) down += f;
+        }
+    double downFraction = total > 0 ? down / total : 1;
+    double flux = t.declaredFluxLm > 0 ? t.declaredFluxLm : (total > 0 ? total : 1000);
+    auto uniformStep = [](const std::vector<double>& a, size_t n) {
+        if (n < 2) return 0.0;
+        double d = a[1] - a[0];
+        for (size_t i = 2; i < n; ++i)
+            if (std::abs(a[i] - a[i - 1] - d) > 1e-9) return 0.0;
+        return d;
+    };
+    std::string s;
+    auto line = [&](const std::string& x) { s += x + "\r\n"; };
+    line("lumibench");
+    line("1");
+    line(rotational ? "1" : "0");
+    line(std::to_string(nc));
+    line(num(uniformStep(t.c, t.nc())));
+    line(std::to_string(t.ng()));
+    line(num(uniformStep(t.gamma, t.ng())));
+    line("-");
+    line(name);
+    line(name);
+    line(name + ".ldt");
+    line("generated by lumibench luminaire synth");
+    line(num(std::round(t.lengthM * 1000)));
+    line(num(std::round(t.widthM * 1000)));
+    line("0");
+    line(num(t.lengthM * 1000));
+    line(num(t.widthM * 1000));
+    for (int i = 0; i < 4; ++i) line("0");
+    line(num(std::round(1000 * downFraction) / 10));
+    line("100");
+    line("1");
+    line("0");
+    line("1");
+    line("1");
+    line("synthetic");
+    line(num(flux));
+    line("-");
+    line("-");
+    line("0");
+    for (int i = 0; i < 10; ++i) line("0");
+    for (size_t i = 0; i < nc; ++i) line(num(t.c[i]));
+    for (double g : t.gamma) line(num(g));
+    size_t planes = rotational ? 1 : nc;
+    for (size_t ic = 0; ic < planes; ++ic)
+        for (size_t ig = 0; ig < t.ng(); ++ig) line(num(t.at(ic, ig) * 1000.0 / flux));
+    return s;
+}
+
+void writeLdt(const Table& t, const std::string& path, const std::string& name)
+{
+    std::ofstream out(path, std::ios::binary);
+    out << ldtText(t, name);
+    if (!out) throw Error(fmt::format("{}: cannot write", path));
+}
+
+} // namespace lb::photometry
