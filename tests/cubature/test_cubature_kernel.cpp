@@ -1,0 +1,80 @@
+// kernels/cubature.cl on the device equals the same header run on the host.
+#include "math/kmath.h"
+#include "photometry/table.h"
+#include "scene/scene.h"
+#include "testutil.h"
+
+#include <chrono>
+#include <cmath>
+
+namespace lb {
+namespace {
+
+struct KernelCase {
+    const char* opts;
+    int tri, wt, ff, dyn;
+};
+
+// Renders a 32 x 32 image of the scene h = 1, R = 3pi/4 with each variant on
+// the device (float) and compares with lb::f32 on the host, pixel by pixel.
+// Tolerance: OpenCL C may contract to fma and has its own atan2 / sqrt
+// (<= 4 ulp), so values agree to ~1e-6 relative, not bit for bit; 1e-4
+// relative leaves room for sums of ~10 terms. A triangulation decision made
+// differently on the two sides (a sample within rounding of a tolerance band)
+// could change a pixel more: at most 1% of the pixels may do so.
+TEST(CubatureKernel, MatchesHostFloat)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    auto lum = photometry::tabulate(
+                   [](double c, double g) {
+                       double gr = g * M_PI / 180, cr = c * M_PI / 180;
+                       return 600 + 400 * std::cos(gr) + 150 * std::sin(gr) * std::cos(cr);
+                   },
+                   73, 181)
+                   .packed();
+    Scene s;
+    s.height = 1.0;
+    s.rotation = 3 * M_PI / 4;
+    s.res = 32;
+    auto P64 = s.params();
+    std::vector<float> P(P64.begin(), P64.end());
+    const int N = s.res;
+    const KernelCase cases[] = {{"", 0, 1, 0, 1},
+                                {"-DLB_CUB_TRI=1 -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1", 1, 0, 1, 1},
+                                {"-DLB_CUB_TRI=1 -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=15", 1, 2, 0, 15}};
+    for (const auto& kc : cases) {
+        cl::Buffer bP(rt->context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, P.size() * 4, P.data());
+        cl::Buffer bl(rt->context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, lum.size() * 4, lum.data());
+        cl::Buffer bo(rt->context(), CL_MEM_WRITE_ONLY, N * N * 4);
+        cl::Buffer bs(rt->context(), CL_MEM_WRITE_ONLY, 2 * N * N * 4);
+        cl::Kernel k = rt->kernel("cubature.cl", "cubature", kc.opts);
+        k.setArg(0, bP);
+        k.setArg(1, bl);
+        k.setArg(2, bo);
+        k.setArg(3, bs);
+        k.setArg(4, 1);
+        ocl::setReal(k, 5, 1e-3, false);
+        ocl::setReal(k, 6, 0.0, false);
+        rt->launch2D(k, N, N).wait();
+        std::vector<float> out(N * N);
+        std::vector<int> st(2 * N * N);
+        rt->queue().enqueueReadBuffer(bo, CL_TRUE, 0, N * N * 4, out.data());
+        rt->queue().enqueueReadBuffer(bs, CL_TRUE, 0, 2 * N * N * 4, st.data());
+        using namespace lb::f32;
+        lb_light L = lb_scene_light(P.data());
+        int off = 0;
+        for (int r = 0; r < N; ++r)
+            for (int c = 0; c < N; ++c) {
+                int nt, nf;
+                real3 x = lb_pixel_position(P.data(), r, c);
+                float e = lb_cubature_irradiance(lum.data(), L, x, real3(0, 0, 1), kc.tri, kc.wt, kc.ff, kc.dyn,
+                                                 1e-3f, 0.0f, &nt, &nf);
+                ASSERT_TRUE(std::isfinite(out[r * N + c])) << kc.opts;
+                if (std::fabs(out[r * N + c] - e) > 1e-4 * std::fabs(e) + 1e-6f || st[2 * (r * N + c)] != nt) ++off;
+            }
+        EXPECT_LE(off, N * N / 100) << kc.opts;
+    }
+}
+
+} // namespace
+} // namespace lb
