@@ -78,3 +78,63 @@ TEST(CubatureKernel, MatchesHostFloat)
 
 } // namespace
 } // namespace lb
+
+namespace lb {
+namespace {
+
+// Device time (median of 5 after a warm-up, DESIGN 6), triangles and flips
+// per pixel of each variant on a 64 x 64 image of h = 1, R = 3pi/4, printed
+// for the record. Asserts only what must hold: every pixel has between 1
+// and LB_CUB_MAXT triangles, no more flips than the guard allows, and the fan
+// never flips.
+TEST(CubatureKernel, TimingsTrianglesFlips)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    auto lum = photometry::tabulate([](double, double g) { return g <= 90 ? 1000 * std::cos(g * M_PI / 180) : 0.0; },
+                                    2, 181)
+                   .packed();
+    Scene s;
+    s.height = 1.0;
+    s.rotation = 3 * M_PI / 4;
+    s.res = 64;
+    auto P64 = s.params();
+    std::vector<float> P(P64.begin(), P64.end());
+    const int N = s.res;
+    const char* variants[] = {"", "-DLB_CUB_TRI=1", "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9",
+                              "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=15", "-DLB_CUB_DYNAMIC=15"};
+    cl::Buffer bP(rt->context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, P.size() * 4, P.data());
+    cl::Buffer bl(rt->context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, lum.size() * 4, lum.data());
+    cl::Buffer bo(rt->context(), CL_MEM_WRITE_ONLY, N * N * 4);
+    cl::Buffer bs(rt->context(), CL_MEM_WRITE_ONLY, 2 * N * N * 4);
+    for (const char* v : variants) {
+        cl::Kernel k = rt->kernel("cubature.cl", "cubature", v);
+        k.setArg(0, bP);
+        k.setArg(1, bl);
+        k.setArg(2, bo);
+        k.setArg(3, bs);
+        k.setArg(4, 1);
+        ocl::setReal(k, 5, 1e-3, false);
+        ocl::setReal(k, 6, 0.0, false);
+        auto t = rt->time([&] { return rt->launch2D(k, N, N); }, 5, 1);
+        std::vector<int> st(2 * N * N);
+        rt->queue().enqueueReadBuffer(bs, CL_TRUE, 0, st.size() * 4, st.data());
+        double tris = 0, flips = 0;
+        for (int i = 0; i < N * N; ++i) {
+            EXPECT_GE(st[2 * i], 1);
+            EXPECT_LE(st[2 * i], LB_CUB_MAXT);
+            EXPECT_LE(st[2 * i + 1], LB_CUB_MAXFLIPS);
+            tris += st[2 * i];
+            flips += st[2 * i + 1];
+        }
+        if (std::string(v).find("TRI=1") == std::string::npos) {
+            EXPECT_EQ(flips, 0) << v;
+        }
+        std::printf("[ cubature.cl %-36s ] %s, %dx%d: median %.3f ms (min %.3f), %.3f triangles/pixel, %.4f "
+                    "flips/pixel\n",
+                    v[0] ? v : "(default: fan, average, cp)", rt->info().name.c_str(), N, N, t.median_ms, t.min_ms,
+                    tris / (N * N), flips / (N * N));
+    }
+}
+
+} // namespace
+} // namespace lb
