@@ -25,11 +25,13 @@
  *      (A |n_L . d_i|) (paper Eq. 2). Every weighting is linear in the L_i:
  *        sample  (paper Eq. 9):  E = sum_tri |D| (L_i G_i + L_j G_j + L_k G_k) / 3
  *        average (paper Eq. 10): E = sum_tri |D| (L_i + L_j + L_k)/3 (G_i + G_j + G_k)/3
- *        dotout:                 E = sum_tri |D| (c_i L_i + c_j L_j + c_k L_k)/3 (G_i/c_i + G_j/c_j + G_k/c_k)/3
+ *        dotout:                 E = sum_tri |D| (c_i L_i + c_j L_j + c_k L_k)/(c_i + c_j + c_k) (G_i + G_j + G_k)/3
  *      with G = max(0, nx . w) and c = |n_L . w| (w the unit direction from x
- *      to the sample). dotout averages the intensity I/A = c L and, apart, the
- *      smooth geometric factor G / c (paper 5.4: "G together with 1/(n_A . w)
- *      is smoothly changing"), so the singular 1/c of L_e is never averaged.
+ *      to the sample). dotout is Eq. 10 with the vertex radiances weighted by
+ *      |n_L . w| (DESIGN 4): the triangle's radiance is the mean intensity
+ *      over the mean projected area, (I_i + I_j + I_k) / (A (c_i + c_j + c_k)),
+ *      so a vertex seen at a grazing angle, whose L = I / (A c) is least
+ *      certain, counts least; for a Lambertian emitter it equals average.
  *      |D| is the spherical excess by Van Oosterom-Strackee (atan2 form,
  *      lb_tri_solid_angle), 0 in the limit of a degenerate triangle.
  *   6. normalize=formfactor (thesis Eq. 5.11): E = E_lambert * (sum w_i L_i) /
@@ -413,7 +415,7 @@ LB_FN real lb_cub_weights(const lb_cub* T, real3 u, real3 v, real3 nL, real3 nx,
             w[b] += gm;
             w[cc] += gm;
         } else {
-            real gm = third * (g[a] / c[a] + g[b] / c[b] + g[cc] / c[cc]) / R(3);
+            real gm = om * (g[a] + g[b] + g[cc]) / (R(3) * (c[a] + c[b] + c[cc]));
             w[a] += gm * c[a];
             w[b] += gm * c[b];
             w[cc] += gm * c[cc];
