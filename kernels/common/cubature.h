@@ -74,6 +74,21 @@ LB_FN real lb_cub_tol(void)
 #endif
 }
 
+/* In-circle tolerance: 32 ulp of the dimensionless determinant (its
+ * rounding error is a few ulp). Not the merge tolerance: a sample just
+ * outside the merge distance eps of another makes determinants of order eps,
+ * and those must still be decided, or the flips near a cluster of samples
+ * stop early and leave a triangulation different from the one the cluster
+ * collapses to (measured: a 0.7% jump in float with tol = 1e-5). */
+LB_FN real lb_cub_incircle_tol(void)
+{
+#if LB_REAL_IS_DOUBLE
+    return R(32) * R(2.220446049250313e-16);
+#else
+    return R(32) * R(1.1920929e-7);
+#endif
+}
+
 /* Machine epsilon of real (a function, not a macro: the host includes this
  * header once per precision). */
 LB_FN real lb_cub_ulp(void)
@@ -364,7 +379,7 @@ LB_FN void lb_cub_delaunay(lb_cub* T)
                 if (k2 < k) /* hull edge, or seen from the other side already */
                     continue;
                 int d = lb_cub_tv(T, k2, (e2 + 2) % 3);
-                if (lb_cub_incircle(T, a, b, c, d) <= lb_cub_tol())
+                if (lb_cub_incircle(T, a, b, c, d) <= lb_cub_incircle_tol())
                     continue;
                 /* new triangles (a, d, c) and (d, b, c) */
                 if (lb_cub_side(T->q[d], T->q[c], T->q[a]) <= T->eps ||
@@ -440,19 +455,73 @@ LB_FN real3 lb_polygon_centroid(const real3* poly, int n)
     return wsum > R(0) ? s / wsum : m / (real)(n > 0 ? n : 1);
 }
 
+/* Closest point of the convex polygon poly[0..n) (relative to x, in the
+ * light's plane with frame u, v, normal nL) to the point t of that plane, for
+ * targets that may be far away (the NP of a grazing normal). The same point
+ * as lb_closest_point_polygon, decided differently: that function compares
+ * squared distances, which for a target at distance R cannot tell an edge
+ * point from a vertex closer than R sqrt(ulp) (R = 1e3: 0.24 in float),
+ * so NP hopped between them. Here the decision uses the signed side and the
+ * projection parameter of t on each edge, linear in t (error ~ R ulp): t
+ * outside edge i with its projection inside the edge -> that projection
+ * (the polygon lies behind the edge's line, so nothing is nearer); else the
+ * vertex whose normal cone holds t. */
+LB_FN real3 lb_cub_clamp(const real3* poly, int n, real3 u, real3 v, real3 nL, real3 t)
+{
+    real3 o = nL * dot(nL, poly[0]);
+    real2 qt = R2(dot(t, u), dot(t, v));
+    real wind = R(0);
+    for (int i = 0; i < n; ++i) {
+        real2 a = R2(dot(poly[i], u), dot(poly[i], v));
+        real2 b = R2(dot(poly[(i + 1) % n], u), dot(poly[(i + 1) % n], v));
+        wind += lb_cross2(a, b);
+    }
+    real sg = wind >= R(0) ? R(1) : R(-1);
+    real worst = R(0);
+    int edge = -1, inside = 1;
+    real edge_s = R(0);
+    real sps[LB_MAXV];
+    for (int i = 0; i < n; ++i) {
+        real2 a = R2(dot(poly[i], u), dot(poly[i], v));
+        real2 b = R2(dot(poly[(i + 1) % n], u), dot(poly[(i + 1) % n], v));
+        real2 e = b - a;
+        real ee = dot(e, e);
+        sps[i] = ee > R(0) ? dot(qt - a, e) / ee : R(0);
+        real side = ee > R(0) ? sg * lb_cross2(e, qt - a) / sqrt(ee) : R(0); /* < 0: outside edge i */
+        if (side < R(0))
+            inside = 0;
+        if (side < R(0) && sps[i] >= R(0) && sps[i] <= R(1) && side < worst) {
+            worst = side;
+            edge = i;
+            edge_s = sps[i];
+        }
+    }
+    if (inside)
+        return o + u * qt.x + v * qt.y;
+    if (edge >= 0)
+        return poly[edge] + (poly[(edge + 1) % n] - poly[edge]) * edge_s;
+    /* vertex k: beyond the end of edge k-1 and before the start of edge k */
+    for (int k = 0; k < n; ++k)
+        if (sps[(k + n - 1) % n] >= R(1) && sps[k] <= R(0))
+            return poly[k];
+    int where;
+    return lb_closest_point_polygon(poly, n, nL, t, &where);
+}
+
 /* Normal point (paper 4.2, Drobot 2014): where the ray from x (the origin)
  * along nx meets the light's plane, clamped to the polygon. When the ray
- * misses the plane (or meets it very far away), a far point in the direction
- * of nx projected onto the plane is clamped instead, which is the limit of
- * the hit point as the ray turns parallel to the plane. */
-LB_FN real3 lb_normal_point(const real3* poly, int n, real3 nL, real3 nx)
+ * misses the plane (or meets it farther than 1e3 light sizes), a point that
+ * far in the direction of nx projected onto the plane is clamped instead:
+ * the limit of the hit point as the ray turns parallel to the plane, to
+ * 1e-3 of the light's size. */
+LB_FN real3 lb_normal_point(const real3* poly, int n, real3 u, real3 v, real3 nL, real3 nx)
 {
     real dl = dot(nL, poly[0]);
     real dn = dot(nL, nx);
     real size = R(0);
     for (int i = 1; i < n; ++i)
         size = fmax(size, length(poly[i] - poly[0]));
-    real big = R(1e4) * (fabs(dl) + size + length(poly[0]));
+    real big = R(1e3) * (fabs(dl) + size);
     real3 target;
     if (dn * dl > R(0) && dl / dn < big) {
         target = nx * (dl / dn);
@@ -461,14 +530,13 @@ LB_FN real3 lb_normal_point(const real3* poly, int n, real3 nL, real3 nx)
         real lt = length(tg);
         target = nL * dl + (lt > R(0) ? tg * (big / lt) : R3(0, 0, 0));
     }
-    int where;
-    return lb_closest_point_polygon(poly, n, nL, target, &where);
+    return lb_cub_clamp(poly, n, u, v, nL, target);
 }
 
 /* Most representative point (paper 4.2): the light's plane hit by the ray
  * along the half vector of the directions to the closest point cp and the
  * normal point np, clamped to the polygon; cp when that ray misses. */
-LB_FN real3 lb_mrp_point(const real3* poly, int n, real3 nL, real3 cp, real3 np)
+LB_FN real3 lb_mrp_point(const real3* poly, int n, real3 u, real3 v, real3 nL, real3 cp, real3 np)
 {
     real lc = length(cp), ln = length(np);
     if (!(lc > R(0)) || !(ln > R(0)))
@@ -478,8 +546,7 @@ LB_FN real3 lb_mrp_point(const real3* poly, int n, real3 nL, real3 cp, real3 np)
     real dn = dot(nL, h);
     if (!(dn * dl > R(0)))
         return cp;
-    int where;
-    return lb_closest_point_polygon(poly, n, nL, h * (dl / dn), &where);
+    return lb_cub_clamp(poly, n, u, v, nL, h * (dl / dn));
 }
 
 /* The whole geometric step for the shading point x (world) with normal nx:
@@ -506,13 +573,16 @@ LB_FN real lb_cubature_setup(lb_cub* T, lb_light L, real3 x, real3 nx, int trian
     }
     real3 dyn[4];
     int nd = 0;
-    int where;
-    real3 cp = lb_closest_point_polygon(poly, n, L.n, R3(0, 0, 0), &where);
-    real3 np = (dynamic & (LB_CUB_NP | LB_CUB_MRP)) ? lb_normal_point(poly, n, L.n, nx) : cp;
+    /* CP by the parametric clamp too: lb_closest_point_polygon's squared
+     * distances cannot separate a vertex from an edge point closer than
+     * |x - CP| sqrt(ulp) (7e-4 at 2 m in float), and CP hopping onto the
+     * corner changed the Delaunay triangulation of nearby dynamic points */
+    real3 cp = lb_cub_clamp(poly, n, L.u, L.v, L.n, R3(0, 0, 0));
+    real3 np = (dynamic & (LB_CUB_NP | LB_CUB_MRP)) ? lb_normal_point(poly, n, L.u, L.v, L.n, nx) : cp;
     if (dynamic & LB_CUB_CP)
         dyn[nd++] = cp;
     if (dynamic & LB_CUB_MRP)
-        dyn[nd++] = lb_mrp_point(poly, n, L.n, cp, np);
+        dyn[nd++] = lb_mrp_point(poly, n, L.u, L.v, L.n, cp, np);
     if (dynamic & LB_CUB_NP)
         dyn[nd++] = np;
     if (dynamic & LB_CUB_BARY)
