@@ -6,3 +6,4 @@
 #include "photometry.h"
 #include "scene.h"
 #include "cubature.h"
+#include "voronoi.h"
