@@ -5,3 +5,5 @@
 #include "polygon.h"
 #include "photometry.h"
 #include "scene.h"
+#include "cubature.h"
+#include "voronoi.h"

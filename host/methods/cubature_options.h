@@ -1,0 +1,44 @@
+// cubature_options.h -- the `cubature` method's parameters (DESIGN 4) parsed
+// from the key=value pairs of a method spec, and turned into the kernel's
+// structural -D defines (kernels/cubature.cl) and its continuous arguments.
+// For the method registry: parse(), then program options defines() and the
+// kernel arguments plane_eps, horizon_eps.
+#pragma once
+
+#include <map>
+#include <string>
+
+namespace lb::methods {
+
+struct CubatureOptions {
+    int triangulation = 0; // 0 fan (paper 5.2), 1 delaunay (Lawson flips, thesis 5.2)
+    int weighting = 1;     // 0 sample (paper Eq. 9), 1 average (Eq. 10), 2 dotout
+    bool formfactor = false; // normalize: none | formfactor (thesis Eq. 5.11)
+    int dynamic = 1;       // bit set: 1 cp, 2 np, 4 mrp, 8 barycentre
+    // plane_eps (metres): receivers closer than this to the light's plane are
+    // moved to this distance (paper 5.3). 1 mm on a 1 m light: at that
+    // distance the radiance's 1/|n_L . d| is resolved in float to ~1e-4
+    // relative, and the shift is below a pixel of the 5 m / 512 image.
+    double planeEps = 1e-3;
+    // horizon_eps (metres): clip at n_x . (p - x) >= eps (thesis 5.2.4 used
+    // 0.1). Default 0: no bias; in the normalized scene the light never
+    // crosses the receiver's horizon, so the option only matters elsewhere.
+    double horizonEps = 0.0;
+
+    // Keys: triangulation, weighting, normalize, dynamic, plane_eps,
+    // horizon_eps. `dynamic` is a '+'-separated set of cp, np, mrp,
+    // barycentre (alias bary), or none (corners only). Unknown keys, values
+    // or negative epsilons throw lb::InputError naming them.
+    static CubatureOptions parse(const std::map<std::string, std::string>& kv);
+
+    // "-DLB_CUB_TRI=.. -DLB_CUB_WEIGHT=.. -DLB_CUB_NORMALIZE=.. -DLB_CUB_DYNAMIC=.."
+    std::string defines() const;
+    // Canonical parameter values (for result records).
+    std::map<std::string, std::string> describe() const;
+};
+
+// "cp+bary" -> LB_CUB_CP | LB_CUB_BARY; throws lb::InputError on an unknown name.
+int parseDynamicSet(const std::string& s);
+std::string dynamicSetName(int mask);
+
+} // namespace lb::methods

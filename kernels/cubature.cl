@@ -1,0 +1,53 @@
+/* cubature.cl -- scattered-sampling cubature (paper Sec. 5, thesis 5.2): one
+ * work-item per pixel of the normalized scene, all the math in
+ * common/cubature.h (lb_cubature_irradiance).
+ *
+ * Structural variants (-D, defaults = the paper's method):
+ *   LB_CUB_TRI        0 fan around the first dynamic point | 1 delaunay (Lawson flips)
+ *   LB_CUB_WEIGHT     0 sample (paper Eq. 9) | 1 average (Eq. 10) | 2 dotout
+ *   LB_CUB_NORMALIZE  0 none | 1 formfactor (thesis Eq. 5.11)
+ *   LB_CUB_DYNAMIC    bit set of dynamic points: 1 cp, 2 np, 4 mrp, 8 barycentre (0: corners only)
+ * Continuous tunables (kernel arguments): plane_eps, horizon_eps (metres).
+ *
+ * @variants: "" | "-DLB_CUB_TRI=1" | "-DLB_CUB_TRI=1 -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=15" | "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_DYNAMIC=0"
+ */
+#include "common/lbmath.h"
+
+#ifndef LB_CUB_TRI
+#define LB_CUB_TRI LB_CUB_FAN
+#endif
+#ifndef LB_CUB_WEIGHT
+#define LB_CUB_WEIGHT LB_CUB_AVERAGE
+#endif
+#ifndef LB_CUB_NORMALIZE
+#define LB_CUB_NORMALIZE 0
+#endif
+#ifndef LB_CUB_DYNAMIC
+#define LB_CUB_DYNAMIC LB_CUB_CP
+#endif
+
+/* P: scene parameters (common/scene.h); lum: packed luminaire
+ * (common/photometry.h); out: N x N irradiance in lux, row-major, row 0 at
+ * the top; stats: 2 ints per pixel (triangles, flips), written when
+ * want_stats != 0 (pass any small buffer otherwise). */
+__kernel void cubature(__global const real* P, __global const float* lum, __global real* out,
+                       __global int* stats, int want_stats, real plane_eps, real horizon_eps)
+{
+    int col = get_global_id(0);
+    int row = get_global_id(1);
+    int n = (int)P[15];
+    if (col >= n || row >= n)
+        return;
+    lb_light L = lb_scene_light(P);
+    real3 x = lb_pixel_position(P, row, col);
+    real3 nx = lb_p3(P, 16);
+    int nt, nf;
+    real e = lb_cubature_irradiance(lum, L, x, nx, LB_CUB_TRI, LB_CUB_WEIGHT, LB_CUB_NORMALIZE, LB_CUB_DYNAMIC,
+                                    plane_eps, horizon_eps, &nt, &nf);
+    int i = row * n + col;
+    out[i] = e;
+    if (want_stats) {
+        stats[2 * i] = nt;
+        stats[2 * i + 1] = nf;
+    }
+}

@@ -1,0 +1,52 @@
+// The cubature method's parameters: parsing, defines, errors.
+#include "math/kmath.h"
+#include "methods/cubature_options.h"
+#include "util/error.h"
+
+#include <gtest/gtest.h>
+
+namespace lb::methods {
+namespace {
+
+TEST(CubatureOptions, DefaultsAreThePapersMethod)
+{
+    auto o = CubatureOptions::parse({});
+    EXPECT_EQ(o.defines(), "-DLB_CUB_TRI=0 -DLB_CUB_WEIGHT=1 -DLB_CUB_NORMALIZE=0 -DLB_CUB_DYNAMIC=1");
+    EXPECT_EQ(o.describe().at("dynamic"), "cp");
+    EXPECT_DOUBLE_EQ(o.planeEps, 1e-3);
+    EXPECT_DOUBLE_EQ(o.horizonEps, 0.0);
+}
+
+TEST(CubatureOptions, ParsesEveryOption)
+{
+    auto o = CubatureOptions::parse({{"triangulation", "delaunay"},
+                                     {"weighting", "dotout"},
+                                     {"normalize", "formfactor"},
+                                     {"dynamic", "cp+mrp+bary"},
+                                     {"plane_eps", "0.01"},
+                                     {"horizon_eps", "0.1"}});
+    EXPECT_EQ(o.defines(), "-DLB_CUB_TRI=1 -DLB_CUB_WEIGHT=2 -DLB_CUB_NORMALIZE=1 -DLB_CUB_DYNAMIC=13");
+    EXPECT_EQ(o.dynamic, LB_CUB_CP | LB_CUB_MRP | LB_CUB_BARY); // the header's bits
+    EXPECT_DOUBLE_EQ(o.planeEps, 0.01);
+    EXPECT_DOUBLE_EQ(o.horizonEps, 0.1);
+    EXPECT_EQ(o.describe().at("dynamic"), "cp+mrp+barycentre");
+    EXPECT_EQ(parseDynamicSet("none"), 0);
+    EXPECT_EQ(dynamicSetName(15), "cp+np+mrp+barycentre");
+}
+
+TEST(CubatureOptions, BadValuesAreInputErrors)
+{
+    for (auto kv : std::vector<std::map<std::string, std::string>>{{{"triangulation", "voronoi"}},
+                                                                   {{"weighting", "Average"}},
+                                                                   {{"normalize", "yes"}},
+                                                                   {{"dynamic", "cp+foo"}},
+                                                                   {{"dynamic", ""}},
+                                                                   {{"plane_eps", "-1"}},
+                                                                   {{"horizon_eps", "0.1x"}},
+                                                                   {{"horizon_eps", "nan"}},
+                                                                   {{"flips", "3"}}})
+        EXPECT_THROW(CubatureOptions::parse(kv), InputError) << kv.begin()->first;
+}
+
+} // namespace
+} // namespace lb::methods
