@@ -5,3 +5,4 @@
 #include "polygon.h"
 #include "photometry.h"
 #include "scene.h"
+#include "dynamic.h"
