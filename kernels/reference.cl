@@ -5,7 +5,7 @@
  * Each cell of the (s, t) square carries a value (the tensor 4x4
  * Gauss-Legendre rule summed over its 4 children) and an error estimate
  * (|rule on the cell - sum of the rules on its children|). Starting from a
- * 4x4 grid of cells, the cell with the largest error is split into its 4
+ * 2x2 grid of cells, the cell with the largest error is split into its 4
  * children until the summed error is <= rel_tol * |E| (or the cell store /
  * split budget is spent). Choosing the worst cell globally (QUADPACK style)
  * rather than a per-cell tolerance matters here: the bilinear photometric
@@ -19,8 +19,11 @@
  */
 #include "common/lbmath.h"
 
-/* Cells the store can hold (private memory per work-item): 16 + 3 x 128. */
-#define LB_REF_CELLS 400
+/* The first cells: an LB_REF_INIT^2 grid (each with its 4 children, so the
+ * first error estimate compares 4x4 against 8x8 nodes per grid cell). */
+#define LB_REF_INIT 2
+/* Cells the store can hold (private memory per work-item): 4 + 3 x 128. */
+#define LB_REF_CELLS 388
 
 /* 4-point Gauss-Legendre nodes and weights on [0, 1]. */
 __constant real lb_gl_x[4] = {R(0.0694318442029737124), R(0.330009478207571868), R(0.669990521792428132),
@@ -90,13 +93,14 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     real cs[LB_REF_CELLS], ct[LB_REF_CELLS], ch[LB_REF_CELLS], cv[LB_REF_CELLS], ce[LB_REF_CELLS];
     int n = 0;
     real total = R(0), toterr = R(0);
-    for (int j = 0; j < 4; ++j)
-        for (int i = 0; i < 4; ++i) {
-            real s0 = R(0.25) * (real)i, t0 = R(0.25) * (real)j;
-            real q = lb_ref_rule(lum, &c, s0, t0, R(0.25));
+    const real h0 = R(1) / (real)LB_REF_INIT;
+    for (int j = 0; j < LB_REF_INIT; ++j)
+        for (int i = 0; i < LB_REF_INIT; ++i) {
+            real s0 = h0 * (real)i, t0 = h0 * (real)j;
+            real q = lb_ref_rule(lum, &c, s0, t0, h0);
             real e;
-            real v = lb_ref_refine(lum, &c, s0, t0, R(0.25), q, &e);
-            cs[n] = s0; ct[n] = t0; ch[n] = R(0.25); cv[n] = v; ce[n] = e;
+            real v = lb_ref_refine(lum, &c, s0, t0, h0, q, &e);
+            cs[n] = s0; ct[n] = t0; ch[n] = h0; cv[n] = v; ce[n] = e;
             ++n;
             total += v;
             toterr += e;

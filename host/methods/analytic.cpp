@@ -8,7 +8,7 @@
 
 namespace lb::methods {
 
-photometry::Table cosineTable(int n, double i0, bool twoSided)
+photometry::Table cosineTable(int n, double i0, bool twoSided, double stepDeg)
 {
     const double deg = 3.14159265358979323846 / 180.0;
     auto t = photometry::tabulate(
@@ -17,7 +17,7 @@ photometry::Table cosineTable(int n, double i0, bool twoSided)
             if (g >= 90.0 && !twoSided) return 0.0;
             return i0 * std::pow(std::fabs(c), n);
         },
-        2, 1801);
+        2, static_cast<int>(std::lround(180.0 / stepDeg)) + 1);
     t.format = "analytic";
     t.isym = 1;
     t.symmetry = "rotational";

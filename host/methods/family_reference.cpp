@@ -15,8 +15,8 @@ void registerReference(Registry& r)
     f.file = "reference.cl";
     f.params = {
         Param::real("tol", 1e-6, 1e-9, 1e-1, Scale::Log, "target relative error per pixel", false),
-        Param::integer("max_splits", 120, 0, 127, Scale::Linear,
-                       "cell splits per pixel at most (the store holds 16 + 3 x 127 cells)"),
+        Param::integer("max_splits", 128, 0, 128, Scale::Linear,
+                       "cell splits per pixel at most (the store holds 4 + 3 x 128 cells)"),
     };
     f.defines = [](const MethodSpec&) { return std::string(); };
     f.expensive = true;
