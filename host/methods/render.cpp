@@ -43,7 +43,7 @@ nlohmann::json timingJson(const ocl::Timing& t)
 }
 
 // A cached result: <key>.exr, <key>.<extra>.exr, <key>.json.
-bool loadCached(const std::string& base, const Family& fam, RenderResult& r)
+bool loadCached(const std::string& base, RenderResult& r)
 {
     std::ifstream in(base + ".json");
     if (!in || !fs::exists(base + ".exr")) return false;
@@ -62,7 +62,6 @@ bool loadCached(const std::string& base, const Family& fam, RenderResult& r)
         std::cerr << "lumibench: ignoring unreadable cache entry " << base << ": " << e.what() << '\n';
         return false;
     }
-    (void)fam;
     r.nonfinite = countNonfinite(r.image);
     r.cached = true;
     return true;
@@ -119,7 +118,7 @@ RenderResult render(ocl::Runtime& rt, const photometry::Table& table, const Scen
     std::string base;
     if (fam.expensive && opt.useCache) {
         base = (fs::path(cacheDir(opt)) / (spec.name + "-" + cacheKey(table, scene, spec, precision))).string();
-        if (loadCached(base, fam, result)) {
+        if (loadCached(base, result)) {
             result.stats["cached"] = true;
             return result;
         }
@@ -145,8 +144,9 @@ RenderResult render(ocl::Runtime& rt, const photometry::Table& table, const Scen
     if (fam.setArgs) fam.setArgs(ctx, 4);
 
     if (fam.expensive) {
-        // One run in bands of rows, progress between them; the time is the sum
-        // of the bands' device times.
+        // One run (no warm-up: minutes at large sizes, and deterministic) in
+        // bands of rows, progress between them; the time is the sum of the
+        // bands' device times.
         int band = fam.bandRows > 0 ? fam.bandRows : res;
         double total = 0;
         for (int r0 = 0; r0 < res; r0 += band) {
