@@ -14,7 +14,7 @@ void registerReference(Registry& r)
     f.summary = "converged area integral (adaptive 4x4 Gauss-Legendre cubature) with an error estimate";
     f.file = "reference.cl";
     f.params = {
-        Param::real("tol", 1e-6, 1e-9, 1e-1, Scale::Log, "target relative error per pixel", false),
+        Param::real("tol", 1e-5, 1e-9, 1e-1, Scale::Log, "target relative error per pixel", false),
         Param::integer("max_splits", 128, 0, 128, Scale::Linear,
                        "cell splits per pixel at most (the store holds 4 + 3 x 128 cells)"),
     };

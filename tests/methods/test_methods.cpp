@@ -137,13 +137,13 @@ TEST(Methods, RotationalLuminaireGivesFourFoldSymmetryAtPi)
     // At R = pi the square light hangs level above the image centre; with a
     // rotationally symmetric I the image is invariant under a quarter turn
     // (and mirrors). Deterministic geometry methods: to rounding (1e-9
-    // relative in double); the reference to its tolerance (1e-6, its cells are
-    // not symmetric under the turn): 1e-5.
+    // relative in double); the reference to twice its tolerance (1e-5, its
+    // cells are not symmetric under the turn): 2e-5.
     Scene sc = scene(0.6, M_PI, 10);
     auto t = batwing();
     for (auto* spec : {"reference", "point", "structured", "cp", "np", "mrp"}) {
         Image img = run(*rt, t, sc, spec).image;
-        double tol = std::string(spec) == "reference" ? 1e-5 : 1e-9;
+        double tol = std::string(spec) == "reference" ? 2e-5 : 1e-9;
         double peak = *std::max_element(img.px.begin(), img.px.end());
         int n = sc.res;
         for (int r = 0; r < n; ++r)

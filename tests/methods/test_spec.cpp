@@ -31,7 +31,7 @@ TEST(Spec, DefaultsAndValues)
     EXPECT_EQ(s.given.size(), 2u);
     EXPECT_EQ(s.canonical(), "mc:n=40,pattern=halton,seed=0");
     EXPECT_EQ(s.paramsJson()["n"], 40);
-    EXPECT_EQ(parseSpec("reference").num("tol"), 1e-6);
+    EXPECT_EQ(parseSpec("reference").num("tol"), 1e-5);
     EXPECT_EQ(parseSpec("point:").name, "point");
 }
 
