@@ -21,4 +21,8 @@ void addBenchCommand(CLI::App& app);
 // For commands whose issue has not landed: a clear message and exit code 3.
 [[noreturn]] void notImplemented(const std::string& what);
 
+// An angle in radians from a number or an expression like pi, 3pi/4, 3*pi/4,
+// 0.75pi (cmd_render.cpp); InputError otherwise.
+double parseAngle(const std::string& text);
+
 } // namespace lb::cli

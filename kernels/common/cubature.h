@@ -444,21 +444,7 @@ LB_FN real lb_cub_weights(const lb_cub* T, real3 u, real3 v, real3 nL, real3 nx,
     return total;
 }
 
-/* Area barycentre of the convex polygon poly[0..n) (continuous under
- * clipping, unlike the vertex mean). */
-LB_FN real3 lb_polygon_centroid(const real3* poly, int n)
-{
-    real3 s = R3(0, 0, 0), m = R3(0, 0, 0);
-    real wsum = R(0);
-    for (int i = 0; i < n; ++i)
-        m += poly[i];
-    for (int i = 1; i + 1 < n; ++i) {
-        real a = length(cross(poly[i] - poly[0], poly[i + 1] - poly[0]));
-        s += (poly[0] + poly[i] + poly[i + 1]) * (a / R(3));
-        wsum += a;
-    }
-    return wsum > R(0) ? s / wsum : m / (real)(n > 0 ? n : 1);
-}
+/* lb_polygon_centroid (area barycentre, continuous under clipping): dynamic.h. */
 
 /* Closest point of the convex polygon poly[0..n) (relative to x, in the
  * light's plane with frame u, v, normal nL) to the point t of that plane, for
@@ -519,7 +505,7 @@ LB_FN real3 lb_cub_clamp(const real3* poly, int n, real3 u, real3 v, real3 nL, r
  * far in the direction of nx projected onto the plane is clamped instead:
  * the limit of the hit point as the ray turns parallel to the plane, to
  * 1e-3 of the light's size. */
-LB_FN real3 lb_normal_point(const real3* poly, int n, real3 u, real3 v, real3 nL, real3 nx)
+LB_FN real3 lb_cub_normal_point(const real3* poly, int n, real3 u, real3 v, real3 nL, real3 nx)
 {
     real dl = dot(nL, poly[0]);
     real dn = dot(nL, nx);
@@ -583,7 +569,7 @@ LB_FN real lb_cubature_setup(lb_cub* T, lb_light L, real3 x, real3 nx, int trian
      * |x - CP| sqrt(ulp) (7e-4 at 2 m in float), and CP hopping onto the
      * corner changed the Delaunay triangulation of nearby dynamic points */
     real3 cp = lb_cub_clamp(poly, n, L.u, L.v, L.n, R3(0, 0, 0));
-    real3 np = (dynamic & (LB_CUB_NP | LB_CUB_MRP)) ? lb_normal_point(poly, n, L.u, L.v, L.n, nx) : cp;
+    real3 np = (dynamic & (LB_CUB_NP | LB_CUB_MRP)) ? lb_cub_normal_point(poly, n, L.u, L.v, L.n, nx) : cp;
     if (dynamic & LB_CUB_CP)
         dyn[nd++] = cp;
     if (dynamic & LB_CUB_MRP)

@@ -5,5 +5,6 @@
 #include "polygon.h"
 #include "photometry.h"
 #include "scene.h"
+#include "dynamic.h"
 #include "cubature.h"
 #include "voronoi.h"

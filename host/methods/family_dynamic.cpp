@@ -1,0 +1,33 @@
+// point, cp, np, mrp: the single-sample baselines of kernels/dynamic.cl.
+#include "methods/registry.h"
+
+namespace lb::methods {
+
+namespace {
+Family dynamicFamily(const std::string& name, const std::string& define, const std::string& summary, bool skew)
+{
+    Family f;
+    f.name = name;
+    f.summary = summary;
+    f.file = "dynamic.cl";
+    if (skew)
+        f.params.push_back(Param::real("skew", 0.1, 1e-3, 1.0, Scale::Log,
+                                       "NP: receiver normal skewed to this component towards the light plane "
+                                       "when it misses the plane (thesis 4.2)"));
+    f.defines = [define](const MethodSpec&) { return define; };
+    f.setArgs = [skew](LaunchContext& c, int first) {
+        ocl::setReal(c.kernel, first, skew ? c.spec.num("skew") : 0.1, c.dbl());
+    };
+    return f;
+}
+} // namespace
+
+void registerDynamic(Registry& r)
+{
+    r.add(dynamicFamily("point", "-DLB_DYN_POINT", "one photometric point light at the light's centroid", false));
+    r.add(dynamicFamily("cp", "-DLB_DYN_CP", "one sample at the closest point of the clipped light", false));
+    r.add(dynamicFamily("np", "-DLB_DYN_NP", "one sample at the (clamped) normal point", true));
+    r.add(dynamicFamily("mrp", "-DLB_DYN_MRP", "one sample at the most representative point", true));
+}
+
+} // namespace lb::methods

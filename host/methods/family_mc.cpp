@@ -1,0 +1,28 @@
+// mc: one fixed point set for every pixel (kernels/mc.cl, host/methods/samples.h).
+#include "methods/registry.h"
+#include "methods/samples.h"
+
+namespace lb::methods {
+
+void registerMc(Registry& r)
+{
+    Family f;
+    f.name = "mc";
+    f.summary = "MCI-N: the same N points on the light for every pixel, area form";
+    f.file = "mc.cl";
+    f.params = {
+        Param::integer("n", 24, 1, 1 << 20, Scale::Log, "number of points on the light", true),
+        Param::choice("pattern", "poisson", {"poisson", "halton", "stratified", "random"}, "point set"),
+        Param::integer("seed", 0, 0, 4294967295L, Scale::Linear, "seed of the point set (halton: 0 = unshifted)"),
+    };
+    f.defines = [](const MethodSpec&) { return std::string(); };
+    f.setArgs = [](LaunchContext& c, int first) {
+        int n = static_cast<int>(c.spec.integer("n"));
+        auto st = samplePoints(c.spec.str("pattern"), n, static_cast<std::uint64_t>(c.spec.integer("seed")));
+        c.kernel.setArg(first, c.realBuffer(st));
+        c.kernel.setArg(first + 1, n);
+    };
+    r.add(f);
+}
+
+} // namespace lb::methods

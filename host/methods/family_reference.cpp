@@ -1,0 +1,52 @@
+// reference: globally adaptive cubature of the area form (kernels/reference.cl),
+// with a per-pixel error estimate; cached on disk by render().
+#include "methods/registry.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace lb::methods {
+
+void registerReference(Registry& r)
+{
+    Family f;
+    f.name = "reference";
+    f.summary = "converged area integral (adaptive 4x4 Gauss-Legendre cubature) with an error estimate";
+    f.file = "reference.cl";
+    f.params = {
+        Param::real("tol", 1e-5, 1e-9, 1e-1, Scale::Log, "target relative error per pixel", false),
+        Param::integer("max_splits", 128, 0, 128, Scale::Linear,
+                       "cell splits per pixel at most (the store holds 4 + 3 x 128 cells)"),
+    };
+    f.defines = [](const MethodSpec&) { return std::string(); };
+    f.expensive = true;
+    f.bandRows = 16;
+    f.setArgs = [](LaunchContext& c, int first) {
+        size_t n = static_cast<size_t>(c.res()) * c.res();
+        c.kernel.setArg(first, c.outputReals(n));      // err
+        c.kernel.setArg(first + 1, c.outputInts(n));   // splits
+        ocl::setReal(c.kernel, first + 2, c.spec.num("tol"), c.dbl());
+        c.kernel.setArg(first + 3, static_cast<cl_int>(c.spec.integer("max_splits")));
+    };
+    f.finish = [](LaunchContext& c) {
+        size_t n = static_cast<size_t>(c.res()) * c.res();
+        // buffers[] in the order setArgs made them, after render()'s own.
+        cl::Buffer& errB = c.buffers[c.buffers.size() - 2];
+        cl::Buffer& splitB = c.buffers[c.buffers.size() - 1];
+        Image err(c.res(), c.res());
+        err.px = c.readReals(errB, n);
+        std::vector<cl_int> splits(n);
+        c.rt.queue().enqueueReadBuffer(splitB, CL_TRUE, 0, n * sizeof(cl_int), splits.data());
+        long total = std::accumulate(splits.begin(), splits.end(), 0L);
+        int maxSplits = *std::max_element(splits.begin(), splits.end());
+        long capped = std::count(splits.begin(), splits.end(), static_cast<cl_int>(c.spec.integer("max_splits")));
+        c.stats["splits_total"] = total;
+        c.stats["splits_max"] = maxSplits;
+        c.stats["pixels_at_budget"] = capped;
+        c.stats["max_err_est"] = *std::max_element(err.px.begin(), err.px.end());
+        c.extraImages["err"] = std::move(err);
+    };
+    r.add(f);
+}
+
+} // namespace lb::methods

@@ -1,0 +1,114 @@
+#include "methods/registry.h"
+
+#include "util/error.h"
+
+#include <fmt/format.h>
+
+namespace lb::methods {
+
+// One line per family (host/methods/family_*.cpp).
+void registerReference(Registry& r);
+void registerDynamic(Registry& r);
+void registerStructured(Registry& r);
+void registerMc(Registry& r);
+
+namespace {
+Registry builtinFamilies()
+{
+    Registry r;
+    registerReference(r);
+    registerDynamic(r);  // point, cp, np, mrp
+    registerStructured(r);
+    registerMc(r);
+    return r;
+}
+} // namespace
+
+std::string precisionName(Precision p) { return p == Precision::Double ? "double" : "float"; }
+
+Precision parsePrecision(const std::string& s)
+{
+    if (s == "float") return Precision::Float;
+    if (s == "double") return Precision::Double;
+    throw InputError(fmt::format("--precision: expected float or double, got '{}'", s));
+}
+
+void Registry::add(Family f)
+{
+    if (find(f.name)) throw Error("method registered twice: " + f.name);
+    families_.push_back(std::move(f));
+}
+
+const Family* Registry::find(const std::string& name) const
+{
+    for (auto& f : families_)
+        if (f.name == name) return &f;
+    return nullptr;
+}
+
+std::string Registry::names() const
+{
+    std::vector<std::string> n;
+    for (auto& f : families_) n.push_back(f.name);
+    return fmt::format("{}", fmt::join(n, "|"));
+}
+
+const Registry& registry()
+{
+    static const Registry r = builtinFamilies();
+    return r;
+}
+
+const Family& family(const std::string& name)
+{
+    const Family* f = registry().find(name);
+    if (!f)
+        throw InputError(fmt::format("unknown method '{}'; valid methods: {}", name, registry().names()));
+    return *f;
+}
+
+cl::Buffer LaunchContext::realBuffer(const std::vector<double>& v)
+{
+    size_t n = std::max<size_t>(v.size(), 1);
+    cl::Buffer b;
+    if (dbl()) {
+        std::vector<double> d(v);
+        d.resize(n, 0.0);
+        b = cl::Buffer(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, n * sizeof(double), d.data());
+    } else {
+        std::vector<float> f(v.begin(), v.end());
+        f.resize(n, 0.0f);
+        b = cl::Buffer(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, n * sizeof(float), f.data());
+    }
+    buffers.push_back(b);
+    return b;
+}
+
+cl::Buffer LaunchContext::outputReals(size_t n)
+{
+    cl::Buffer b(rt.context(), CL_MEM_READ_WRITE, std::max<size_t>(n, 1) * (dbl() ? sizeof(double) : sizeof(float)));
+    buffers.push_back(b);
+    return b;
+}
+
+cl::Buffer LaunchContext::outputInts(size_t n)
+{
+    cl::Buffer b(rt.context(), CL_MEM_READ_WRITE, std::max<size_t>(n, 1) * sizeof(cl_int));
+    buffers.push_back(b);
+    return b;
+}
+
+std::vector<double> LaunchContext::readReals(cl::Buffer& b, size_t n)
+{
+    std::vector<double> out(n);
+    if (dbl()) {
+        rt.queue().enqueueReadBuffer(b, CL_TRUE, 0, n * sizeof(double), out.data());
+    } else {
+        std::vector<float> f(n);
+        rt.queue().enqueueReadBuffer(b, CL_TRUE, 0, n * sizeof(float), f.data());
+        for (size_t i = 0; i < n; ++i) out[i] = f[i];
+    }
+    return out;
+}
+
+} // namespace lb::methods

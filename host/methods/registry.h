@@ -1,0 +1,89 @@
+// registry.h -- method families: one .cl file plus one host file each.
+//
+// To add a family (say cubature): write kernels/cubature.cl with a kernel
+//   __kernel void render(__global const real* P, __global const float* lum,
+//                        __global real* out, int row0, <your arguments>)
+// that fills out[row * res + col] for rows row0 .. row0 + get_global_size(1),
+// then host/methods/family_cubature.cpp defining
+//   void registerCubature(Registry& r) { r.add(Family{...}); }
+// and add its one line to builtinFamilies() in registry.cpp.
+#pragma once
+
+#include "cl/runtime.h"
+#include "metrics/image.h"
+#include "methods/spec.h"
+#include "methods/tunables.h"
+#include "photometry/table.h"
+#include "scene/scene.h"
+
+#include <nlohmann/json.hpp>
+
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace lb::methods {
+
+enum class Precision { Float, Double };
+std::string precisionName(Precision p);
+Precision parsePrecision(const std::string& s);  // "float" | "double", else InputError
+
+// What a family sees while it sets up and finishes one render.
+struct LaunchContext {
+    ocl::Runtime& rt;
+    const MethodSpec& spec;
+    const Scene& scene;
+    const photometry::Table& table;
+    Precision precision;
+    cl::Kernel kernel;
+    std::vector<cl::Buffer> buffers;            // kept alive until the render ends
+    std::map<std::string, Image> extraImages;   // e.g. "err" for the reference
+    nlohmann::json stats = nlohmann::json::object();  // named counters for the result file
+
+    bool dbl() const { return precision == Precision::Double; }
+    int res() const { return scene.res; }
+    // A read-only buffer of reals (float or double as the kernel was built).
+    cl::Buffer realBuffer(const std::vector<double>& v);
+    // A device buffer of n reals / ints to be written by the kernel.
+    cl::Buffer outputReals(size_t n);
+    cl::Buffer outputInts(size_t n);
+    // Reads back n reals as doubles.
+    std::vector<double> readReals(cl::Buffer& b, size_t n);
+};
+
+struct Family {
+    std::string name;
+    std::string summary;                 // one line for --help and README
+    std::string file;                    // kernels/<file>
+    std::string kernelName = "render";
+    std::vector<Param> params;
+    // Structural -D options of the program (continuous values are arguments).
+    std::function<std::string(const MethodSpec&)> defines;
+    // Sets the kernel's arguments from index `first` on (after P, lum, out, row0).
+    std::function<void(LaunchContext&, int first)> setArgs;
+    // After the timed runs: read extra buffers, fill stats / extraImages.
+    std::function<void(LaunchContext&)> finish;
+    // Expensive (the reference): one untimed-warm-up-free run in bands of
+    // bandRows rows with progress on stderr, cached on disk.
+    bool expensive = false;
+    int bandRows = 0;
+};
+
+class Registry {
+public:
+    void add(Family f);
+    const Family* find(const std::string& name) const;
+    const std::vector<Family>& all() const { return families_; }
+    std::string names() const;  // "reference|point|..."
+
+private:
+    std::vector<Family> families_;
+};
+
+// The registry with every built-in family (built once, on first use).
+const Registry& registry();
+// The family of `name`; InputError listing the valid names when unknown.
+const Family& family(const std::string& name);
+
+} // namespace lb::methods

@@ -1,0 +1,34 @@
+// spec.h -- SPEC strings `name:key=value,key=value` (DESIGN section 7).
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace lb::methods {
+
+struct MethodSpec {
+    std::string name;
+    std::map<std::string, std::string> values;  // every parameter, canonical text, defaults filled in
+    std::set<std::string> given;                // the keys the SPEC named
+
+    double num(const std::string& key) const;  // Real / Int parameters
+    long integer(const std::string& key) const;
+    const std::string& str(const std::string& key) const;     // Choice parameters
+    std::vector<std::string> list(const std::string& key) const;  // List parameters
+    bool has(const std::string& key) const { return values.count(key) != 0; }
+
+    // name:key=value,... with every parameter, keys sorted (cache keys, logs).
+    std::string canonical() const;
+    // {key: value}, numbers as JSON numbers (result files).
+    nlohmann::json paramsJson() const;
+};
+
+// Parses and validates against the registry; throws InputError on an unknown
+// method, an unknown key (listing the valid ones), a repeated key or a bad value.
+MethodSpec parseSpec(const std::string& text);
+
+} // namespace lb::methods

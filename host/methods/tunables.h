@@ -1,0 +1,46 @@
+// tunables.h -- the parameters of every method, declared once.
+//
+// Each method family declares its parameters (name, default, bounds, scale,
+// meaning) where it registers itself (host/methods/family_*.cpp); the CLI's
+// SPEC parser, the result files and the tuner all read this one table through
+// tunables() / family(name).params.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace lb::methods {
+
+enum class Kind { Real, Int, Choice, List };
+enum class Scale { Linear, Log };
+
+struct Param {
+    std::string name;
+    Kind kind = Kind::Real;
+    std::string def;                   // default, as it would be written in a SPEC
+    double lo = 0, hi = 0;             // bounds of Real / Int values (inclusive)
+    Scale scale = Scale::Linear;       // how a tuner should search [lo, hi]
+    std::vector<std::string> choices;  // Choice: one of them; List: '+'-joined subset
+    std::string meaning;
+    bool tunable = false;              // continuous knob a tuner may search (Real/Int)
+
+    static Param real(std::string n, double d, double lo, double hi, Scale s, std::string m, bool tune = true);
+    static Param integer(std::string n, long d, long lo, long hi, Scale s, std::string m, bool tune = false);
+    static Param choice(std::string n, std::string d, std::vector<std::string> c, std::string m);
+    static Param list(std::string n, std::string d, std::vector<std::string> c, std::string m);
+
+    // Checks a value and returns its canonical text; throws InputError naming
+    // the method, the key, what was given and what is allowed.
+    std::string canonical(const std::string& method, const std::string& value) const;
+    std::string allowed() const;  // "real in [0, 1]", "one of fan|delaunay", ...
+};
+
+struct TunableRow {
+    std::string method;
+    Param param;
+};
+
+// Every parameter of every registered method, in registration order.
+std::vector<TunableRow> tunables();
+
+} // namespace lb::methods

@@ -1,0 +1,107 @@
+// lumibench render as outside tools call it (DESIGN section 7).
+#include "cli/commands.h"
+#include "metrics/image.h"
+#include "testutil.h"
+#include "util/error.h"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+namespace lb {
+namespace {
+
+struct Result {
+    int code;
+    std::string out, err;
+};
+
+Result run(const std::string& args)
+{
+    auto errFile = std::filesystem::temp_directory_path() / fmt::format("lb-render-cli-{}.err", ::getpid());
+    std::string cmd = test::binary() + " " + args + " 2>" + errFile.string();
+    std::unique_ptr<FILE, int (*)(FILE*)> p(popen(cmd.c_str(), "r"), pclose);
+    Result r{-1, "", ""};
+    std::array<char, 4096> buf;
+    size_t n;
+    while ((n = fread(buf.data(), 1, buf.size(), p.get())) > 0) r.out.append(buf.data(), n);
+    int st = pclose(p.release());
+    r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+    std::FILE* f = std::fopen(errFile.c_str(), "r");
+    if (f) {
+        while ((n = fread(buf.data(), 1, buf.size(), f)) > 0) r.err.append(buf.data(), n);
+        std::fclose(f);
+    }
+    std::filesystem::remove(errFile);
+    return r;
+}
+
+TEST(RenderCli, AngleExpressions)
+{
+    EXPECT_DOUBLE_EQ(cli::parseAngle("3.14159265358979323846"), M_PI);
+    EXPECT_DOUBLE_EQ(cli::parseAngle("pi"), M_PI);
+    EXPECT_DOUBLE_EQ(cli::parseAngle("3pi/4"), 3 * M_PI / 4);
+    EXPECT_DOUBLE_EQ(cli::parseAngle("3*pi/4"), 3 * M_PI / 4);
+    EXPECT_DOUBLE_EQ(cli::parseAngle("pi/2"), M_PI / 2);
+    EXPECT_DOUBLE_EQ(cli::parseAngle("0.75pi"), 0.75 * M_PI);
+    EXPECT_DOUBLE_EQ(cli::parseAngle("2.5"), 2.5);
+    for (auto* bad : {"", "pie", "3pi/", "pi/0", "x", "pi2", "1/2/3"}) EXPECT_THROW(cli::parseAngle(bad), InputError) << bad;
+}
+
+TEST(RenderCli, WritesExrAndJson)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    auto out = std::filesystem::temp_directory_path() / fmt::format("lb-render-cli-{}.exr", ::getpid());
+    auto r = run("render --luminaire analytic:cos1 --method mc:n=16,pattern=halton --height 1.1 --rotation 3pi/4 "
+                 "--res 16 --size 1x0.5 --extent 4 --json --reps 5 --out " +
+                 out.string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j.at("method"), "mc");
+    EXPECT_EQ(j.at("params").at("n"), 16);
+    EXPECT_EQ(j.at("params").at("pattern"), "halton");
+    EXPECT_EQ(j.at("precision"), "float");
+    EXPECT_NEAR(j.at("scene").at("rotation").get<double>(), 3 * M_PI / 4, 1e-15);
+    EXPECT_EQ(j.at("scene").at("length"), 0.5);
+    EXPECT_EQ(j.at("time_ms").at("reps"), 5);
+    EXPECT_GT(j.at("time_ms").at("median").get<double>(), 0.0);
+    EXPECT_EQ(j.at("nonfinite"), 0);
+    for (auto* k : {"device", "driver", "build_s", "luminaire", "stats"}) EXPECT_TRUE(j.contains(k)) << k;
+    Image img = readExr(out.string());
+    EXPECT_EQ(img.width, 16);
+    EXPECT_EQ(img.height, 16);
+    double sum = 0;
+    for (double v : img.px) sum += v;
+    EXPECT_GT(sum, 0.0);
+    std::filesystem::remove(out);
+}
+
+TEST(RenderCli, BadInputExitsWithTwo)
+{
+    // No device needed: the arguments are checked first.
+    const std::string base = "render --luminaire analytic:cos1 --height 1 --out /tmp/never.exr ";
+    auto r = run(base + "--rotation pi --method mc:n=0");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("an integer in [1,"), std::string::npos) << r.err;
+    r = run(base + "--rotation pi --method magic");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("valid methods: reference|"), std::string::npos) << r.err;
+    r = run(base + "--rotation 3pie/4 --method point");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("--rotation"), std::string::npos) << r.err;
+    r = run(base + "--rotation pi --method point --precision half");
+    EXPECT_EQ(r.code, 2);
+    r = run(base + "--rotation pi --method point --size 1by1");
+    EXPECT_EQ(r.code, 2);
+    r = run("render --luminaire analytic:cosx --height 1 --rotation pi --method point --out /tmp/never.exr");
+    EXPECT_EQ(r.code, 2);
+}
+
+} // namespace
+} // namespace lb
