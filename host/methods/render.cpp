@@ -109,6 +109,7 @@ RenderResult render(ocl::Runtime& rt, const photometry::Table& table, const Scen
 {
     const Family& fam = family(spec.name);
     if (scene.res < 1 || scene.res > 16384) throw InputError(fmt::format("--res must be in [1, 16384], got {}", scene.res));
+    scene.validate();
     table.validate();
     bool dbl = precision == Precision::Double;
     if (dbl && !rt.fp64())

@@ -2,7 +2,11 @@
 
 #include "math/kmath.h"
 
+#include "util/error.h"
+
 #include <fmt/format.h>
+
+#include <algorithm>
 
 #include <cmath>
 
@@ -35,6 +39,23 @@ glm::dvec3 Scene::pixel(int row, int col) const
 std::string Scene::describe() const
 {
     return fmt::format("h={} R={} size={}x{} extent={} res={}", height, rotation, width, length, extent, res);
+}
+
+void Scene::validate() const
+{
+    for (double x : {height, rotation, width, length, extent})
+        if (!std::isfinite(x)) throw InputError(fmt::format("scene {}: every value must be finite", describe()));
+    if (!(height >= 0)) throw InputError(fmt::format("scene {}: height must be >= 0", describe()));
+    if (!(extent > 0)) throw InputError(fmt::format("scene {}: extent must be > 0", describe()));
+    if (!(width > 0 && length > 0))
+        throw InputError(fmt::format("scene {}: degenerate light {} x {}: its corners coincide or are collinear "
+                                     "(W and L must be > 0)",
+                                     describe(), width, length));
+    const double scale = std::max({width, length, height + length, extent});
+    if (std::min(width, length) < 1e-6 * scale)
+        throw InputError(fmt::format("scene {}: degenerate light {} x {}: a side below 1e-6 of the scene scale {} "
+                                     "makes corners coincide or collinear in float",
+                                     describe(), width, length, scale));
 }
 
 } // namespace lb

@@ -27,6 +27,14 @@ struct Scene {
     // The LB_SCENE_SIZE reals the kernels take (kernels/common/scene.h).
     std::vector<double> params() const;
     std::string describe() const;
+
+    // Throws lb::InputError unless every value is finite, h >= 0, S > 0 and the
+    // light is a proper rectangle: W, L > 0 and both sides resolvable in float
+    // against the scene's coordinates (>= 1e-6 of max(W, L, h + L, S), i.e.
+    // ~8 float ulps). A narrower light has coincident or collinear corners in
+    // the kernels (zero area, undefined L_e = I / (A cos)): a clear error, not
+    // NaN or a silent zero image. render() calls it.
+    void validate() const;
 };
 
 } // namespace lb

@@ -1,0 +1,419 @@
+#include "stability/stability.h"
+
+#include "methods/analytic.h"
+#include "methods/render.h"
+#include "metrics/png.h"
+#include "metrics/tonemap.h"
+#include "util/error.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <limits>
+
+namespace lb::stability {
+
+namespace fs = std::filesystem;
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}
+
+std::string expectName(Expect e)
+{
+    switch (e) {
+    case Expect::Finite: return "finite";
+    case Expect::PointLimit: return "point-limit";
+    case Expect::Zero: return "zero";
+    case Expect::Rejected: return "input-error";
+    }
+    return "?";
+}
+
+// The catalogue. Heights, rotations and sizes follow DESIGN section 2 (the
+// light's centre at h + L/2, R the angle between n_L and the receiver normal).
+const std::vector<Case>& catalogue()
+{
+    static const std::vector<Case> cases = [] {
+        std::vector<Case> v;
+        // add(name, what, h, R, W, L, luminaire, expectation, quick, oddRes)
+        auto add = [&](const char* name, const char* what, double h, double R, double W, double L, const char* lum,
+                       Expect e = Expect::Finite, bool quick = false, bool oddRes = false) {
+            Case c;
+            c.name = name;
+            c.what = what;
+            c.height = h;
+            c.rotation = R;
+            c.width = W;
+            c.length = L;
+            c.luminaire = lum;
+            c.expect = e;
+            c.quick = quick;
+            c.oddRes = oddRes;
+            v.push_back(c);
+        };
+        // Light touching the receiver: lower edge on the ground (h = 0, R = pi/2).
+        add("touching", "light standing on the receiver: h = 0, R = pi/2", 0, kPi / 2, 1, 1, "lambert", Expect::Finite, true);
+        add("touching_diffuse", "as touching, PERLUCE-like emission at and beyond gamma 90", 0, kPi / 2, 1, 1, "diffuse");
+        // Grazing: the lower edge 10 um above the ground, tilted just past vertical.
+        add("grazing", "grazing: h = 1e-5, R = pi/2 + 1e-4", 1e-5, kPi / 2 + 1e-4, 1, 1, "lambert", Expect::Finite, true);
+        add("grazing_diffuse", "grazing with emission at gamma 90 (diffuse)", 1e-5, kPi / 2 + 1e-4, 1, 1, "diffuse");
+        // Receiver points in the light's plane (y = 0 at R = pi/2; odd
+        // resolution puts a pixel row exactly there) with emission at gamma =
+        // 90: the solid-angle form has L_e = I / (A cos) = I / 0 there while
+        // Omega_L = 0 (thesis 6.6's "contradiction"); the area form is regular.
+        add("plane_diffuse", "receiver row in the light plane, gamma-90 emission (PERLUCE)", 0.5, kPi / 2, 1, 1, "diffuse", Expect::Finite, true, true);
+        add("plane_sideways", "receiver row in the light plane, asymmetric emission (INTRO)", 0.5, kPi / 2, 1, 1, "sideways", Expect::Finite, false, true);
+        // Far field: every method must meet the point light (bound: pointBound()).
+        add("far", "far field h = 1000 (tiny solid angles, thesis Fig. 5.9)", 1000, kPi, 1, 1, "lambert", Expect::PointLimit, true);
+        add("far_sideways", "far field h = 1000, tilted, asymmetric luminaire", 1000, 3 * kPi / 4, 1, 1, "sideways", Expect::PointLimit);
+        // Sizes.
+        add("tiny", "1 mm x 1 mm light at h = 1 (point limit)", 1, 3 * kPi / 4, 1e-3, 1e-3, "lambert", Expect::PointLimit, true);
+        add("thin", "long thin light 40 m x 0.02 m at h = 1", 1, 3 * kPi / 4, 40, 0.02, "linear");
+        add("huge_ceiling", "100 m x 100 m horizontal light (R = pi, centre at 50.1 m)", 0.1, kPi, 100, 100, "lambert");
+        add("huge_tilted", "100 m x 100 m light at R = 5pi/8, lower edge 3.9 m up", 0.1, 5 * kPi / 8, 100, 100, "downlight");
+        // Nothing reaches the receiver: the image must be exactly zero.
+        add("zero_upward", "up-light facing down: emits only at gamma > 90", 1, kPi, 1, 1, "stab:upward", Expect::Zero, true);
+        add("zero_spot", "vertical spot (nothing at gamma >= 60) above the image", 5, kPi / 2, 1, 1, "spot", Expect::Zero);
+        // Extremely narrow spot: sigma 0.5 degrees.
+        add("pencil", "extremely narrow spot (Gaussian sigma 0.5 deg, measured to 10 deg)", 1, kPi, 1, 1, "stab:pencil", Expect::Finite, true);
+        // Degenerate polygons: a clear InputError, never NaN.
+        add("coincident", "all four corners coincide (0 x 0)", 1, kPi, 0, 0, "lambert", Expect::Rejected, true);
+        add("collinear", "corners collinear (0 x 1)", 1, kPi, 0, 1, "lambert", Expect::Rejected, true);
+        add("collinear_float", "corners collinear in float (1e-9 x 1)", 1, kPi, 1e-9, 1, "lambert", Expect::Rejected);
+        return v;
+    }();
+    return cases;
+}
+
+photometry::Table luminaire(const std::string& name)
+{
+    const double deg = kPi / 180;
+    photometry::Table t;
+    if (name == "stab:upward") {
+        // I = 1000 |cos gamma| for gamma > 90, 0 in the lower hemisphere.
+        t = photometry::tabulate([&](double, double g) { return g > 90 ? -1000 * std::cos(g * deg) : 0.0; }, 2,
+                                 361);
+    } else if (name == "stab:pencil") {
+        // Gaussian beam of sigma 0.5 deg (5000 cd peak), measured to 10 deg
+        // in 0.05-degree steps; nothing beyond (DESIGN 3: 0 outside the range).
+        t = photometry::tabulate([&](double, double g) { return 5000 * std::exp(-0.5 * (g / 0.5) * (g / 0.5)); }, 2,
+                                 201, 0, 10);
+    } else {
+        return methods::loadLuminaire(name);
+    }
+    t.format = "analytic";
+    t.isym = 1;
+    t.symmetry = "rotational";
+    t.source = name;
+    return t;
+}
+
+Errors measure(const Image& R, const Image& A)
+{
+    Errors e;
+    double rmax = 0, amax = 0;
+    for (double v : R.px) rmax = std::max(rmax, std::fabs(v));
+    for (double v : A.px) {
+        if (!std::isfinite(v)) ++e.nonfinite;
+        else amax = std::max(amax, std::fabs(v));
+    }
+    if (e.nonfinite > 0) {
+        double nan = std::numeric_limits<double>::quiet_NaN();
+        e.maxRelErr = e.maxJump = e.jumpExcess = nan;
+        return e;
+    }
+    // Relative error with a floor of 1 % of the image maximum (stability.h);
+    // absolute (lux) when the reference is black.
+    const double floor = rmax > 0 ? 1e-2 * rmax : 1.0;
+    for (size_t i = 0; i < A.px.size(); ++i)
+        e.maxRelErr = std::max(e.maxRelErr, std::fabs(A.px[i] - R.px[i]) / std::max(std::fabs(R.px[i]), floor));
+    auto pair = [&](size_t i, size_t j) {
+        double da = std::fabs(A.px[i] - A.px[j]), dr = std::fabs(R.px[i] - R.px[j]);
+        if (amax > 0) e.maxJump = std::max(e.maxJump, da / amax);
+        e.jumpExcess = std::max(e.jumpExcess, (da - dr) / (rmax > 0 ? rmax : 1.0));
+    };
+    for (int r = 0; r < A.height; ++r)
+        for (int c = 0; c < A.width; ++c) {
+            size_t i = static_cast<size_t>(r) * A.width + c;
+            if (c + 1 < A.width) pair(i, i + 1);
+            if (r + 1 < A.height) pair(i, i + A.width);
+        }
+    return e;
+}
+
+double maxDiffRel(const Image& A, const Image& B, double scale)
+{
+    double d = 0;
+    for (size_t i = 0; i < A.px.size(); ++i) {
+        if (!std::isfinite(A.px[i]) || !std::isfinite(B.px[i])) return std::numeric_limits<double>::quiet_NaN();
+        d = std::max(d, std::fabs(A.px[i] - B.px[i]));
+    }
+    return scale > 0 ? d / scale : d;
+}
+
+namespace {
+
+// Far-field bound on max|A - P| / max(P), P the point light, for a light of
+// half-diagonal a whose centroid is at distance >= d from every receiver
+// point (d = the centroid's height: the receiver is the plane z = 0):
+//  - every method evaluates E = sum_i w_i f(p_i) (+ its own clipping) with
+//    sum w_i -> 1 as the light shrinks, at points p_i on the light, f(p) =
+//    I(-p^) cos_x / |p|^2. A point p_i off the centroid by at most a changes f
+//    by at most |grad f| a, and |grad f| <= (2 [1/r^2] + 1 [cos_x] + 1 [I, a
+//    smooth luminaire's relative angular slope]) max f / d: 4 a / d. Methods
+//    with samples placed symmetrically about the centroid (point, structured,
+//    the reference) cancel this first-order term and meet 6 (a/d)^2, but a
+//    single dynamic sample (cp, np, mrp) or a finite MC set does not, so the
+//    one bound every method (also those registered later) must meet is the
+//    first-order one;
+//  - in float the corners relative to x carry rounding errors of ~ eps d
+//    (eps = 2^-24), a relative error eps d / a of the light's shape,
+//    amplified by the few operations on it (solid angle, clamped points):
+//    32 eps d / a.
+double pointBound(const Scene& s, methods::Precision p)
+{
+    double a = 0.5 * std::hypot(s.width, s.length), d = s.center().z;
+    double eps = p == methods::Precision::Double ? 0x1p-53 : 0x1p-24;
+    return 4 * (a / d) + 32 * eps * d / a;
+}
+
+double maxAbs(const Image& A)
+{
+    double m = 0;
+    for (double v : A.px) m = std::max(m, std::fabs(v));
+    return m;
+}
+
+} // namespace
+
+bool CaseResult::ok() const
+{
+    if (!failures.empty()) return false;
+    for (auto& r : rows)
+        if (!r.failures.empty()) return false;
+    return true;
+}
+
+std::vector<CaseResult> run(ocl::Runtime& rt, const Options& opt)
+{
+    using methods::Precision;
+    std::vector<const methods::Family*> fams;
+    for (auto& f : methods::registry().all())
+        if (opt.methods.empty() || std::count(opt.methods.begin(), opt.methods.end(), f.name)) fams.push_back(&f);
+    for (auto& m : opt.methods) methods::family(m);  // InputError on an unknown name
+    for (auto& n : opt.cases)
+        if (std::none_of(catalogue().begin(), catalogue().end(), [&](const Case& c) { return c.name == n; }))
+            throw InputError(fmt::format("stability: unknown case '{}'", n));
+
+    std::vector<Precision> precs = {Precision::Float};
+    if (rt.fp64()) precs.push_back(Precision::Double);
+    methods::RenderOptions ro;
+    ro.reps = 1;  // errors, not timings
+
+    std::vector<CaseResult> out;
+    for (const Case& c : catalogue()) {
+        if (!opt.cases.empty()) {
+            if (!std::count(opt.cases.begin(), opt.cases.end(), c.name)) continue;
+        } else if (opt.quick && !c.quick) {
+            continue;
+        }
+        CaseResult cr;
+        cr.c = c;
+        cr.res = std::max(opt.res, 3);
+        if (c.oddRes && cr.res % 2 == 0) ++cr.res;
+        Scene s;
+        s.height = c.height;
+        s.rotation = c.rotation;
+        s.width = c.width;
+        s.length = c.length;
+        s.extent = c.extent;
+        s.res = cr.res;
+        if (opt.progress) std::cerr << fmt::format("stability: {} ({})\n", c.name, s.describe());
+        photometry::Table table = luminaire(c.luminaire);
+
+        if (c.expect == Expect::Rejected) {
+            // Every method and precision must refuse the light with an InputError.
+            for (auto* f : fams)
+                for (Precision p : precs) {
+                    Row row;
+                    row.method = f->name;
+                    row.precision = methods::precisionName(p);
+                    try {
+                        methods::render(rt, table, s, methods::parseSpec(f->name), p, ro);
+                        row.failures.push_back("rendered a degenerate light instead of an InputError");
+                    } catch (const InputError& e) {
+                        if (cr.rejected.empty()) cr.rejected = e.what();
+                    }
+                    cr.rows.push_back(std::move(row));
+                }
+            out.push_back(std::move(cr));
+            continue;
+        }
+
+        // The ground truth: the reference in double (float when the device has none).
+        Precision best = precs.back();
+        auto ref = methods::render(rt, table, s, methods::parseSpec("reference"), best, ro);
+        cr.reference = ref.image;
+        cr.refMax = maxAbs(ref.image);
+        if (ref.stats.contains("max_err_est")) cr.refErrEst = ref.stats["max_err_est"].get<double>();
+        Image point;
+        if (c.expect == Expect::PointLimit)
+            point = methods::render(rt, table, s, methods::parseSpec("point"), best, ro).image;
+
+        for (auto* f : fams) {
+            auto spec = methods::parseSpec(f->name);
+            Image dbl;
+            // Double first, so float rows can be compared with it.
+            for (auto it = precs.rbegin(); it != precs.rend(); ++it) {
+                Precision p = *it;
+                Row row;
+                row.method = f->name;
+                row.spec = spec.canonical();
+                row.precision = methods::precisionName(p);
+                row.image = methods::render(rt, table, s, spec, p, ro).image;
+                row.err = measure(ref.image, row.image);
+                row.maxAbs = maxAbs(row.image);
+                if (p == Precision::Double) dbl = row.image;
+                else if (!dbl.px.empty()) row.fdDiff = maxDiffRel(row.image, dbl, cr.refMax);
+                if (row.err.nonfinite > 0) row.failures.push_back(fmt::format("{} non-finite pixels", row.err.nonfinite));
+                if (c.expect == Expect::Zero && row.maxAbs != 0)
+                    row.failures.push_back(fmt::format("not exactly zero: max {} lx", row.maxAbs));
+                if (row.err.maxRelErr > c.maxRelErr)
+                    row.failures.push_back(fmt::format("max_rel_err {:.3g} > {:.3g}", row.err.maxRelErr, c.maxRelErr));
+                if (!(row.fdDiff <= c.maxFd))
+                    row.failures.push_back(fmt::format("float vs double {:.3g} > {:.3g}", row.fdDiff, c.maxFd));
+                if (c.expect == Expect::PointLimit) {
+                    row.pointDiff = maxDiffRel(row.image, point, maxAbs(point));
+                    double b = pointBound(s, p);
+                    if (!(row.pointDiff <= b))
+                        row.failures.push_back(fmt::format("point limit {:.3g} > bound {:.3g}", row.pointDiff, b));
+                }
+                cr.rows.push_back(std::move(row));
+            }
+        }
+        out.push_back(std::move(cr));
+    }
+    return out;
+}
+
+namespace {
+
+// JSON numbers: NaN / inf become null (never a made-up value).
+nlohmann::json num(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+} // namespace
+
+nlohmann::json toJson(const std::vector<CaseResult>& results, const ocl::Runtime& rt, const Options& opt)
+{
+    nlohmann::json cases = nlohmann::json::array();
+    bool allOk = true;
+    for (auto& cr : results) {
+        const Case& c = cr.c;
+        nlohmann::json rows = nlohmann::json::array();
+        for (auto& r : cr.rows) {
+            nlohmann::json j = {{"method", r.method}, {"spec", r.spec}, {"precision", r.precision},
+                                {"ok", r.failures.empty()}, {"failures", r.failures}};
+            if (c.expect != Expect::Rejected) {
+                j["nonfinite"] = r.err.nonfinite;
+                j["max_rel_err"] = num(r.err.maxRelErr);
+                j["max_jump"] = num(r.err.maxJump);
+                j["jump_excess"] = num(r.err.jumpExcess);
+                j["fd_diff"] = num(r.fdDiff);
+                j["max_abs"] = num(r.maxAbs);
+                if (c.expect == Expect::PointLimit) j["point_diff"] = num(r.pointDiff);
+            }
+            rows.push_back(j);
+        }
+        allOk = allOk && cr.ok();
+        cases.push_back({{"name", c.name},
+                         {"what", c.what},
+                         {"scene",
+                          {{"height", c.height}, {"rotation", c.rotation}, {"width", c.width}, {"length", c.length},
+                           {"extent", c.extent}, {"res", cr.res}}},
+                         {"luminaire", c.luminaire},
+                         {"expect", expectName(c.expect)},
+                         {"ok", cr.ok()},
+                         {"failures", cr.failures},
+                         {"rejected", cr.rejected},
+                         {"reference_max", num(cr.refMax)},
+                         {"reference_err_est", num(cr.refErrEst)},
+                         {"rows", rows}});
+    }
+    return {{"device", rt.info().name}, {"driver", rt.info().driver}, {"res", opt.res},
+            {"quick", opt.quick},        {"ok", allOk},                {"cases", cases}};
+}
+
+void writeReport(const std::string& dir, const std::vector<CaseResult>& results, const ocl::Runtime& rt,
+                 const Options& opt)
+{
+    fs::create_directories(fs::path(dir) / "png");
+    nlohmann::json j = toJson(results, rt, opt);
+    {
+        std::ofstream f(fs::path(dir) / "stability.json");
+        f << j.dump(1) << '\n';
+        if (!f) throw Error("cannot write " + (fs::path(dir) / "stability.json").string());
+    }
+    std::ofstream md(fs::path(dir) / "report.md");
+    md << "# Numerical stability on extreme scenes\n\n";
+    md << fmt::format("Device: {} ({}); resolution {}{}. Generated by `lumibench stability`.\n\n", rt.info().name,
+                      rt.info().driver, opt.res, opt.quick ? " (quick subset)" : "");
+    md << "Columns (host/stability/stability.h): `nonfinite` NaN/inf pixels; `max_rel_err` max |A - R| / "
+          "max(R, 1e-2 max R) against the double reference (absolute lux where R is black); `max_jump` largest "
+          "step between neighbouring pixels / max A; `jump_excess` largest step beyond the reference's own step "
+          "/ max R; `fd_diff` float vs double of the method / max R; `point_diff` (far field) vs the double point light / max.\n\n";
+    md << fmt::format("Overall: **{}**\n\n", j["ok"].get<bool>() ? "PASS" : "FAIL");
+    auto g = [](double v) { return std::isfinite(v) ? fmt::format("{:.3g}", v) : std::string("nan"); };
+    for (auto& cr : results) {
+        const Case& c = cr.c;
+        md << fmt::format("## {}: {}\n\n", c.name, cr.ok() ? "pass" : "FAIL");
+        md << fmt::format("{}. h = {}, R = {:.6g}, {} x {} m, extent {}, res {}, luminaire `{}`, expectation: {}.\n\n",
+                          c.what, c.height, c.rotation, c.width, c.length, c.extent, cr.res, c.luminaire,
+                          expectName(c.expect));
+        if (c.expect == Expect::Rejected) {
+            md << fmt::format("Rejected with: `{}`\n\n", cr.rejected);
+            for (auto& r : cr.rows)
+                if (!r.failures.empty()) md << fmt::format("- {} {}: {}\n", r.method, r.precision, r.failures[0]);
+            md << '\n';
+            continue;
+        }
+        md << fmt::format("Reference max {} lx, its own error estimate {} lx.\n\n", g(cr.refMax), g(cr.refErrEst));
+        md << "| method | precision | nonfinite | max_rel_err | max_jump | jump_excess | fd_diff |"
+           << (c.expect == Expect::PointLimit ? " point_diff |" : "") << " status |\n";
+        md << "|---|---|---|---|---|---|---|" << (c.expect == Expect::PointLimit ? "---|" : "") << "---|\n";
+        const Row* worst = nullptr;
+        for (auto& r : cr.rows) {
+            md << fmt::format("| {} | {} | {} | {} | {} | {} | {} |", r.method, r.precision, r.err.nonfinite,
+                              g(r.err.maxRelErr), g(r.err.maxJump), g(r.err.jumpExcess), g(r.fdDiff));
+            if (c.expect == Expect::PointLimit) md << fmt::format(" {} |", g(r.pointDiff));
+            md << fmt::format(" {} |\n", r.failures.empty() ? "ok" : fmt::format("{}", fmt::join(r.failures, "; ")));
+            if (r.method != "reference" &&
+                (!worst || !(r.err.maxRelErr <= worst->err.maxRelErr)))  // NaN counts as worst
+                worst = &r;
+        }
+        md << '\n';
+        if (worst && cr.refMax > 0) {
+            // The worst method's pictures: reference and test tone mapped with one
+            // k, and the signed error saturating at the largest |A - R|.
+            std::string stem = fmt::format("{}_{}_{}", c.name, worst->method, worst->precision);
+            double k = 1 / cr.refMax * 4, bound = 0;
+            for (size_t i = 0; i < worst->image.px.size(); ++i)
+                if (std::isfinite(worst->image.px[i]))
+                    bound = std::max(bound, std::fabs(worst->image.px[i] - cr.reference.px[i]));
+            writePng((fs::path(dir) / "png" / (c.name + "_ref.png")).string(), tonemap::tonemapPicture(cr.reference, k));
+            writePng((fs::path(dir) / "png" / (stem + "_test.png")).string(), tonemap::tonemapPicture(worst->image, k));
+            writePng((fs::path(dir) / "png" / (stem + "_err.png")).string(),
+                     tonemap::errorPicture(cr.reference, worst->image, bound, bound));
+            md << fmt::format("Worst: {} {} (max_rel_err {}): ![ref](png/{}_ref.png) ![test](png/{}_test.png) "
+                              "![err](png/{}_err.png) (error saturates at {} lx)\n\n",
+                              worst->method, worst->precision, g(worst->err.maxRelErr), c.name, stem, stem, g(bound));
+        }
+    }
+    if (!md) throw Error("cannot write " + (fs::path(dir) / "report.md").string());
+}
+
+} // namespace lb::stability

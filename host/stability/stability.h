@@ -1,0 +1,116 @@
+// stability.h -- issue 8: every registered method, in float and double, on a
+// catalogue of extreme scenes (`lumibench stability`).
+//
+// The catalogue (catalogue()) is a table of cases: a scene, a luminaire and
+// what is expected of every method there. run() renders each case with the
+// double-precision reference and with every family of methods::registry()
+// (default parameters) in both precisions, and measures per method and
+// precision:
+//   nonfinite    pixels that are NaN or infinite (must be 0 everywhere);
+//   max_rel_err  max_i |A_i - R_i| / max(R_i, floor), R the double reference,
+//                floor = 1e-2 max(R): pixels where the reference is (near)
+//                zero are judged relative to 1 % of the image maximum, so
+//                that the dark fringe of a light does not turn a 1e-9 lux
+//                difference into an "error of 1000 %". A black reference
+//                (max R = 0) gives the absolute max |A_i| (lux);
+//   max_jump     max over 4-neighbour pairs |A_i - A_j| / max|A| (the method's
+//                own largest step between neighbouring pixels);
+//   jump_excess  max over the same pairs (|A_i - A_j| - |R_i - R_j|) / max(R):
+//                how far a step exceeds the reference's own step there, i.e.
+//                the spurious discontinuity the method adds;
+//   fd_diff      max_i |A_float_i - A_double_i| / max(R): float vs double of
+//                the same method, on the scale of the answer (a method that
+//                is ~0 everywhere must not turn float noise into 100 %);
+//   point_diff   (far-field cases) max_i |A_i - P_i| / max(P), P the double
+//                point-light image.
+// A case fails when a requirement below is not met; the command then exits 1.
+#pragma once
+
+#include "cl/runtime.h"
+#include "metrics/image.h"
+#include "photometry/table.h"
+#include "scene/scene.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace lb::stability {
+
+enum class Expect {
+    Finite,      // finite everywhere, errors reported (and bounded by maxRelErr)
+    PointLimit,  // far field: every method within pointBound of the point light
+    Zero,        // the luminaire sends nothing towards the receiver: all pixels exactly 0
+    Rejected,    // degenerate light: render() must throw lb::InputError
+};
+std::string expectName(Expect e);
+
+struct Case {
+    std::string name;
+    std::string what;          // one line: what the case stresses, the source
+    double height = 1, rotation = 3.14159265358979323846, width = 1, length = 1, extent = 5;
+    std::string luminaire;     // methods::loadLuminaire name, or "stab:<kind>" (stability::luminaire)
+    Expect expect = Expect::Finite;
+    bool oddRes = false;       // force an odd resolution (a pixel row exactly at y = 0)
+    bool quick = false;        // part of the --quick subset (CI)
+    double maxRelErr = 1e30;   // Finite / PointLimit: bound on max_rel_err of every method (inherent error)
+    double pointBound = 0;     // PointLimit: bound on point_diff
+    double maxFd = 0.05;       // bound on fd_diff (float vs double of one method)
+};
+
+// The catalogue of extreme scenes (stability.cpp).
+const std::vector<Case>& catalogue();
+
+// Luminaires of the catalogue: "stab:upward" (emits only at gamma > 90),
+// "stab:pencil" (Gaussian beam sigma 0.5 deg, measured to gamma 10 deg), else
+// methods::loadLuminaire (files, short names, analytic:cos<n>).
+photometry::Table luminaire(const std::string& name);
+
+// Metrics of one image A against the reference R (both res x res).
+struct Errors {
+    long nonfinite = 0;
+    double maxRelErr = 0, maxJump = 0, jumpExcess = 0;
+};
+Errors measure(const Image& ref, const Image& A);
+// max_i |A_i - B_i| / scale (absolute when scale <= 0); NaN if any is non-finite.
+double maxDiffRel(const Image& A, const Image& B, double scale);
+
+struct Row {
+    std::string method, spec, precision;
+    Errors err;
+    double fdDiff = 0;                        // float rows: vs the same method in double; double rows: 0
+    double pointDiff = -1;                    // PointLimit cases only
+    double maxAbs = 0;                        // max |A| (lux): Zero cases require exactly 0
+    std::vector<std::string> failures;
+    Image image;                              // kept for the worst-error pictures
+};
+
+struct CaseResult {
+    Case c;
+    int res = 0;
+    std::string rejected;                     // Rejected cases: the InputError messages (first one)
+    double refMax = 0, refErrEst = 0;         // max of the double reference and its own error estimate
+    Image reference;
+    std::vector<Row> rows;
+    std::vector<std::string> failures;        // case-level (e.g. not rejected)
+    bool ok() const;
+};
+
+struct Options {
+    int res = 32;
+    bool quick = false;
+    std::vector<std::string> cases;           // only these (empty: all, or the quick subset)
+    std::vector<std::string> methods;         // only these families (empty: every registered family)
+    bool progress = false;
+};
+
+std::vector<CaseResult> run(ocl::Runtime& rt, const Options& opt);
+
+nlohmann::json toJson(const std::vector<CaseResult>& results, const ocl::Runtime& rt, const Options& opt);
+// DIR/stability.json, DIR/report.md and DIR/png/<case>_{ref,test,err}.png of the
+// worst (largest max_rel_err) method of every case.
+void writeReport(const std::string& dir, const std::vector<CaseResult>& results, const ocl::Runtime& rt,
+                 const Options& opt);
+
+} // namespace lb::stability

@@ -1,0 +1,160 @@
+// Issue 8: the stability catalogue, its metrics, the degenerate-light
+// validation and the regressions of the fixes it found.
+#include "methods/render.h"
+#include "stability/stability.h"
+#include "testutil.h"
+#include "util/error.h"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+namespace lb {
+namespace {
+
+Scene sceneOf(double w, double l, double h = 1)
+{
+    Scene s;
+    s.width = w;
+    s.length = l;
+    s.height = h;
+    s.res = 4;
+    return s;
+}
+
+TEST(Stability, DegenerateLightsAreInputErrors)
+{
+    EXPECT_NO_THROW(sceneOf(1, 1).validate());
+    EXPECT_NO_THROW(sceneOf(1e-3, 1e-3).validate());   // the catalogue's tiny light
+    EXPECT_NO_THROW(sceneOf(40, 0.02).validate());     // and its thin one
+    EXPECT_THROW(sceneOf(0, 0).validate(), InputError);     // coincident corners
+    EXPECT_THROW(sceneOf(0, 1).validate(), InputError);     // collinear corners
+    EXPECT_THROW(sceneOf(1, -1).validate(), InputError);
+    EXPECT_THROW(sceneOf(1e-9, 1).validate(), InputError);  // collinear in float
+    EXPECT_THROW(sceneOf(NAN, 1).validate(), InputError);
+    EXPECT_THROW(sceneOf(1, 1, -0.1).validate(), InputError);
+    EXPECT_THROW(sceneOf(1, 1, INFINITY).validate(), InputError);
+    try {
+        sceneOf(0, 1).validate();
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("collinear"), std::string::npos) << e.what();
+    }
+}
+
+TEST(Stability, RenderRejectsDegenerateLightForEveryMethod)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    auto table = stability::luminaire("lambert");
+    for (auto& f : methods::registry().all())
+        EXPECT_THROW(methods::render(*rt, table, sceneOf(0, 1), methods::parseSpec(f.name), methods::Precision::Float),
+                     InputError)
+            << f.name;
+}
+
+// measure() on images whose answers are known by hand.
+TEST(Stability, MetricsClosedForms)
+{
+    Image R(2, 2), A(2, 2);
+    R.px = {100, 100, 100, 0};  // max 100: floor 1
+    A.px = {100, 110, 100, 0.5};
+    auto e = stability::measure(R, A);
+    EXPECT_EQ(e.nonfinite, 0);
+    // |0.5 - 0| / max(0, floor 1) = 0.5 beats 10 / 100.
+    EXPECT_DOUBLE_EQ(e.maxRelErr, 0.5);
+    // Largest step of A: 110 - 0.5 (right column) over max A = 110.
+    EXPECT_DOUBLE_EQ(e.maxJump, 109.5 / 110);
+    // Beyond the reference's own step: top row 10 - 0 = 10; right column
+    // 109.5 - 100 = 9.5; over max R = 100.
+    EXPECT_DOUBLE_EQ(e.jumpExcess, 0.1);
+    EXPECT_DOUBLE_EQ(stability::maxDiffRel(A, R, 100), 0.1);  // 10 / 100
+    EXPECT_DOUBLE_EQ(stability::maxDiffRel(A, R, 0), 10);    // absolute
+
+    A.px[1] = NAN;
+    e = stability::measure(R, A);
+    EXPECT_EQ(e.nonfinite, 1);
+    EXPECT_TRUE(std::isnan(e.maxRelErr));
+    EXPECT_TRUE(std::isnan(stability::maxDiffRel(A, R, 100)));
+
+    // A black reference: the error is absolute (lux).
+    Image Z(2, 2), B(2, 2);
+    B.px = {0, 0, 0, 3};
+    EXPECT_DOUBLE_EQ(stability::measure(Z, B).maxRelErr, 3);
+}
+
+TEST(Stability, CatalogueCoversTheIssue)
+{
+    std::set<std::string> names;
+    int quick = 0;
+    for (auto& c : stability::catalogue()) {
+        EXPECT_TRUE(names.insert(c.name).second) << "duplicate case " << c.name;
+        quick += c.quick;
+        if (c.expect != stability::Expect::Rejected) {
+            Scene s;
+            s.height = c.height;
+            s.rotation = c.rotation;
+            s.width = c.width;
+            s.length = c.length;
+            s.extent = c.extent;
+            EXPECT_NO_THROW(s.validate()) << c.name;
+            EXPECT_NO_THROW(stability::luminaire(c.luminaire).validate()) << c.name;
+        }
+    }
+    for (auto* n : {"touching", "grazing", "plane_diffuse", "far", "tiny", "thin", "huge_ceiling", "zero_upward",
+                    "pencil", "coincident", "collinear"})
+        EXPECT_TRUE(names.count(n)) << n;
+    EXPECT_GT(quick, 5);
+}
+
+// The synthetic luminaires: the up-light sends nothing below gamma 90, the
+// pencil beam is zero outside its measured 10 degrees.
+TEST(Stability, SyntheticLuminaires)
+{
+    auto up = stability::luminaire("stab:upward");
+    EXPECT_EQ(up.intensity(0, 89.99), 0.0);
+    EXPECT_NEAR(up.intensity(0, 180), 1000, 1e-9);
+    auto pencil = stability::luminaire("stab:pencil");
+    EXPECT_NEAR(pencil.intensity(0, 0), 5000, 1e-9);
+    EXPECT_EQ(pencil.intensity(0, 10.5), 0.0);
+}
+
+// Regression: receiver points exactly in the light's plane with emission at
+// gamma = 90 (odd resolution: the middle row is at y = 0). The solid-angle
+// methods divided I by |n_L . d| = 0 and multiplied by Omega_L = 0: NaN.
+TEST(Stability, InPlaneReceiverIsFiniteForEveryMethod)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    stability::Options o;
+    o.res = 5;
+    o.cases = {"plane_diffuse"};
+    auto res = stability::run(*rt, o);
+    ASSERT_EQ(res.size(), 1u);
+    EXPECT_EQ(res[0].res, 5);
+    for (auto& r : res[0].rows) EXPECT_EQ(r.err.nonfinite, 0) << r.method << " " << r.precision;
+}
+
+// The CI run: `lumibench stability --quick --res 16 --out DIR` passes and
+// writes the report.
+TEST(Stability, QuickCliRunPasses)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    auto dir = std::filesystem::temp_directory_path() / fmt::format("lb-stability-{}", ::getpid());
+    std::string cmd = test::binary() + " stability --quick --res 16 --out " + dir.string() + " > " +
+                      (dir.string() + ".log") + " 2>&1";
+    int st = std::system(cmd.c_str());
+    std::ifstream log(dir.string() + ".log");
+    std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(WEXITSTATUS(st), 0) << text;
+    EXPECT_TRUE(std::filesystem::exists(dir / "stability.json"));
+    EXPECT_TRUE(std::filesystem::exists(dir / "report.md"));
+    EXPECT_FALSE(std::filesystem::is_empty(dir / "png"));
+    std::filesystem::remove_all(dir);
+    std::filesystem::remove(dir.string() + ".log");
+}
+
+} // namespace
+} // namespace lb
