@@ -25,12 +25,28 @@ LB_FN real3 lb_polygon_centroid(const real3* p, int n)
 
 /* Emitted radiance of the photometric light towards the origin from the point
  * p on the light (paper Eq. 2): L_e(d) = I(d) / (A |n_L . d|), d = -p / |p| the
- * emission direction, A the light's (unclipped) area. */
+ * emission direction, A the light's (unclipped) area.
+ * In the light's plane |n_L . d| = 0 while the solid angle the callers multiply
+ * by is 0 too (thesis 6.6's "contradiction"): I / 0 = inf (or 0 / 0 = NaN)
+ * times 0 made NaN pixels. Only an exact (or underflowing) zero is cut off
+ * here, to radiance 0: a near-plane |n_L . d| of rounding size (1e-8 in float
+ * for a vertical light, whose n_L is tilted by cos(pi/2) = -4e-8) must stay,
+ * since the solid angle then has the same rounding-size factor (to relative
+ * eps, see lb_tri_solid_angle) and the product is the estimator's true
+ * near-plane value; flooring it at eps, as first tried, made float and double
+ * disagree by 30 % on that pixel row (lumibench stability, plane_diffuse). */
 LB_FN real lb_radiance_from(__global const float* lum, lb_light L, real3 p)
 {
     real3 d = -normalize(p);
     real3 dl = lb_to_light_frame(L, d);
-    return lb_intensity_local(lum, dl) / (L.w * L.l * fabs(dl.z));
+    real c = fabs(dl.z);
+#if LB_REAL_IS_DOUBLE
+    if (c < R(1e-200))
+#else
+    if (c < R(1e-20)) /* I / (A c) < 1e25 / A: finite for every validated light */
+#endif
+        return R(0);
+    return lb_intensity_local(lum, dl) / (L.w * L.l * c);
 }
 
 /* The light normal turned towards the origin: the side of the light x sees. */
