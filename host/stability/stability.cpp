@@ -175,12 +175,29 @@ namespace {
 //    (eps = 2^-24), a relative error eps d / a of the light's shape,
 //    amplified by the few operations on it (solid angle, clamped points):
 //    32 eps d / a.
-double pointBound(const Scene& s, methods::Precision p)
+} // namespace
+
+double pointBound(const Scene& s, bool dbl)
 {
     double a = 0.5 * std::hypot(s.width, s.length), d = s.center().z;
-    double eps = p == methods::Precision::Double ? 0x1p-53 : 0x1p-24;
+    double eps = dbl ? 0x1p-53 : 0x1p-24;
     return 4 * (a / d) + 32 * eps * d / a;
 }
+
+Scene sceneOf(const Case& c, int res)
+{
+    Scene s;
+    s.height = c.height;
+    s.rotation = c.rotation;
+    s.width = c.width;
+    s.length = c.length;
+    s.extent = c.extent;
+    s.res = std::max(res, 3);
+    if (c.oddRes && s.res % 2 == 0) ++s.res;
+    return s;
+}
+
+namespace {
 
 double maxAbs(const Image& A)
 {
@@ -224,15 +241,8 @@ std::vector<CaseResult> run(ocl::Runtime& rt, const Options& opt)
         }
         CaseResult cr;
         cr.c = c;
-        cr.res = std::max(opt.res, 3);
-        if (c.oddRes && cr.res % 2 == 0) ++cr.res;
-        Scene s;
-        s.height = c.height;
-        s.rotation = c.rotation;
-        s.width = c.width;
-        s.length = c.length;
-        s.extent = c.extent;
-        s.res = cr.res;
+        Scene s = sceneOf(c, opt.res);
+        cr.res = s.res;
         if (opt.progress) std::cerr << fmt::format("stability: {} ({})\n", c.name, s.describe());
         photometry::Table table = luminaire(c.luminaire);
 
@@ -289,7 +299,7 @@ std::vector<CaseResult> run(ocl::Runtime& rt, const Options& opt)
                     row.failures.push_back(fmt::format("float vs double {:.3g} > {:.3g}", row.fdDiff, c.maxFd));
                 if (c.expect == Expect::PointLimit) {
                     row.pointDiff = maxDiffRel(row.image, point, maxAbs(point));
-                    double b = pointBound(s, p);
+                    double b = pointBound(s, p == Precision::Double);
                     if (!(row.pointDiff <= b))
                         row.failures.push_back(fmt::format("point limit {:.3g} > bound {:.3g}", row.pointDiff, b));
                 }

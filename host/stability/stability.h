@@ -107,6 +107,11 @@ struct Options {
 
 std::vector<CaseResult> run(ocl::Runtime& rt, const Options& opt);
 
+// The scene of a case at resolution res (odd when the case asks for it).
+Scene sceneOf(const Case& c, int res);
+// Far-field bound on max|A - P| / max(P), P the point light (derivation in stability.cpp).
+double pointBound(const Scene& s, bool dbl);
+
 nlohmann::json toJson(const std::vector<CaseResult>& results, const ocl::Runtime& rt, const Options& opt);
 // DIR/stability.json, DIR/report.md and DIR/png/<case>_{ref,test,err}.png of the
 // worst (largest max_rel_err) method of every case.
