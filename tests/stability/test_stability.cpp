@@ -158,3 +158,47 @@ TEST(Stability, QuickCliRunPasses)
 
 } // namespace
 } // namespace lb
+
+namespace lb {
+namespace {
+
+// A failed requirement anywhere makes the whole document fail (the command
+// then exits 1); non-finite numbers are written as null, never as numbers.
+TEST(Stability, FailureAndNonFiniteReachTheDocument)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    stability::CaseResult cr;
+    cr.c = stability::catalogue().front();
+    cr.res = 4;
+    stability::Row ok, bad;
+    ok.method = bad.method = "point";
+    ok.precision = "double";
+    bad.precision = "float";
+    bad.err.nonfinite = 3;
+    bad.err.maxRelErr = NAN;
+    bad.failures.push_back("3 non-finite pixels");
+    cr.rows = {ok};
+    EXPECT_TRUE(cr.ok());
+    EXPECT_TRUE(stability::toJson({cr}, *rt, {})["ok"].get<bool>());
+    cr.rows.push_back(bad);
+    EXPECT_FALSE(cr.ok());
+    auto j = stability::toJson({cr}, *rt, {});
+    EXPECT_FALSE(j["ok"].get<bool>());
+    EXPECT_TRUE(j["cases"][0]["rows"][1]["max_rel_err"].is_null());
+    EXPECT_EQ(j["cases"][0]["rows"][1]["nonfinite"].get<long>(), 3);
+}
+
+// The far-field bound at the catalogue's h = 1000, 1 x 1 light: first order
+// 4 a/d = 2.83e-3 dominates in double (32 eps d/a = 5e-12); float adds
+// 32 eps d/a = 2.70e-3. Tolerance: a few ulp of 5e-3.
+TEST(Stability, PointBoundValues)
+{
+    Scene s;
+    s.height = 1000;
+    double a = std::sqrt(0.5), d = 1000.5;
+    EXPECT_NEAR(stability::pointBound(s, true), 4 * a / d + 32 * 0x1p-53 * d / a, 1e-15);
+    EXPECT_NEAR(stability::pointBound(s, false), 4 * a / d + 32 * 0x1p-24 * d / a, 1e-15);
+}
+
+} // namespace
+} // namespace lb
