@@ -15,7 +15,7 @@
 # spot / diffuse / sideways.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-LB=build/lumibench
+LB=${LB:-build/lumibench}   # the program (override: LB=path)
 RES=${1:-128}
 OUT=${2:-/tmp/lb-cubature-variants}
 ROT=3pi/4

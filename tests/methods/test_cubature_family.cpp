@@ -217,14 +217,20 @@ TEST(CubatureFamily, FanEqualsDelaunayForCornersAndClosestPoint)
 // so here the light hangs lower than the receiver plane (h < 0: part of it
 // below z = 0) and every pixel sees a clipped light. Voronoi keeps the full
 // rectangle's solid angle and cell fractions and drops the samples below the
-// horizon; the cubature clips the polygon. Measured on the phong10 luminaire
-// (numbers in docs/cubature-variants.md); asserted: the cubature (formfactor)
-// stays accurate, voronoi is much worse clipped than unclipped at the same
-// distance, and it is finite.
+// horizon; the cubature clips the polygon. With the Lambertian luminaire the
+// cubature with normalize=formfactor is the closed form (constant radiance
+// times the exact Lambert irradiance of the clipped polygon), so it must meet
+// the reference to its tolerance (1e-4 per pixel: NMSE <= 1e-8, float adds
+// ~1e-10) clipped or not -- except that at R = pi/2 the light stands across
+// the receiver plane and pixels 8 cm from the line where it cuts z = 0 see a
+// near-singular integrand, where the reference's adaptive refinement stops at
+// its split budget short of tol (measured NMSE 2.0e-7 there, 4.4e-9 at
+// 3pi/4, 2.6e-11 unclipped): bound 1e-6 for all three; voronoi is asserted to be much worse clipped than
+// unclipped (measured: docs/cubature-variants.md) and finite.
 TEST(CubatureFamily, VoronoiWithClippedLight)
 {
     LB_REQUIRE_RUNTIME(rt);
-    auto t = methods::loadLuminaire(test::sourceDir() + "/luminaires/phong10.ldt");
+    auto t = methods::loadLuminaire(lambertPath());
     auto nmse = [](const Image& r, const Image& a) {
         double mr = 0, ma = 0, s = 0;
         for (size_t i = 0; i < r.px.size(); ++i) {
@@ -239,9 +245,11 @@ TEST(CubatureFamily, VoronoiWithClippedLight)
         double h, R;
         const char* what;
     };
+    const Case cases[] = {{0.1, 3 * M_PI / 4, "unclipped h=0.1 R=3pi/4"},
+                          {-0.3, 3 * M_PI / 4, "clipped h=-0.3 R=3pi/4"},
+                          {-0.3, M_PI / 2, "clipped h=-0.3 R=pi/2"}};
     std::map<std::string, double> err;
-    for (Case c : {Case{0.2, M_PI / 2, "unclipped h=0.2 R=pi/2"}, Case{-0.3, M_PI / 2, "clipped h=-0.3 R=pi/2"},
-                   Case{-0.3, 3 * M_PI / 4, "clipped h=-0.3 R=3pi/4"}}) {
+    for (const Case& c : cases) {
         Scene sc = scene(c.h, c.R, 32);
         auto ref = run(*rt, t, sc, "reference:tol=1e-4", Precision::Float).image;
         for (const char* spec : {"voronoi", "cubature", "cubature:normalize=formfactor", "structured"}) {
@@ -251,7 +259,11 @@ TEST(CubatureFamily, VoronoiWithClippedLight)
             err[std::string(spec) + " " + c.what] = e;
             std::printf("[ clipped light ] %-32s %-24s NMSE %.3e\n", spec, c.what, e);
         }
+        EXPECT_LT(err[std::string("cubature:normalize=formfactor ") + c.what], 1e-6) << c.what;
     }
+    // Measured 21x and 170x the unclipped NMSE.
+    for (const char* clipped : {"clipped h=-0.3 R=3pi/4", "clipped h=-0.3 R=pi/2"})
+        EXPECT_GT(err[std::string("voronoi ") + clipped], 10 * err["voronoi unclipped h=0.1 R=3pi/4"]) << clipped;
 }
 
 } // namespace
