@@ -26,15 +26,16 @@
 #define LB_CUB_DYNAMIC LB_CUB_CP
 #endif
 
-/* P: scene parameters (common/scene.h); lum: packed luminaire
- * (common/photometry.h); out: N x N irradiance in lux, row-major, row 0 at
- * the top; stats: 2 ints per pixel (triangles, flips), written when
- * want_stats != 0 (pass any small buffer otherwise). */
-__kernel void cubature(__global const real* P, __global const float* lum, __global real* out,
-                       __global int* stats, int want_stats, real plane_eps, real horizon_eps)
+/* The registry's convention (host/methods/registry.h): P scene parameters
+ * (common/scene.h); lum packed luminaire (common/photometry.h); out N x N
+ * irradiance in lux, row-major, row 0 at the top; rows row0 .. row0 + global
+ * height. stats: 2 ints per pixel of the whole image (triangles, flips),
+ * written when want_stats != 0 (pass any small buffer otherwise). */
+__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
+                     __global int* stats, int want_stats, real plane_eps, real horizon_eps)
 {
     int col = get_global_id(0);
-    int row = get_global_id(1);
+    int row = row0 + (int)get_global_id(1);
     int n = (int)P[15];
     if (col >= n || row >= n)
         return;

@@ -30,15 +30,14 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     real3 p[LB_MAXV];
     int m = lb_clipped_light(L, x, nx, p);
     if (m >= 3) {
-        real3 c_rel = L.c - x;
         int where = 0;
         real3 s = lb_closest_point_polygon(p, m, L.n, R3(0, 0, 0), &where);
 #if defined(LB_DYN_NP) || defined(LB_DYN_MRP)
-        real3 np = lb_normal_point(p, m, L, c_rel, nx, skew);
+        real3 np = lb_normal_point(p, m, L.n, nx, skew);
 #ifdef LB_DYN_NP
         s = np;
 #else
-        s = lb_mrp(p, m, L, c_rel, s, np);
+        s = lb_mrp(p, m, L.n, s, np);
 #endif
 #endif
         real omega = lb_polygon_solid_angle(p, m);

@@ -5,13 +5,14 @@
  */
 #include "common/lbmath.h"
 
-/* P: scene parameters; lum: packed luminaire; tab: res x res x 6 cell
- * fractions for the scene's W x L light; out: N x N lux. */
-__kernel void voronoi(__global const real* P, __global const float* lum, __global const float* tab, int res,
-                      __global real* out, real plane_eps)
+/* The registry's convention (host/methods/registry.h): P scene parameters;
+ * lum packed luminaire; out N x N lux, rows row0 .. row0 + global height.
+ * tab: res x res x 6 cell fractions for the scene's W x L light. */
+__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
+                     __global const float* tab, int res, real plane_eps)
 {
     int col = get_global_id(0);
-    int row = get_global_id(1);
+    int row = row0 + (int)get_global_id(1);
     int n = (int)P[15];
     if (col >= n || row >= n)
         return;

@@ -11,6 +11,8 @@ void registerReference(Registry& r);
 void registerDynamic(Registry& r);
 void registerStructured(Registry& r);
 void registerMc(Registry& r);
+void registerCubature(Registry& r);
+void registerVoronoi(Registry& r);
 
 namespace {
 Registry builtinFamilies()
@@ -20,6 +22,8 @@ Registry builtinFamilies()
     registerDynamic(r);  // point, cp, np, mrp
     registerStructured(r);
     registerMc(r);
+    registerCubature(r);
+    registerVoronoi(r);
     return r;
 }
 } // namespace

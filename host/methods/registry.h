@@ -39,6 +39,7 @@ struct LaunchContext {
     cl::Kernel kernel;
     std::vector<cl::Buffer> buffers;            // kept alive until the render ends
     std::map<std::string, Image> extraImages;   // e.g. "err" for the reference
+    std::map<std::string, cl::Buffer> named;    // buffers setArgs hands to finish (e.g. "stats")
     nlohmann::json stats = nlohmann::json::object();  // named counters for the result file
 
     bool dbl() const { return precision == Precision::Double; }
@@ -58,6 +59,9 @@ struct Family {
     std::string file;                    // kernels/<file>
     std::string kernelName = "render";
     std::vector<Param> params;
+    // Optional check of a whole spec after its values are parsed (combinations
+    // a single parameter cannot reject); throws InputError.
+    std::function<void(const MethodSpec&)> validate;
     // Structural -D options of the program (continuous values are arguments).
     std::function<std::string(const MethodSpec&)> defines;
     // Sets the kernel's arguments from index `first` on (after P, lum, out, row0).

@@ -128,7 +128,8 @@ RenderResult render(ocl::Runtime& rt, const photometry::Table& table, const Scen
     std::string options = fam.defines ? fam.defines(spec) : std::string();
     if (dbl) options += " -DLB_DOUBLE";
     double b0 = rt.buildSeconds();
-    LaunchContext ctx{rt, spec, scene, table, precision, rt.kernel(fam.file, fam.kernelName, options), {}, {}, {}};
+    LaunchContext ctx{rt, spec, scene, table, precision, rt.kernel(fam.file, fam.kernelName, options), {}, {}, {}, {}};
+    ctx.stats = nlohmann::json::object();  // {} above made it null
     result.buildSeconds = rt.buildSeconds() - b0;
 
     const int res = scene.res;

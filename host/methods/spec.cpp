@@ -28,11 +28,9 @@ MethodSpec parseSpec(const std::string& text)
     s.name = text.substr(0, colon);
     const Family& f = family(s.name);
     for (auto& p : f.params) s.values[p.name] = p.def;
-    if (colon == std::string::npos) return s;
-    std::string rest = text.substr(colon + 1);
-    if (rest.empty()) return s;
+    std::string rest = colon == std::string::npos ? std::string() : text.substr(colon + 1);
     size_t b = 0;
-    while (true) {
+    while (!rest.empty()) {
         size_t e = rest.find(',', b);
         std::string kv = rest.substr(b, e == std::string::npos ? std::string::npos : e - b);
         size_t eq = kv.find('=');
@@ -46,6 +44,7 @@ MethodSpec parseSpec(const std::string& text)
         if (e == std::string::npos) break;
         b = e + 1;
     }
+    if (f.validate) f.validate(s);
     return s;
 }
 

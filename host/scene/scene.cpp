@@ -45,13 +45,14 @@ void Scene::validate() const
 {
     for (double x : {height, rotation, width, length, extent})
         if (!std::isfinite(x)) throw InputError(fmt::format("scene {}: every value must be finite", describe()));
-    if (!(height >= 0)) throw InputError(fmt::format("scene {}: height must be >= 0", describe()));
+    // h < 0 is allowed: the light then passes through the receiver plane and
+    // every method must clip it at the receiver's horizon (a stiff case).
     if (!(extent > 0)) throw InputError(fmt::format("scene {}: extent must be > 0", describe()));
     if (!(width > 0 && length > 0))
         throw InputError(fmt::format("scene {}: degenerate light {} x {}: its corners coincide or are collinear "
                                      "(W and L must be > 0)",
                                      describe(), width, length));
-    const double scale = std::max({width, length, height + length, extent});
+    const double scale = std::max({width, length, std::fabs(height) + length, extent});
     if (std::min(width, length) < 1e-6 * scale)
         throw InputError(fmt::format("scene {}: degenerate light {} x {}: a side below 1e-6 of the scene scale {} "
                                      "makes corners coincide or collinear in float",

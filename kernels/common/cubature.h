@@ -93,17 +93,6 @@ LB_FN real lb_cub_incircle_tol(void)
 #endif
 }
 
-/* Machine epsilon of real (a function, not a macro: the host includes this
- * header once per precision). */
-LB_FN real lb_cub_ulp(void)
-{
-#if LB_REAL_IS_DOUBLE
-    return R(2.220446049250313e-16);
-#else
-    return R(1.1920929e-7);
-#endif
-}
-
 /* The triangulation of one shading point: a compact, fixed-capacity structure
  * in the spirit of thesis 5.2.1. Triangles are index triples, counter-clockwise
  * in q; neighbours are found by searching the few triangles for the reversed
@@ -221,7 +210,7 @@ LB_FN int lb_cub_init(lb_cub* T, const real3* poly, int n, real3 u, real3 v)
         size = fmax(size, length(a));
         mag = fmax(mag, fmax(fabs(a.x + q0.x), fabs(a.y + q0.y)));
     }
-    T->eps = lb_cub_tol() * size + R(16) * lb_cub_ulp() * mag;
+    T->eps = lb_cub_tol() * size + R(16) * lb_real_eps() * mag;
     for (int k = 0; k < n; ++k) {
         real3 p = poly[area >= R(0) ? k : n - 1 - k];
         real2 q = R2(dot(p, u), dot(p, v));
@@ -417,7 +406,7 @@ LB_FN real lb_cub_weights(const lb_cub* T, real3 u, real3 v, real3 nL, real3 nx,
         w[i] = R(0);
         real r = T->r[i] > R(0) ? T->r[i] : R(1);
         g[i] = fmax(R(0), dot(nx, T->p[i]) / r);
-        c[i] = fmax(fabs(dot(nL, T->p[i])) / r, lb_cub_ulp());
+        c[i] = fmax(fabs(dot(nL, T->p[i])) / r, lb_real_eps());
     }
     real total = R(0);
     for (int k = 0; k < T->nt; ++k) {
@@ -446,99 +435,8 @@ LB_FN real lb_cub_weights(const lb_cub* T, real3 u, real3 v, real3 nL, real3 nx,
 
 /* lb_polygon_centroid (area barycentre, continuous under clipping): dynamic.h. */
 
-/* Closest point of the convex polygon poly[0..n) (relative to x, in the
- * light's plane with frame u, v, normal nL) to the point t of that plane, for
- * targets that may be far away (the NP of a grazing normal). The same point
- * as lb_closest_point_polygon, decided differently: that function compares
- * squared distances, which for a target at distance R cannot tell an edge
- * point from a vertex closer than R sqrt(ulp) (R = 1e3: 0.24 in float),
- * so NP hopped between them. Here the decision uses the signed side and the
- * projection parameter of t on each edge, linear in t (error ~ R ulp): t
- * outside edge i with its projection inside the edge -> that projection
- * (the polygon lies behind the edge's line, so nothing is nearer); else the
- * vertex whose normal cone holds t. */
-LB_FN real3 lb_cub_clamp(const real3* poly, int n, real3 u, real3 v, real3 nL, real3 t)
-{
-    real3 o = nL * dot(nL, poly[0]);
-    real2 qt = R2(dot(t, u), dot(t, v));
-    real wind = R(0);
-    for (int i = 0; i < n; ++i) {
-        real2 a = R2(dot(poly[i], u), dot(poly[i], v));
-        real2 b = R2(dot(poly[(i + 1) % n], u), dot(poly[(i + 1) % n], v));
-        wind += lb_cross2(a, b);
-    }
-    real sg = wind >= R(0) ? R(1) : R(-1);
-    real worst = R(0);
-    int edge = -1, inside = 1;
-    real edge_s = R(0);
-    real sps[LB_MAXV];
-    for (int i = 0; i < n; ++i) {
-        real2 a = R2(dot(poly[i], u), dot(poly[i], v));
-        real2 b = R2(dot(poly[(i + 1) % n], u), dot(poly[(i + 1) % n], v));
-        real2 e = b - a;
-        real ee = dot(e, e);
-        sps[i] = ee > R(0) ? dot(qt - a, e) / ee : R(0);
-        real side = ee > R(0) ? sg * lb_cross2(e, qt - a) / sqrt(ee) : R(0); /* < 0: outside edge i */
-        if (side < R(0))
-            inside = 0;
-        if (side < R(0) && sps[i] >= R(0) && sps[i] <= R(1) && side < worst) {
-            worst = side;
-            edge = i;
-            edge_s = sps[i];
-        }
-    }
-    if (inside)
-        return o + u * qt.x + v * qt.y;
-    if (edge >= 0)
-        return poly[edge] + (poly[(edge + 1) % n] - poly[edge]) * edge_s;
-    /* vertex k: beyond the end of edge k-1 and before the start of edge k */
-    for (int k = 0; k < n; ++k)
-        if (sps[(k + n - 1) % n] >= R(1) && sps[k] <= R(0))
-            return poly[k];
-    int where;
-    return lb_closest_point_polygon(poly, n, nL, t, &where);
-}
-
-/* Normal point (paper 4.2, Drobot 2014): where the ray from x (the origin)
- * along nx meets the light's plane, clamped to the polygon. When the ray
- * misses the plane (or meets it farther than 1e3 light sizes), a point that
- * far in the direction of nx projected onto the plane is clamped instead:
- * the limit of the hit point as the ray turns parallel to the plane, to
- * 1e-3 of the light's size. */
-LB_FN real3 lb_cub_normal_point(const real3* poly, int n, real3 u, real3 v, real3 nL, real3 nx)
-{
-    real dl = dot(nL, poly[0]);
-    real dn = dot(nL, nx);
-    real size = R(0);
-    for (int i = 1; i < n; ++i)
-        size = fmax(size, length(poly[i] - poly[0]));
-    real big = R(1e3) * (fabs(dl) + size);
-    real3 target;
-    if (dn * dl > R(0) && dl / dn < big) {
-        target = nx * (dl / dn);
-    } else {
-        real3 tg = nx - nL * dn;
-        real lt = length(tg);
-        target = nL * dl + (lt > R(0) ? tg * (big / lt) : R3(0, 0, 0));
-    }
-    return lb_cub_clamp(poly, n, u, v, nL, target);
-}
-
-/* Most representative point (paper 4.2): the light's plane hit by the ray
- * along the half vector of the directions to the closest point cp and the
- * normal point np, clamped to the polygon; cp when that ray misses. */
-LB_FN real3 lb_mrp_point(const real3* poly, int n, real3 u, real3 v, real3 nL, real3 cp, real3 np)
-{
-    real lc = length(cp), ln = length(np);
-    if (!(lc > R(0)) || !(ln > R(0)))
-        return cp;
-    real3 h = cp / lc + np / ln;
-    real dl = dot(nL, poly[0]);
-    real dn = dot(nL, h);
-    if (!(dn * dl > R(0)))
-        return cp;
-    return lb_cub_clamp(poly, n, u, v, nL, h * (dl / dn));
-}
+/* The dynamic points -- lb_closest_point_polygon (polygon.h), lb_normal_point
+ * and lb_mrp (dynamic.h) -- are the ones the cp/np/mrp baselines use. */
 
 /* The whole geometric step for the shading point x (world) with normal nx:
  * plane shift, (tilted) horizon clip, dynamic points, triangulation, weights.
@@ -564,16 +462,17 @@ LB_FN real lb_cubature_setup(lb_cub* T, lb_light L, real3 x, real3 nx, int trian
     }
     real3 dyn[4];
     int nd = 0;
-    /* CP by the parametric clamp too: lb_closest_point_polygon's squared
-     * distances cannot separate a vertex from an edge point closer than
-     * |x - CP| sqrt(ulp) (7e-4 at 2 m in float), and CP hopping onto the
-     * corner changed the Delaunay triangulation of nearby dynamic points */
-    real3 cp = lb_cub_clamp(poly, n, L.u, L.v, L.n, R3(0, 0, 0));
-    real3 np = (dynamic & (LB_CUB_NP | LB_CUB_MRP)) ? lb_cub_normal_point(poly, n, L.u, L.v, L.n, nx) : cp;
+    /* CP by the linear-test clamp: squared distances cannot separate a vertex
+     * from an edge point closer than |x - CP| sqrt(ulp) (7e-4 at 2 m in
+     * float), and CP hopping onto the corner changed the Delaunay
+     * triangulation of nearby dynamic points. NP without skew. */
+    int where;
+    real3 cp = lb_closest_point_polygon(poly, n, L.n, R3(0, 0, 0), &where);
+    real3 np = (dynamic & (LB_CUB_NP | LB_CUB_MRP)) ? lb_normal_point(poly, n, L.n, nx, R(0)) : cp;
     if (dynamic & LB_CUB_CP)
         dyn[nd++] = cp;
     if (dynamic & LB_CUB_MRP)
-        dyn[nd++] = lb_mrp_point(poly, n, L.u, L.v, L.n, cp, np);
+        dyn[nd++] = lb_mrp(poly, n, L.n, cp, np);
     if (dynamic & LB_CUB_NP)
         dyn[nd++] = np;
     if (dynamic & LB_CUB_BARY)
@@ -589,16 +488,6 @@ LB_FN real lb_cubature_setup(lb_cub* T, lb_light L, real3 x, real3 nx, int trian
     if (triangulation == LB_CUB_DELAUNAY)
         lb_cub_delaunay(T);
     return lb_cub_weights(T, L.u, L.v, L.n, nx, weighting, w);
-}
-
-/* Radiance (paper Eq. 2) emitted towards x by the sample at p (relative to x):
- * L = I(-p) / (A |n_L . p^|), A the light's full area. */
-LB_FN real lb_cub_radiance(__global const float* lum, lb_light L, real3 p)
-{
-    real r = length(p);
-    real c = fmax(fabs(dot(L.n, p)) / r, lb_cub_ulp());
-    real3 d = lb_to_light_frame(L, -p);
-    return lb_intensity_local(lum, d) / (L.w * L.l * c);
 }
 
 /* Cubature irradiance (lux) at x: lb_cubature_setup, then the photometric
@@ -617,7 +506,7 @@ LB_FN real lb_cubature_irradiance(__global const float* lum, lb_light L, real3 x
     real e = R(0), ws = R(0);
     for (int i = 0; i < T.ns; ++i) {
         if (w[i] != R(0))
-            e += w[i] * lb_cub_radiance(lum, L, T.p[i]);
+            e += w[i] * lb_radiance_from(lum, L, T.p[i]);
         ws += w[i];
     }
     if (normalize_ff)

@@ -23,6 +23,17 @@ LB_FN real3 lb_polygon_centroid(const real3* p, int n)
     return n > 0 ? m / (real)n : m;
 }
 
+/* Machine epsilon of real (a function, not a macro: the host includes this
+ * header once per precision). */
+LB_FN real lb_real_eps(void)
+{
+#if LB_REAL_IS_DOUBLE
+    return R(2.220446049250313e-16);
+#else
+    return R(1.1920929e-7);
+#endif
+}
+
 /* Emitted radiance of the photometric light towards the origin from the point
  * p on the light (paper Eq. 2): L_e(d) = I(d) / (A |n_L . d|), d = -p / |p| the
  * emission direction, A the light's (unclipped) area.
@@ -49,57 +60,61 @@ LB_FN real lb_radiance_from(__global const float* lum, lb_light L, real3 p)
     return lb_intensity_local(lum, dl) / (L.w * L.l * c);
 }
 
-/* The light normal turned towards the origin: the side of the light x sees. */
-LB_FN real3 lb_facing_normal(lb_light L, real3 c_rel)
+/* Normal point (paper 4.2, thesis 4.2, Drobot 2014) of the receiver with
+ * normal nx at the origin: where the ray along nx meets the light's plane
+ * (normal nL, through the polygon p[0..n), the clipped light relative to x),
+ * clamped to the polygon (lb_closest_point_polygon).
+ * skew > 0 (the np/mrp baselines, thesis 4.2): with n_f the light normal
+ * facing x, the ray misses the plane or meets it behind x when nx . n_f >= 0;
+ * nx is skewed whenever nx . n_f > -skew, towards the direction
+ * nx - n_f (nx . n_f + skew), so the point moves continuously as nx turns.
+ * skew <= 0 (the cubature): no skew; when the ray misses the plane (or meets
+ * it farther than 1e3 light sizes), a point that far along nx projected onto
+ * the plane is clamped instead: the limit of the hit point as the ray turns
+ * parallel to the plane, to 1e-3 of the light's size. */
+LB_FN real3 lb_normal_point(const real3* p, int n, real3 nL, real3 nx, real skew)
 {
-    return dot(c_rel, L.n) > R(0) ? -L.n : L.n;
-}
-
-/* Intersection of the ray t * dir (t > 0) with the plane through q with
- * normal nf; *ok = 0 when the ray does not reach the plane. */
-LB_FN real3 lb_ray_plane(real3 dir, real3 q, real3 nf, int* ok)
-{
-    real den = dot(dir, nf);
-    real t = den != R(0) ? dot(q, nf) / den : R(-1);
-    *ok = t > R(0) ? 1 : 0;
-    return dir * t;
-}
-
-/* Normal point (thesis 4.2): where the ray from x along the receiver normal
- * nx meets the light plane (through c_rel, normal L.n), clamped to the polygon
- * p[0..n) (the clipped light). With n_f the light normal facing x, the ray
- * misses the plane or meets it behind x when nx . n_f >= 0; the thesis skews
- * nx towards the plane then. Here nx is skewed whenever nx . n_f > -skew, to
- * the direction whose component along n_f is exactly -skew (skew > 0), so the
- * point moves continuously as nx turns. */
-LB_FN real3 lb_normal_point(const real3* p, int n, lb_light L, real3 c_rel, real3 nx, real skew)
-{
-    real3 nf = lb_facing_normal(L, c_rel); /* points from the light towards x */
+    real dl = dot(nL, p[0]); /* signed distance of the plane from x along nL */
     real3 dir = nx;
-    real a = dot(nx, nf);
-    if (a > -skew)
-        dir = normalize(nx - nf * (a + skew));
-    int ok = 0;
-    real3 q = lb_ray_plane(dir, c_rel, nf, &ok);
-    if (!ok)
-        q = c_rel; /* cannot happen after the skew; the centre is a safe fallback */
-    int where = 0;
-    return lb_closest_point_polygon(p, n, L.n, q, &where);
+    if (skew > R(0)) {
+        real3 nf = dl > R(0) ? -nL : nL; /* points from the light towards x */
+        real a = dot(nx, nf);
+        if (a > -skew)
+            dir = normalize(nx - nf * (a + skew));
+    }
+    real dn = dot(nL, dir);
+    real size = R(0);
+    for (int i = 1; i < n; ++i)
+        size = fmax(size, length(p[i] - p[0]));
+    real big = R(1e3) * (fabs(dl) + size);
+    real3 target;
+    if (dn * dl > R(0) && dl / dn < big) {
+        target = dir * (dl / dn);
+    } else {
+        real3 tg = dir - nL * dn;
+        real lt = length(tg);
+        target = nL * dl + (lt > R(0) ? tg * (big / lt) : R3(0, 0, 0));
+    }
+    int where;
+    return lb_closest_point_polygon(p, n, nL, target, &where);
 }
 
 /* Most representative point (Drobot 2014, as adapted in paper 4.2): the light
- * plane hit by the half-vector of the directions to the (clamped) closest and
- * normal points, clamped to the polygon again. */
-LB_FN real3 lb_mrp(const real3* p, int n, lb_light L, real3 c_rel, real3 cp, real3 np)
+ * plane hit by the ray along the half vector of the directions to the closest
+ * point cp and the normal point np, clamped to the polygon p[0..n) (plane
+ * normal nL); cp when that ray misses the plane. */
+LB_FN real3 lb_mrp(const real3* p, int n, real3 nL, real3 cp, real3 np)
 {
-    real3 h = normalize(cp) + normalize(np);
-    real3 nf = lb_facing_normal(L, c_rel);
-    int ok = 0;
-    real3 q = lb_ray_plane(h, c_rel, nf, &ok);
-    if (!ok)
-        q = cp;
-    int where = 0;
-    return lb_closest_point_polygon(p, n, L.n, q, &where);
+    real lc = length(cp), ln = length(np);
+    if (!(lc > R(0)) || !(ln > R(0)))
+        return cp;
+    real3 h = cp / lc + np / ln;
+    real dl = dot(nL, p[0]);
+    real dn = dot(nL, h);
+    if (!(dn * dl > R(0)))
+        return cp;
+    int where;
+    return lb_closest_point_polygon(p, n, nL, h * (dl / dn), &where);
 }
 
 /* The light's corners relative to x, clipped to the horizon of normal nx

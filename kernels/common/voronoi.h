@@ -88,7 +88,8 @@ LB_FN real lb_voronoi_irradiance(__global const float* lum, __global const float
     lb_light_corners(L, p);
     for (int i = 0; i < 4; ++i)
         p[i] -= x;
-    real3 cp = lb_cub_clamp(p, 4, L.u, L.v, L.n, R3(0, 0, 0));
+    int where;
+    real3 cp = lb_closest_point_polygon(p, 4, L.n, R3(0, 0, 0), &where);
     real3 c = L.c - x;
     real frac[LB_VOR_SITES];
     lb_voronoi_lookup(tab, res, dot(cp - c, L.u) / L.w + R(0.5), dot(cp - c, L.v) / L.l + R(0.5), frac);
@@ -98,7 +99,7 @@ LB_FN real lb_voronoi_irradiance(__global const float* lum, __global const float
     for (int k = 0; k < LB_VOR_SITES; ++k) {
         real g = dot(nx, p[k]) / length(p[k]);
         if (g > R(0) && frac[k] > R(0))
-            e += frac[k] * g * lb_cub_radiance(lum, L, p[k]);
+            e += frac[k] * g * lb_radiance_from(lum, L, p[k]);
     }
     return lb_polygon_solid_angle(p, 4) * e;
 }

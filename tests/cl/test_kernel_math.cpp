@@ -116,3 +116,64 @@ TEST(KernelMath, IntensityLookupMatchesHost)
 
 } // namespace
 } // namespace lb
+
+namespace lb {
+namespace {
+
+// Corner versus edge in float, on the device and the host alike: receivers
+// whose projection onto the light's plane lies 0.5 m outside an edge and
+// 1e-4 of the edge's length before (-> case 1, edge) or beyond (-> case 2,
+// vertex) a corner, 2 m in front of the light (no horizon clip). Squared
+// distances cannot decide these in float (|x - CP| ~ 2 m: a vertex and an
+// edge point closer than 2 sqrt(1.2e-7) = 7e-4 look equal); the linear tests
+// of lb_closest_point_polygon must.
+TEST(KernelMath, ClosestPointCornerVersusEdgeFloat)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    Scene s;
+    s.height = 0.1;
+    s.rotation = 3 * M_PI / 4;
+    auto P64 = s.params();
+    std::vector<float> P(P64.begin(), P64.end());
+    auto c = s.corners();
+    glm::dvec3 n = s.n();
+    std::vector<float> q;
+    std::vector<int> expect;
+    for (int k = 0; k < 4; ++k)
+        for (int side : {-1, 1}) {  // the edge to the previous / next corner
+            glm::dvec3 other = c[(k + (side > 0 ? 1 : 3)) % 4];
+            glm::dvec3 e = other - c[k];                         // along the edge, away from the corner
+            glm::dvec3 out = glm::normalize(c[k] - c[(k + 2) % 4]);  // roughly outward at the corner
+            glm::dvec3 o = glm::normalize(out - e * (glm::dot(out, e) / glm::dot(e, e)));  // outward normal of the edge
+            for (double t : {1e-4, -1e-4}) {
+                glm::dvec3 x = c[k] + e * t + o * 0.5 + n * 2.0;
+                q.insert(q.end(), {float(x.x), float(x.y), float(x.z)});
+                expect.push_back(t > 0 ? 1 : 2);
+            }
+        }
+    int m = static_cast<int>(expect.size());
+    cl::Buffer bP = upload(*rt, P), bq = upload(*rt, q);
+    cl::Buffer bo(rt->context(), CL_MEM_WRITE_ONLY, 4 * m * sizeof(float));
+    cl::Kernel k = rt->kernel("selftest.cl", "clip_and_measure", "");
+    k.setArg(0, bP);
+    k.setArg(1, bq);
+    k.setArg(2, bo);
+    k.setArg(3, m);
+    rt->launch1D(k, m, 8).wait();
+    auto out = download<float>(*rt, bo, 4 * m);
+    namespace F = lb::f32;
+    F::lb_light L = F::lb_scene_light(P.data());
+    for (int i = 0; i < m; ++i) {
+        F::real3 p[LB_MAXV];
+        F::lb_light_corners(L, p);
+        for (int j = 0; j < 4; ++j) p[j] -= F::real3(q[3 * i], q[3 * i + 1], q[3 * i + 2]);
+        ASSERT_EQ(F::lb_clip_polygon(p, 4, F::real3(0, 0, 1), 0.0f), 4) << i;
+        int where = -1;
+        F::lb_closest_point_polygon(p, 4, L.n, F::real3(0, 0, 0), &where);
+        EXPECT_EQ(where, expect[i]) << "host, receiver " << i;
+        EXPECT_EQ(static_cast<int>(out[4 * i + 3]), expect[i]) << "device, receiver " << i;
+    }
+}
+
+} // namespace
+} // namespace lb

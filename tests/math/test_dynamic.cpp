@@ -42,12 +42,12 @@ TEST(Dynamic, NormalPointHitsAndClamps)
     real3 p[LB_MAXV];
     // Head-on: the normal ray meets the plane at (0, 0, 1), inside the light.
     lb_light L = downLight(-1, p);
-    real3 np = lb_normal_point(p, 4, L, L.c, real3(0, 0, 1), 0.1);
+    real3 np = lb_normal_point(p, 4, L.n, real3(0, 0, 1), 0.1);
     EXPECT_NEAR(length(np - real3(0, 0, 1)), 0, 1e-15);
     // Light moved to x in [0.5, 2.5]: the hit (0, 0, 1) is clamped to the
     // nearest edge point (0.5, 0, 1).
     L = downLight(0.5, p);
-    np = lb_normal_point(p, 4, L, L.c, real3(0, 0, 1), 0.1);
+    np = lb_normal_point(p, 4, L.n, real3(0, 0, 1), 0.1);
     EXPECT_NEAR(length(np - real3(0.5, 0, 1)), 0, 1e-15);
 }
 
@@ -66,7 +66,7 @@ TEST(Dynamic, NormalPointSkewsWhenParallel)
     real3 p[LB_MAXV];
     lb_light_corners(L, p);
     for (double skew : {0.1, 0.25}) {
-        real3 np = lb_normal_point(p, 4, L, L.c, real3(0, 0, 1), skew);
+        real3 np = lb_normal_point(p, 4, L.n, real3(0, 0, 1), skew);
         EXPECT_NEAR(np.x, 0, 1e-12);
         EXPECT_NEAR(np.y, 1, 1e-12);
         EXPECT_NEAR(np.z, 1 / skew, 1e-12);
@@ -79,10 +79,10 @@ TEST(Dynamic, MrpBetweenClosestAndNormalPoint)
     lb_light L = downLight(-1, p);
     // CP = NP = (0, 0, 1): the MRP is the same point.
     real3 a(0, 0, 1);
-    EXPECT_NEAR(length(lb_mrp(p, 4, L, L.c, a, a) - a), 0, 1e-15);
+    EXPECT_NEAR(length(lb_mrp(p, 4, L.n, a, a) - a), 0, 1e-15);
     // CP (0,0,1) and NP (1,0,1) at 45 degrees: the half-vector meets z = 1 at
     // x = tan(22.5 deg) = sqrt(2) - 1.
-    real3 m = lb_mrp(p, 4, L, L.c, a, real3(1, 0, 1));
+    real3 m = lb_mrp(p, 4, L.n, a, real3(1, 0, 1));
     EXPECT_NEAR(m.x, std::sqrt(2.0) - 1, 1e-15);
     EXPECT_NEAR(m.z, 1, 1e-15);
 }

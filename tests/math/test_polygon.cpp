@@ -108,3 +108,36 @@ TEST(Polygon, ClosestPointIsClosestOverDenseSamples)
 }
 
 } // namespace
+
+namespace {
+
+// Float: the corner-vs-edge decision is made by tests linear in the target,
+// so a target 2 m outside edge x = 1 whose projection is 1e-4 before the
+// corner (1, 1) gives the edge point, case 1. Comparing squared distances
+// cannot: edge 4, corner 4 + 1e-8, and ulp(4) = 4.8e-7 in float. The edge
+// point is exact to the float rounding of the inputs (1e-4 carries 4e-12
+// relative error in its representation, |q| = 3: a few ulp, 1e-6).
+TEST(Polygon, ClosestPointCornerVersusEdgeInFloat)
+{
+    namespace F = lb::f32;
+    F::real3 p[LB_MAXV] = {F::real3(0, 0, 0), F::real3(1, 0, 0), F::real3(1, 1, 0), F::real3(0, 1, 0)};
+    for (float s : {1.0f - 1e-4f, 1.0f - 1e-3f, 0.5f, 1e-4f}) {
+        int where = -1;
+        F::real3 c = F::lb_closest_point_polygon(p, 4, F::real3(0, 0, 1), F::real3(3.0f, s, 0.7f), &where);
+        EXPECT_EQ(where, 1) << s;
+        EXPECT_NEAR(c.x, 1.0f, 1e-6f) << s;
+        EXPECT_NEAR(c.y, s, 1e-6f) << s;
+        EXPECT_EQ(c.z, 0.0f);
+    }
+    // Just past the corner (projection beyond the edge's end): the vertex.
+    int where = -1;
+    F::real3 c = F::lb_closest_point_polygon(p, 4, F::real3(0, 0, 1), F::real3(3.0f, 1.0f + 1e-4f, 0), &where);
+    EXPECT_EQ(where, 2);
+    EXPECT_EQ(c, F::real3(1, 1, 0));
+    // Far targets (NP of a grazing normal, 1e3 m): still the edge, to 1e3 ulp.
+    c = F::lb_closest_point_polygon(p, 4, F::real3(0, 0, 1), F::real3(1e3f, 0.25f, 0), &where);
+    EXPECT_EQ(where, 1);
+    EXPECT_NEAR(c.y, 0.25f, 1e3f * 1.2e-7f);
+}
+
+} // namespace
