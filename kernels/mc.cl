@@ -27,24 +27,37 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     int col = get_global_id(0);
     int row = row0 + (int)get_global_id(1);
     int res = (int)P[15];
-    if (col >= res || row >= res)
-        return;
-    lb_light L = lb_scene_light(P);
-    real3 x = lb_pixel_position(P, row, col);
-    real3 nx = lb_p3(P, 16);
-    /* Offset of corner (-u, -v) from the pixel, in the light frame. */
-    real3 o = L.c - L.u * (R(0.5) * L.w) - L.v * (R(0.5) * L.l) - x;
-    real ou = dot(o, L.u), ov = dot(o, L.v), on = dot(o, L.n);
-    real w = L.w, l = L.l;
+    /* No early return: every work-item reaches the barrier below. */
+    bool inside = col < res && row < res;
+    /* All scalar (see common/scene.h for P): float3 values in the loop body
+     * stop PoCL's work-item loop vectoriser. */
+    real s = P[14], fres = P[15];
+    real x = -R(0.5) * s + ((real)col + R(0.5)) * s / fres;
+    real y = R(0.5) * s - ((real)row + R(0.5)) * s / fres;
+    real ux = P[3], uy = P[4], uz = P[5];
+    real vx = P[6], vy = P[7], vz = P[8];
+    real nlx = P[9], nly = P[10], nlz = P[11];
+    real w = P[12], l = P[13];
+    /* Offset o of corner (-u, -v) from the pixel (x, y, 0), in the light frame. */
+    real ox = P[0] - R(0.5) * (w * ux + l * vx) - x;
+    real oy = P[1] - R(0.5) * (w * uy + l * vy) - y;
+    real oz = P[2] - R(0.5) * (w * uz + l * vz);
+    real ou = ox * ux + oy * uy + oz * uz;
+    real ov = ox * vx + oy * vy + oz * vz;
+    real on = ox * nlx + oy * nly + oz * nlz;
 #ifdef LB_NO_BACK
     /* Every direction d = -w to this pixel has d . n_L = -on <= 0. */
     if (on >= R(0)) {
-        out[row * res + col] = R(0);
+        if (inside)
+            out[row * res + col] = R(0);
         return;
     }
 #endif
     /* Receiver cosine (unnormalised): n_x . w = au (ou + W s) + av (ov + L t) + an on. */
-    real au = dot(nx, L.u), av = dot(nx, L.v), an0 = dot(nx, L.n) * on;
+    real nxx = P[16], nxy = P[17], nxz = P[18];
+    real au = nxx * ux + nxy * uy + nxz * uz;
+    real av = nxx * vx + nxy * vy + nxz * vz;
+    real an0 = (nxx * nlx + nxy * nly + nxz * nlz) * on;
     real on2 = on * on;
     real sum = R(0);
     for (int i = 0; i < n; ++i) {
@@ -53,12 +66,17 @@ __kernel void render(__global const real* P, __global const float* lum, __global
         real r2 = wu * wu + wv * wv + on2;
         real cw = au * wu + av * wv + an0;
 #ifdef LB_NO_HORIZON
-        real ri = R(1) / sqrt(r2);
+        real ri = rsqrt(r2);
 #else
         cw = fmax(cw, R(0));
-        real ri = r2 > R(0) ? R(1) / sqrt(r2) : R(0);
+        real ri = r2 > R(0) ? rsqrt(r2) : R(0);
 #endif
-        sum += lb_intensity_local(lum, R3(-wu, -wv, -on)) * cw * (ri * ri * ri);
+        sum += LB_INTENSITY3(lum, -wu, -wv, -on) * cw * (ri * ri * ri);
+        /* A barrier per sample makes PoCL put the work-item loop inside this
+         * one, where the loop vectoriser runs it across pixels; on GPUs it
+         * costs little (the whole group runs the same n). */
+        barrier(CLK_LOCAL_MEM_FENCE);
     }
-    out[row * res + col] = sum / (real)n;
+    if (inside)
+        out[row * res + col] = sum / (real)n;
 }

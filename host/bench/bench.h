@@ -18,7 +18,8 @@ namespace lb::bench {
 struct Options {
     int res = 512;
     int reps = 5;
-    int samples = 64;     // N of the samples/s comparison (naive vs fast MC)
+    int samples = 32;     // N of the samples/s comparison (naive vs fast MC)
+    int rounds = 3;       // alternating naive / fast rounds (median of each)
     size_t lx = 8, ly = 8; // local size
     bool quick = false;   // fewer methods and MC fit points (tests)
 };

@@ -19,7 +19,7 @@ void addBenchCommand(CLI::App& app)
         std::string luminaire = "batwing";
         double height = 1.0;
         std::string rotation = "3pi/4";
-        int res = 512, reps = 5, samples = 64, device = -1;
+        int res = 512, reps = 5, samples = 32, rounds = 3, device = -1;
         std::string local = "8x8";
         bool quick = false, json = false;
     };
@@ -31,6 +31,7 @@ void addBenchCommand(CLI::App& app)
     cmd->add_option("--res", o->res, "Image resolution N")->capture_default_str();
     cmd->add_option("--reps", o->reps, "Timed launches after one warm-up (median)")->capture_default_str();
     cmd->add_option("--samples", o->samples, "MC N of the samples/s comparison")->capture_default_str();
+    cmd->add_option("--rounds", o->rounds, "Alternating naive / fast rounds (median of each)")->capture_default_str();
     cmd->add_option("--local", o->local, "Work-group size WxH")->capture_default_str();
     cmd->add_option("--device", o->device, "OpenCL device index (lumibench devices)");
     cmd->add_flag("--quick", o->quick, "Fewer methods and fit points (smoke tests)");
@@ -53,6 +54,8 @@ void addBenchCommand(CLI::App& app)
         opt.res = o->res;
         opt.reps = o->reps;
         opt.samples = o->samples;
+        if (o->rounds < 1) throw InputError("--rounds must be >= 1");
+        opt.rounds = o->rounds;
         opt.quick = o->quick;
         Scene scene;
         scene.height = o->height;

@@ -52,13 +52,15 @@ LB_FN real lb_lut_intensity3(__global const float* lut, real x, real y, real z)
     int ng = (int)lut[0];
     real rho = sqrt(x * x + y * y);
     real fg = (lb_lut_q(rho, z) - (real)lut[2]) * (real)lut[4];
-    if (!(fg >= R(0) && fg <= (real)ng))
-        return R(0);
+    /* Branch-free (the loop vectoriser if-converts no loads): read a clamped
+     * cell, then zero the result outside the measured range. */
+    real keep = (fg >= R(0) && fg <= (real)ng) ? R(1) : R(0);
+    fg = fmin(fmax(fg, R(0)), (real)ng);
     int ig = LB_IMIN((int)fg, ng - 1);
     real tg = fg - (real)ig;
 #ifdef LB_LUT_1D
     __global const float* c0 = lut + LB_LUT_HEADER + ig;
-    return mix((real)c0[0], (real)c0[1], tg);
+    return keep * mix((real)c0[0], (real)c0[1], tg);
 #else
     int na = (int)lut[1];
     real fa = lb_lut_a(x, y) * (real)lut[5];
@@ -68,7 +70,7 @@ LB_FN real lb_lut_intensity3(__global const float* lut, real x, real y, real z)
     __global const float* c1 = c0 + (ng + 1);
     real lo = mix((real)c0[0], (real)c0[1], tg);
     real hi = mix((real)c1[0], (real)c1[1], tg);
-    return mix(lo, hi, ta);
+    return keep * mix(lo, hi, ta);
 #endif
 }
 

@@ -74,3 +74,11 @@ LB_FN real lb_intensity_local(__global const float* lum, real3 d)
     return lb_intensity_cg(lum, lb_c_deg(d), lb_gamma_deg(d));
 #endif
 }
+
+/* The same from scalar components, for scalar hot loops (no float3 there, so
+ * that the loop vectoriser can take them). */
+#ifdef LB_LUT
+#define LB_INTENSITY3(lum, x, y, z) lb_lut_intensity3((lum), (x), (y), (z))
+#else
+#define LB_INTENSITY3(lum, x, y, z) lb_intensity_local((lum), R3((x), (y), (z)))
+#endif
