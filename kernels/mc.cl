@@ -17,7 +17,7 @@
  *   LB_NO_HORIZON  the light lies above every receiver's horizon: no max(0, cos)
  *   LB_NO_BACK     the luminaire emits nothing at gamma >= 90 deg: pixels
  *                  behind the light's plane are 0 without a loop
- * @variants: "" | "-DLB_LUT" | "-DLB_LUT -DLB_LUT_1D" | "-DLB_LUT -DLB_NO_HORIZON -DLB_NO_BACK" | "-DLB_NO_HORIZON"
+ * @variants: "" | "-DLB_LUT" | "-DLB_LUT -DLB_LUT_1D -DLB_NO_HORIZON -DLB_NO_BACK"
  */
 #include "common/lbmath.h"
 
