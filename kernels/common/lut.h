@@ -2,8 +2,8 @@
  *
  * The exact lookup (photometry.h) needs acos/atan2 and two binary searches per
  * sample. Here the luminaire is resampled once (host/photometry/lut.h) on a
- * uniform grid over two "diamond" pseudo-angles that need one sqrt and two
- * divisions, no trigonometry and no search:
+ * uniform grid over two "diamond" pseudo-angles that need one sqrt and one
+ * (shared) division, no trigonometry and no search:
  *
  *   q = rho / (rho + |z|)       for z >= 0,   2 - rho / (rho + |z|) for z < 0,
  *       rho = sqrt(x^2 + y^2): q in [0, 2] grows monotonically with gamma
@@ -51,7 +51,21 @@ LB_FN real lb_lut_intensity3(__global const float* lut, real x, real y, real z)
 {
     int ng = (int)lut[0];
     real rho = sqrt(x * x + y * y);
-    real fg = (lb_lut_q(rho, z) - (real)lut[2]) * (real)lut[4];
+    real sg = rho + fabs(z);
+    /* q and a share one division: 1 / ((rho + |z|) (|x| + |y|)). On the axis
+     * (|x| + |y| = 0, so rho = 0) both pseudo-angles are 0 / q(z). The 1D
+     * variant computes q the same way, so that it equals the 2D one to the
+     * last bit. */
+    real sa = fabs(x) + fabs(y);
+    real inv = R(1) / (sg * sa);
+    real t = sa > R(0) ? rho * sa * inv : R(0);
+    real q = z >= R(0) ? t : R(2) - t;
+#ifndef LB_LUT_1D
+    real p = sa > R(0) ? y * sg * inv : R(0);
+    real a = x >= R(0) ? p : R(2) - p;
+    a = a < R(0) ? a + R(4) : a;
+#endif
+    real fg = (q - (real)lut[2]) * (real)lut[4];
     /* Branch-free (the loop vectoriser if-converts no loads): read a clamped
      * cell, then zero the result outside the measured range. */
     real keep = (fg >= R(0) && fg <= (real)ng) ? R(1) : R(0);
@@ -63,7 +77,7 @@ LB_FN real lb_lut_intensity3(__global const float* lut, real x, real y, real z)
     return keep * mix((real)c0[0], (real)c0[1], tg);
 #else
     int na = (int)lut[1];
-    real fa = lb_lut_a(x, y) * (real)lut[5];
+    real fa = a * (real)lut[5];
     int ia = LB_IMIN((int)fa, na - 1);
     real ta = fa - (real)ia;
     __global const float* c0 = lut + LB_LUT_HEADER + ia * (ng + 1) + ig;
