@@ -66,15 +66,17 @@ __kernel void render(__global const real* P, __global const float* lum, __global
         real r2 = wu * wu + wv * wv + on2;
         real cw = au * wu + av * wv + an0;
 #ifdef LB_NO_HORIZON
-        real ri = rsqrt(r2);
+        real ri = R(1) / LB_LUT_SQRT(r2);
 #else
-        cw = fmax(cw, R(0));
-        real ri = r2 > R(0) ? rsqrt(r2) : R(0);
+        cw = cw > R(0) ? cw : R(0);
+        real ri = r2 > R(0) ? R(1) / LB_LUT_SQRT(r2) : R(0);
 #endif
         sum += LB_INTENSITY3(lum, -wu, -wv, -on) * cw * (ri * ri * ri);
-        /* A barrier per sample makes PoCL put the work-item loop inside this
-         * one, where the loop vectoriser runs it across pixels; on GPUs it
-         * costs little (the whole group runs the same n). */
+        /* A barrier per sample makes PoCL put its work-item loop inside this
+         * one, where LLVM's loop vectoriser runs it across 8 pixels at once
+         * (POCL_VECTORIZER_REMARKS=1: "vectorized loop (vectorization width:
+         * 8)"); on GPUs it costs little (the whole group runs the same n).
+         * Plain arithmetic and selects only: see common/lut.h. */
         barrier(CLK_LOCAL_MEM_FENCE);
     }
     if (inside)

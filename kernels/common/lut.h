@@ -28,6 +28,18 @@
 
 #define LB_LUT_HEADER 8
 
+/* The lookup is written with plain arithmetic and selects (no fabs, fmin,
+ * mix, min built-ins) and native_sqrt for float: PoCL's CPU library
+ * implements those built-ins with 4-wide SSE values, which stops its
+ * work-item loop vectoriser ("instruction return type cannot be
+ * vectorized"). native_sqrt is the hardware square root there; on GPUs it is
+ * within a few ulp, far below the table's own error. */
+#if defined(__OPENCL_C_VERSION__) && !LB_REAL_IS_DOUBLE
+#define LB_LUT_SQRT(x) native_sqrt(x)
+#else
+#define LB_LUT_SQRT(x) sqrt(x)
+#endif
+
 /* Pseudo-gamma q in [0, 2] of a direction (x, y, z) in the luminaire frame. */
 LB_FN real lb_lut_q(real rho, real z)
 {
@@ -50,13 +62,13 @@ LB_FN real lb_lut_a(real x, real y)
 LB_FN real lb_lut_intensity3(__global const float* lut, real x, real y, real z)
 {
     int ng = (int)lut[0];
-    real rho = sqrt(x * x + y * y);
-    real sg = rho + fabs(z);
+    real rho = LB_LUT_SQRT(x * x + y * y);
+    real sg = rho + (z < R(0) ? -z : z);
     /* q and a share one division: 1 / ((rho + |z|) (|x| + |y|)). On the axis
      * (|x| + |y| = 0, so rho = 0) both pseudo-angles are 0 / q(z). The 1D
      * variant computes q the same way, so that it equals the 2D one to the
      * last bit. */
-    real sa = fabs(x) + fabs(y);
+    real sa = (x < R(0) ? -x : x) + (y < R(0) ? -y : y);
     real inv = R(1) / (sg * sa);
     real t = sa > R(0) ? rho * sa * inv : R(0);
     real q = z >= R(0) ? t : R(2) - t;
@@ -69,22 +81,25 @@ LB_FN real lb_lut_intensity3(__global const float* lut, real x, real y, real z)
     /* Branch-free (the loop vectoriser if-converts no loads): read a clamped
      * cell, then zero the result outside the measured range. */
     real keep = (fg >= R(0) && fg <= (real)ng) ? R(1) : R(0);
-    fg = fmin(fmax(fg, R(0)), (real)ng);
-    int ig = LB_IMIN((int)fg, ng - 1);
+    fg = fg < R(0) ? R(0) : fg;
+    fg = fg > (real)ng ? (real)ng : fg;
+    int ig = (int)fg;
+    ig = ig > ng - 1 ? ng - 1 : ig;
     real tg = fg - (real)ig;
 #ifdef LB_LUT_1D
     __global const float* c0 = lut + LB_LUT_HEADER + ig;
-    return keep * mix((real)c0[0], (real)c0[1], tg);
+    return keep * ((real)c0[0] + ((real)c0[1] - (real)c0[0]) * tg);
 #else
     int na = (int)lut[1];
     real fa = a * (real)lut[5];
-    int ia = LB_IMIN((int)fa, na - 1);
+    int ia = (int)fa;
+    ia = ia > na - 1 ? na - 1 : ia;
     real ta = fa - (real)ia;
     __global const float* c0 = lut + LB_LUT_HEADER + ia * (ng + 1) + ig;
     __global const float* c1 = c0 + (ng + 1);
-    real lo = mix((real)c0[0], (real)c0[1], tg);
-    real hi = mix((real)c1[0], (real)c1[1], tg);
-    return keep * mix(lo, hi, ta);
+    real lo = (real)c0[0] + ((real)c0[1] - (real)c0[0]) * tg;
+    real hi = (real)c1[0] + ((real)c1[1] - (real)c1[0]) * tg;
+    return keep * (lo + (hi - lo) * ta);
 #endif
 }
 
