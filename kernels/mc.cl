@@ -15,11 +15,24 @@
  *                  exact acos/atan2 + binary-search lookup; `lum` is the LUT
  *   LB_LUT_1D      rotationally symmetric luminaire: 1D table over gamma
  *   LB_NO_HORIZON  the light lies above every receiver's horizon: no max(0, cos)
- *   LB_NO_BACK     the luminaire emits nothing at gamma >= 90 deg: pixels
- *                  behind the light's plane are 0 without a loop
+ *   LB_NO_BACK     the luminaire emits nothing at gamma >= 90 deg: work-groups
+ *                  whose tile lies behind the light's plane are 0 without a loop
  * @variants: "" | "-DLB_LUT" | "-DLB_LUT -DLB_LUT_1D -DLB_NO_HORIZON -DLB_NO_BACK"
  */
 #include "common/lbmath.h"
+
+/* n_L . (corner(-u,-v) - pixel(col, row)): the pixel lies on or behind the
+ * light's plane when >= 0 (the same arithmetic as the kernel's `on`). */
+LB_FN real mc_on(__global const real* P, int col, int row)
+{
+    real s = P[14], fres = P[15];
+    real x = -R(0.5) * s + ((real)col + R(0.5)) * s / fres;
+    real y = R(0.5) * s - ((real)row + R(0.5)) * s / fres;
+    real ox = P[0] - R(0.5) * (P[12] * P[3] + P[13] * P[6]) - x;
+    real oy = P[1] - R(0.5) * (P[12] * P[4] + P[13] * P[7]) - y;
+    real oz = P[2] - R(0.5) * (P[12] * P[5] + P[13] * P[8]);
+    return ox * P[9] + oy * P[10] + oz * P[11];
+}
 
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
                      __global const real* st, int n)
@@ -27,7 +40,8 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     int col = get_global_id(0);
     int row = row0 + (int)get_global_id(1);
     int res = (int)P[15];
-    /* No early return: every work-item reaches the barrier below. */
+    /* No per-pixel early return: every work-item of a group reaches the
+     * barrier below equally often. */
     bool inside = col < res && row < res;
     /* All scalar (see common/scene.h for P): float3 values in the loop body
      * stop PoCL's work-item loop vectoriser. */
@@ -46,11 +60,22 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     real ov = ox * vx + oy * vy + oz * vz;
     real on = ox * nlx + oy * nly + oz * nlz;
 #ifdef LB_NO_BACK
-    /* Every direction d = -w to this pixel has d . n_L = -on <= 0. */
-    if (on >= R(0)) {
-        if (inside)
-            out[row * res + col] = R(0);
-        return;
+    /* Every direction d = -w to a pixel with on >= 0 has d . n_L <= 0: no
+     * light. The barrier below needs the whole work-group to take the same
+     * path, so the group skips only when its whole tile lies behind the
+     * light's plane: on is linear in the pixel position, so the tile's 4
+     * corner pixels decide, computed from group-uniform values only (so
+     * every work-item gets the same bits). */
+    {
+        int c0 = (int)(get_group_id(0) * get_local_size(0));
+        int r0 = row0 + (int)(get_group_id(1) * get_local_size(1));
+        int c1 = c0 + (int)get_local_size(0) - 1, r1 = r0 + (int)get_local_size(1) - 1;
+        real m = fmin(fmin(mc_on(P, c0, r0), mc_on(P, c1, r0)), fmin(mc_on(P, c0, r1), mc_on(P, c1, r1)));
+        if (m >= R(0)) {
+            if (inside)
+                out[row * res + col] = R(0);
+            return;
+        }
     }
 #endif
     /* Receiver cosine (unnormalised): n_x . w = au (ou + W s) + av (ov + L t) + an on. */

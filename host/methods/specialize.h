@@ -10,7 +10,9 @@
 //              there): the light is convex, so every sample has a positive
 //              receiver cosine and the clip / max(0, cos) path goes.
 //   noBack     the luminaire emits nothing at gamma >= 90 deg: a pixel on or
-//              behind the light's plane receives nothing, skip its loop.
+//              behind the light's plane receives nothing; mc.cl skips the loop
+//              of every work-group whose whole tile lies there (group-uniform,
+//              because of its per-sample barrier).
 //   lut1d      (with the LUT) every C plane is equal: 1D table over gamma,
 //              no azimuth computation.
 //   fan        (cubature) triangulation=fan: no flip machinery (already a
