@@ -9,7 +9,7 @@
  *   LB_CUB_DYNAMIC    bit set of dynamic points: 1 cp, 2 np, 4 mrp, 8 barycentre (0: corners only)
  * Continuous tunables (kernel arguments): plane_eps, horizon_eps (metres).
  *
- * @variants: "" | "-DLB_CUB_TRI=1" | "-DLB_CUB_TRI=1 -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=15" | "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_DYNAMIC=0"
+ * @variants: "" | "-DLB_CUB_TRI=1" | "-DLB_CUB_TRI=1 -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=15" | "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_DYNAMIC=0" | "-DLB_LUT"
  */
 #include "common/lbmath.h"
 

@@ -1,13 +1,74 @@
-// lumibench bench (not implemented yet: see the open issues).
+// lumibench bench: fast kernels against a naive one, every method's time per
+// pixel, cubature against MC 8 and its equal-time N (host/bench/bench.h).
 #include "cli/commands.h"
+
+#include "bench/bench.h"
+#include "methods/analytic.h"
+#include "util/error.h"
+
+#include <fmt/format.h>
+
+#include <iostream>
+#include <memory>
 
 namespace lb::cli {
 
 void addBenchCommand(CLI::App& app)
 {
-    auto* cmd = app.add_subcommand("bench", "Benchmark kernels against naive versions");
-    cmd->allow_extras();
-    cmd->callback([] { notImplemented("bench"); });
+    struct Opts {
+        std::string luminaire = "batwing";
+        double height = 1.0;
+        std::string rotation = "3pi/4";
+        int res = 512, reps = 5, samples = 32, rounds = 3, device = -1;
+        std::string local = "8x8";
+        bool quick = false, json = false;
+    };
+    auto o = std::make_shared<Opts>();
+    auto* cmd = app.add_subcommand("bench", "Benchmark the kernels against a naive MC kernel (issue 9)");
+    cmd->add_option("--luminaire", o->luminaire, "IES or LDT file or short name")->capture_default_str();
+    cmd->add_option("--height", o->height, "Height h of the light (m)")->capture_default_str();
+    cmd->add_option("--rotation", o->rotation, "Rotation R (radians or e.g. 3pi/4)")->capture_default_str();
+    cmd->add_option("--res", o->res, "Image resolution N")->capture_default_str();
+    cmd->add_option("--reps", o->reps, "Timed launches after one warm-up (median)")->capture_default_str();
+    cmd->add_option("--samples", o->samples, "MC N of the samples/s comparison")->capture_default_str();
+    cmd->add_option("--rounds", o->rounds, "Alternating naive / fast rounds (median of each)")->capture_default_str();
+    cmd->add_option("--local", o->local, "Work-group size WxH")->capture_default_str();
+    cmd->add_option("--device", o->device, "OpenCL device index (lumibench devices)");
+    cmd->add_flag("--quick", o->quick, "Fewer methods and fit points (smoke tests)");
+    cmd->add_flag("--json", o->json, "Print one JSON document to stdout");
+    cmd->callback([o] {
+        if (o->res < 1 || o->res > 16384) throw InputError(fmt::format("--res must be in [1, 16384], got {}", o->res));
+        if (o->reps < 1) throw InputError("--reps must be >= 1");
+        if (o->samples < 1) throw InputError("--samples must be >= 1");
+        bench::Options opt;
+        auto x = o->local.find_first_of("xX");
+        try {
+            if (x == std::string::npos) throw std::invalid_argument("");
+            opt.lx = std::stoul(o->local.substr(0, x));
+            opt.ly = std::stoul(o->local.substr(x + 1));
+        } catch (const std::exception&) {
+            throw InputError(fmt::format("--local: expected WxH, got '{}'", o->local));
+        }
+        if (opt.lx < 1 || opt.ly < 1 || opt.lx * opt.ly > 1024)
+            throw InputError(fmt::format("--local: work-group {} out of range", o->local));
+        opt.res = o->res;
+        opt.reps = o->reps;
+        opt.samples = o->samples;
+        if (o->rounds < 1) throw InputError("--rounds must be >= 1");
+        opt.rounds = o->rounds;
+        opt.quick = o->quick;
+        Scene scene;
+        scene.height = o->height;
+        scene.rotation = parseAngle(o->rotation);
+        scene.res = o->res;
+        photometry::Table table = methods::loadLuminaire(o->luminaire);
+        ocl::Runtime rt(o->device);
+        auto doc = bench::run(rt, table, scene, opt);
+        if (o->json)
+            std::cout << doc.dump() << std::endl;
+        else
+            std::cout << bench::format(doc);
+    });
 }
 
 } // namespace lb::cli

@@ -1,6 +1,8 @@
 // mc: one fixed point set for every pixel (kernels/mc.cl, host/methods/samples.h).
 #include "methods/registry.h"
 #include "methods/samples.h"
+#include "methods/specialize.h"
+#include "photometry/lut.h"
 
 namespace lb::methods {
 
@@ -14,8 +16,18 @@ void registerMc(Registry& r)
         Param::integer("n", 24, 1, 1 << 20, Scale::Log, "number of points on the light", true),
         Param::choice("pattern", "poisson", {"poisson", "halton", "stratified", "random"}, "point set"),
         Param::integer("seed", 0, 0, 4294967295L, Scale::Linear, "seed of the point set (halton: 0 = unshifted)"),
+        Param::choice("lookup", "lut", {"lut", "exact"},
+                      "intensity lookup: trig-free table (photometry/lut.h) or the exact bilinear one"),
+        Param::choice("specialize", "auto", {"auto", "none"},
+                      "auto: smallest kernel for the scene (methods/specialize.h); none: the general one"),
     };
     f.defines = [](const MethodSpec&) { return std::string(); };
+    f.sceneDefines = [](const MethodSpec& s, const Scene& scene, const photometry::Table& t) {
+        return analyse(scene, t, s.str("lookup") == "lut", s.str("specialize") == "auto").defines();
+    };
+    f.lumBuffer = [](const MethodSpec& s, const photometry::Table& t) {
+        return s.str("lookup") == "lut" ? photometry::buildLut(t).packed : t.packed();
+    };
     f.setArgs = [](LaunchContext& c, int first) {
         int n = static_cast<int>(c.spec.integer("n"));
         auto st = samplePoints(c.spec.str("pattern"), n, static_cast<std::uint64_t>(c.spec.integer("seed")));

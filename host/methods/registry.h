@@ -64,6 +64,11 @@ struct Family {
     std::function<void(const MethodSpec&)> validate;
     // Structural -D options of the program (continuous values are arguments).
     std::function<std::string(const MethodSpec&)> defines;
+    // Optional: more defines chosen per scene and luminaire (methods/specialize.h).
+    std::function<std::string(const MethodSpec&, const Scene&, const photometry::Table&)> sceneDefines;
+    // Optional: the float buffer passed as `lum` (default: table.packed()), e.g.
+    // the trig-free table of photometry/lut.h for kernels built with -DLB_LUT.
+    std::function<std::vector<float>(const MethodSpec&, const photometry::Table&)> lumBuffer;
     // Sets the kernel's arguments from index `first` on (after P, lum, out, row0).
     std::function<void(LaunchContext&, int first)> setArgs;
     // After the timed runs: read extra buffers, fill stats / extraImages.

@@ -126,6 +126,7 @@ RenderResult render(ocl::Runtime& rt, const photometry::Table& table, const Scen
     }
 
     std::string options = fam.defines ? fam.defines(spec) : std::string();
+    if (fam.sceneDefines) options += fam.sceneDefines(spec, scene, table);
     if (dbl) options += " -DLB_DOUBLE";
     double b0 = rt.buildSeconds();
     LaunchContext ctx{rt, spec, scene, table, precision, rt.kernel(fam.file, fam.kernelName, options), {}, {}, {}, {}};
@@ -135,7 +136,7 @@ RenderResult render(ocl::Runtime& rt, const photometry::Table& table, const Scen
     const int res = scene.res;
     const size_t npx = static_cast<size_t>(res) * res;
     cl::Buffer P = ctx.realBuffer(scene.params());
-    auto lum = table.packed();
+    auto lum = fam.lumBuffer ? fam.lumBuffer(spec, table) : table.packed();
     cl::Buffer L(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, lum.size() * sizeof(float), lum.data());
     ctx.buffers.push_back(L);
     cl::Buffer out = ctx.outputReals(npx);

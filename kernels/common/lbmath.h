@@ -3,6 +3,7 @@
 #include "vec.h"
 #include "spherical.h"
 #include "polygon.h"
+#include "lut.h"
 #include "photometry.h"
 #include "scene.h"
 #include "dynamic.h"

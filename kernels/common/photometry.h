@@ -63,8 +63,22 @@ LB_FN real lb_c_deg(real3 d)
     return c < R(0) ? c + R(360) : c;
 }
 
-/* Intensity (cd) emitted in direction d, d in the luminaire frame. */
+/* Intensity (cd) emitted in direction d, d in the luminaire frame. The one
+ * switch between lookups: a kernel built with -DLB_LUT takes the packed
+ * trig-free table of lut.h as `lum` instead (the reference never does). */
 LB_FN real lb_intensity_local(__global const float* lum, real3 d)
 {
+#ifdef LB_LUT
+    return lb_lut_intensity(lum, d);
+#else
     return lb_intensity_cg(lum, lb_c_deg(d), lb_gamma_deg(d));
+#endif
 }
+
+/* The same from scalar components, for scalar hot loops (no float3 there, so
+ * that the loop vectoriser can take them). */
+#ifdef LB_LUT
+#define LB_INTENSITY3(lum, x, y, z) lb_lut_intensity3((lum), (x), (y), (z))
+#else
+#define LB_INTENSITY3(lum, x, y, z) lb_intensity_local((lum), R3((x), (y), (z)))
+#endif

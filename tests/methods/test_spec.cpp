@@ -29,7 +29,7 @@ TEST(Spec, DefaultsAndValues)
     EXPECT_EQ(s.str("pattern"), "halton");
     EXPECT_EQ(s.integer("seed"), 0);  // default filled in
     EXPECT_EQ(s.given.size(), 2u);
-    EXPECT_EQ(s.canonical(), "mc:n=40,pattern=halton,seed=0");
+    EXPECT_EQ(s.canonical(), "mc:lookup=lut,n=40,pattern=halton,seed=0,specialize=auto");
     EXPECT_EQ(s.paramsJson()["n"], 40);
     EXPECT_EQ(parseSpec("reference").num("tol"), 1e-5);
     EXPECT_EQ(parseSpec("point:").name, "point");

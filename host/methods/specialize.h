@@ -1,0 +1,48 @@
+// specialize.h -- "leave out what a given scene does not need" (issue 9): the
+// host analyses one scene and luminaire and picks the smallest kernel variant.
+//
+// Rules (each one only drops work whose result is known to be 0 or the
+// identity, so the specialised kernel equals the general one up to rounding;
+// tests/methods/test_specialize.cpp checks <= 1e-6 relative):
+//   noHorizon  every light corner lies strictly above the receiver plane of
+//              every image pixel (n_x . (p - x) > 0 at the 4 light corners x
+//              the 4 image corners; both are linear, so the extremes are
+//              there): the light is convex, so every sample has a positive
+//              receiver cosine and the clip / max(0, cos) path goes.
+//   noBack     the luminaire emits nothing at gamma >= 90 deg: a pixel on or
+//              behind the light's plane receives nothing; mc.cl skips the loop
+//              of every work-group whose whole tile lies there (group-uniform,
+//              because of its per-sample barrier).
+//   lut1d      (with the LUT) every C plane is equal: 1D table over gamma,
+//              no azimuth computation.
+//   fan        (cubature) triangulation=fan: no flip machinery (already a
+//              structural define of cubature.cl, LB_CUB_TRI=0).
+#pragma once
+
+#include "photometry/table.h"
+#include "scene/scene.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace lb::methods {
+
+struct Specialization {
+    bool lut = false;        // LB_LUT: trig-free table (common/lut.h)
+    bool lut1d = false;      // LB_LUT_1D
+    bool noHorizon = false;  // LB_NO_HORIZON
+    bool noBack = false;     // LB_NO_BACK
+
+    std::string defines() const;  // " -DLB_LUT ..." (leading space when not empty)
+    nlohmann::json json() const;
+};
+
+// The analysis above; `lut` says whether the trig-free table is wanted, and
+// `specialize` = false gives the general kernel (only the lookup choice).
+Specialization analyse(const Scene& scene, const photometry::Table& table, bool lut, bool specialize = true);
+
+// Whether every light corner is above the receiver of every pixel.
+bool lightAboveEveryHorizon(const Scene& scene);
+
+} // namespace lb::methods

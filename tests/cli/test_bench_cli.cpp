@@ -1,0 +1,56 @@
+// lumibench bench: a small smoke run (the goals themselves are measured by
+// hand at 512^2 and recorded in README "Performance", not asserted here).
+#include "testutil.h"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <memory>
+
+namespace lb {
+namespace {
+
+std::pair<int, std::string> runBench(const std::string& args)
+{
+    std::string cmd = test::binary() + " bench " + args + " 2>/dev/null";
+    std::unique_ptr<FILE, int (*)(FILE*)> p(popen(cmd.c_str(), "r"), pclose);
+    std::string out;
+    std::array<char, 4096> buf;
+    size_t n;
+    while ((n = fread(buf.data(), 1, buf.size(), p.get())) > 0) out.append(buf.data(), n);
+    int st = pclose(p.release());
+    return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
+}
+
+TEST(BenchCli, QuickJsonRun)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    auto [code, out] = runBench("--res 24 --quick --json --rounds 1 --reps 1 --samples 4 --luminaire downlight");
+    ASSERT_EQ(code, 0) << out;
+    auto j = nlohmann::json::parse(out);
+    for (const char* k : {"device", "driver", "res", "mc", "methods", "mc_fit", "cubature", "specialization", "lut"})
+        EXPECT_TRUE(j.contains(k)) << k;
+    EXPECT_EQ(j["res"], 24);
+    // downlight.ldt is rotational and emits nothing backwards: all rules fire.
+    EXPECT_EQ(j["specialization"]["lut1d"], true);
+    EXPECT_EQ(j["specialization"]["no_back"], true);
+    EXPECT_GT(j["mc"]["naive_sps"].get<double>(), 0);
+    EXPECT_GT(j["mc"]["fast_sps"].get<double>(), 0);
+    EXPECT_NEAR(j["mc"]["ratio"].get<double>(),
+                j["mc"]["naive_ms"].get<double>() / j["mc"]["fast_ms"].get<double>(), 1e-9);
+    EXPECT_GE(j["cubature"]["equal_time_n"].get<int>(), 1);
+    EXPECT_GE(j["methods"].size(), 6u);
+}
+
+TEST(BenchCli, BadOptionsExitTwo)
+{
+    EXPECT_EQ(runBench("--local 8 --res 8").first, 2);
+    EXPECT_EQ(runBench("--res 0").first, 2);
+    EXPECT_EQ(runBench("--rounds 0").first, 2);
+}
+
+} // namespace
+} // namespace lb

@@ -1,0 +1,139 @@
+// Scene specialisation (methods/specialize.h): the analysis rules, and every
+// specialised MC kernel against the general one (<= 1e-6 relative per pixel),
+// float and double.
+#include "methods/analytic.h"
+#include "methods/render.h"
+#include "methods/specialize.h"
+#include "photometry/load.h"
+#include "photometry/lut.h"
+#include "testutil.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace lb::methods {
+namespace {
+
+Scene scene(double h, double rot, int res = 40)
+{
+    Scene s;
+    s.height = h;
+    s.rotation = rot;
+    s.res = res;
+    return s;
+}
+
+// A rotational luminaire emitting only forward (cos^3 lobe): every rule fires.
+photometry::Table frontLobe()
+{
+    return photometry::tabulate(
+        [](double, double g) { return g < 90 ? 500 * std::pow(std::cos(g * M_PI / 180), 3) : 0.0; }, 2, 91);
+}
+// An asymmetric luminaire emitting into both hemispheres: only noHorizon.
+photometry::Table asymmetric()
+{
+    return photometry::tabulate(
+        [](double c, double g) { return 100 + 80 * std::cos(c * M_PI / 180) * std::sin(g * M_PI / 180) + g; }, 25,
+        37);
+}
+
+TEST(Specialize, AnalysisRules)
+{
+    auto a = analyse(scene(1.0, 3 * M_PI / 4), frontLobe(), true);
+    EXPECT_TRUE(a.lut && a.lut1d && a.noHorizon && a.noBack);
+    EXPECT_EQ(a.defines(), " -DLB_LUT -DLB_LUT_1D -DLB_NO_HORIZON -DLB_NO_BACK");
+    auto b = analyse(scene(1.0, M_PI), asymmetric(), true);
+    EXPECT_TRUE(b.noHorizon);
+    EXPECT_FALSE(b.lut1d || b.noBack);
+    // h = 0 at R = pi/2: the lower edge touches the receiver plane, so the
+    // light is not strictly above every horizon.
+    EXPECT_FALSE(lightAboveEveryHorizon(scene(0.0, M_PI / 2)));
+    EXPECT_TRUE(lightAboveEveryHorizon(scene(0.01, M_PI / 2)));
+    // specialize = false: the general kernel, only the lookup choice.
+    EXPECT_EQ(analyse(scene(1.0, 3 * M_PI / 4), frontLobe(), true, false).defines(), " -DLB_LUT");
+    EXPECT_EQ(analyse(scene(1.0, 3 * M_PI / 4), frontLobe(), false, false).defines(), "");
+}
+
+// Renders `spec` with and without specialisation; per-pixel relative 1e-6.
+// The kernels differ only by dropped work whose result is 0 (pixels behind a
+// front-only light, max(0, cos) of positive cosines) or the identity (a 1D
+// table read instead of two equal columns mixed), so they agree to a few ulp;
+// 1e-6 is ~8 float ulp.
+void expectSame(ocl::Runtime& rt, const photometry::Table& t, const Scene& s, const std::string& spec, Precision p,
+                const std::string& expectDefines)
+{
+    RenderOptions opt;
+    opt.reps = 1;
+    ASSERT_EQ(analyse(s, t, spec.find("lookup=exact") == std::string::npos).defines(), expectDefines);
+    auto gen = render(rt, t, s, parseSpec(spec + ",specialize=none"), p, opt);
+    auto sp = render(rt, t, s, parseSpec(spec), p, opt);
+    double peak = 0;
+    for (double v : gen.image.px) peak = std::max(peak, std::fabs(v));
+    ASSERT_GT(peak, 0);
+    int nonzero = 0;
+    for (size_t i = 0; i < gen.image.px.size(); ++i) {
+        double a = gen.image.px[i], b = sp.image.px[i];
+        // Floor 1e-12 of the peak for pixels that are 0 in both.
+        ASSERT_LE(std::fabs(a - b), 1e-6 * std::max(std::fabs(a), 1e-12 * peak)) << spec << " pixel " << i;
+        nonzero += a != 0;
+    }
+    EXPECT_GT(nonzero, 0);
+}
+
+TEST(Specialize, SpecialisedMcEqualsGeneral)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    auto front = frontLobe();
+    auto asym = asymmetric();
+    // R = pi/2: half the image lies behind the light's plane (noBack matters).
+    for (auto p : {Precision::Float, Precision::Double}) {
+        if (p == Precision::Double && !rt->fp64()) continue;
+        expectSame(*rt, front, scene(0.1, M_PI / 2), "mc:n=16", p, " -DLB_LUT -DLB_LUT_1D -DLB_NO_HORIZON -DLB_NO_BACK");
+        expectSame(*rt, asym, scene(1.0, 5 * M_PI / 8), "mc:n=16", p, " -DLB_LUT -DLB_NO_HORIZON");
+    }
+    expectSame(*rt, front, scene(0.1, M_PI / 2), "mc:n=16,lookup=exact", Precision::Float,
+               " -DLB_NO_HORIZON -DLB_NO_BACK");
+}
+
+TEST(Specialize, BackPixelsAreZeroForFrontOnlyLight)
+{
+    // The rule's premise, checked on the exact general kernel: at R = pi/2
+    // the light's plane is y = 0 and n_L = (0, 1, 0), so every pixel with
+    // y < 0 (bottom half, rows >= res/2) gets nothing from a front-only lobe.
+    LB_REQUIRE_RUNTIME(rt);
+    RenderOptions opt;
+    opt.reps = 1;
+    Scene s = scene(0.1, M_PI / 2);
+    auto r = render(*rt, frontLobe(), s, parseSpec("mc:n=16,lookup=exact,specialize=none"), Precision::Float, opt);
+    for (int row = s.res / 2; row < s.res; ++row)
+        for (int col = 0; col < s.res; ++col) ASSERT_EQ(r.image.px[row * s.res + col], 0.0) << row << "," << col;
+    EXPECT_GT(r.image.px[(s.res / 4) * s.res + s.res / 2], 0.0);
+}
+
+TEST(Specialize, LutMcCloseToExactMc)
+{
+    // The LUT's lookup error (tests/photometry/test_lut.cpp) carried into an
+    // image. E = (1/N) sum I_i g_i with g_i >= 0, so |dE| <= eps (1/N) sum g_i
+    // <= (eps / I_min) E per pixel, eps = the LUT's error bound (cd) and I_min
+    // the smallest intensity (here >= 100 - 80 = 20 cd); 1e-5 for float
+    // rounding of the two kernels.
+    LB_REQUIRE_RUNTIME(rt);
+    RenderOptions opt;
+    opt.reps = 1;
+    auto t = asymmetric();
+    auto lut = photometry::buildLut(t);
+    Scene s = scene(1.0, 3 * M_PI / 4);
+    auto a = render(*rt, t, s, parseSpec("mc:n=16,lookup=exact"), Precision::Float, opt);
+    auto b = render(*rt, t, s, parseSpec("mc:n=16"), Precision::Float, opt);
+    double worst = 0;
+    for (size_t i = 0; i < a.image.px.size(); ++i) {
+        ASSERT_GT(a.image.px[i], 0);
+        worst = std::max(worst, std::fabs(a.image.px[i] - b.image.px[i]) / a.image.px[i]);
+    }
+    EXPECT_LE(worst, lut.errorBound / 20 + 1e-5);
+    EXPECT_GT(worst, 0) << "the LUT is really used";
+}
+
+} // namespace
+} // namespace lb::methods
