@@ -184,8 +184,8 @@ Experiment loadExperiment(const std::string& path, const Overrides& ov)
         if (!x.is_string() && !x.is_number()) r.fail("rotations", fmt::format("expected radians or an expression like 3pi/4, found {}", x.dump()));
         try {
             e.rotations.push_back(cli::parseAngle(text));
-        } catch (const InputError& err) {
-            r.fail("rotations", err.what());
+        } catch (const InputError&) {
+            r.fail("rotations", fmt::format("expected radians or an expression like 3pi/4, found '{}'", text));
         }
         e.rotationText.push_back(text);
     }

@@ -24,35 +24,22 @@ namespace lb::experiments {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-LinearFit fitTime(const std::vector<std::pair<long, double>>& pts)
+long solveN(std::vector<std::pair<long, double>> pts, double targetMs)
 {
-    LinearFit f;
-    if (pts.empty()) return f;
-    double n = static_cast<double>(pts.size()), sx = 0, sy = 0, sxx = 0, sxy = 0;
-    for (auto [x, y] : pts) {
-        sx += x;
-        sy += y;
-        sxx += double(x) * x;
-        sxy += double(x) * y;
-    }
-    double den = n * sxx - sx * sx;
-    if (pts.size() >= 2 && den > 0) {
-        f.b = (n * sxy - sx * sy) / den;
-        f.a = (sy - f.b * sx) / n;
-    }
-    if (!(f.b > 0)) {  // timing noise flattened the line: proportional through the largest N
-        auto big = *std::max_element(pts.begin(), pts.end());
-        f.a = 0;
-        f.b = big.second / std::max(1L, big.first);
-    }
-    return f;
-}
-
-long solveN(const LinearFit& f, double targetMs)
-{
-    if (!(f.b > 0)) return 1;
-    double n = std::round((targetMs - f.a) / f.b);
-    return static_cast<long>(std::clamp(std::isfinite(n) ? n : 1.0, 1.0, double(1 << 20)));
+    std::sort(pts.begin(), pts.end());
+    auto clampN = [](double n) {
+        return static_cast<long>(std::clamp(std::isfinite(n) ? std::round(n) : 1.0, 1.0, double(1 << 20)));
+    };
+    if (pts.empty()) return 1;
+    if (pts.size() == 1) return clampN(double(pts[0].first) * targetMs / pts[0].second);  // t proportional to N
+    if (targetMs <= pts.front().second) return pts.front().first > 1 ? clampN(pts.front().first * targetMs / pts.front().second) : 1;
+    // The first segment whose end reaches the target, else the last one (extrapolated).
+    size_t i = 1;
+    while (i + 1 < pts.size() && pts[i].second < targetMs) ++i;
+    auto [n0, t0] = pts[i - 1];
+    auto [n1, t1] = pts[i];
+    if (!(t1 > t0)) return clampN(targetMs <= t1 ? double(n1) : double(n1) * targetMs / t1);  // flat by noise
+    return clampN(double(n0) + (targetMs - t0) * double(n1 - n0) / (t1 - t0));
 }
 
 namespace {
@@ -267,7 +254,7 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
                 json pa = s.paramsJson(), pb = base.paramsJson();
                 pa.erase("n");
                 pb.erase("n");
-                if (pa == pb && s.integer("n") >= 8) curve.emplace_back(s.integer("n"), ms);
+                if (pa == pb) curve.emplace_back(s.integer("n"), ms);
             }
         };
         for (size_t i = 0; i < cells.size(); ++i)
@@ -300,21 +287,17 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
                     return methods::parseSpec(e.mc + (e.mc.find(':') == std::string::npos ? ":" : ",") + "n=" +
                                               std::to_string(n));
                 };
-                LinearFit fit = fitTime(pts);
-                long n1 = solveN(fit, tM);
+                long n1 = solveN(pts, tM);
                 auto s1 = mcAt(n1);
                 auto r1 = sr.render(s1);
                 double off1 = std::abs(r1.timing.median_ms / tM - 1);
-                json fitJson = json::array();
-                for (auto [n, t] : pts) fitJson.push_back({n, t});
-                fitJson.push_back({n1, r1.timing.median_ms});
-                if (off1 > e.equalTimeTolerance) {  // refine once along the fitted slope
-                    long n2 = static_cast<long>(std::clamp(
-                        std::round(double(n1) + (tM - r1.timing.median_ms) / fit.b), 1.0, double(1 << 20)));
+                pts.emplace_back(n1, r1.timing.median_ms);
+                if (off1 > e.equalTimeTolerance) {  // refine once with the new point
+                    long n2 = solveN(pts, tM);
                     if (n2 != n1) {
                         auto s2 = mcAt(n2);
                         auto r2 = sr.render(s2);
-                        fitJson.push_back({n2, r2.timing.median_ms});
+                        pts.emplace_back(n2, r2.timing.median_ms);
                         if (std::abs(r2.timing.median_ms / tM - 1) < off1) {
                             n1 = n2;
                             s1 = s2;
@@ -322,6 +305,8 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
                         }
                     }
                 }
+                json fitJson = json::array();
+                for (auto [n, t] : pts) fitJson.push_back({n, t});
                 results::Record r = sr.record(s1, r1, c, "mci_eq_" + fileSafe(c.spec));
                 r.equal_time_to = target;
                 r.n = n1;

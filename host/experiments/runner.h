@@ -17,11 +17,12 @@
 // median), `equal_time_ratio` (their median / target), `equal_time_ok`
 // (|ratio - 1| <= tolerance) and `equal_time_fit` ([[N, median ms], ...]).
 //
-// Equal time (DESIGN section 6): t(N) of MC is fitted as a + b N by least
-// squares on the scene's MCI-curve points with N >= 8 (or, without a curve,
-// on renders at "equal_time_fit"), N_eq = (t_M - a) / b; MC is rendered at
-// N_eq and, when its median is off by more than the tolerance, once more at
-// N_eq + (t_M - t(N_eq)) / b; the closer of the two is kept.
+// Equal time (DESIGN section 6): t(N) of MC is measured on the scene's
+// MCI-curve points (or, without a curve, on renders at "equal_time_fit"),
+// N_eq solves t(N) = t_M on their piecewise-linear interpolation (solveN);
+// MC is rendered at N_eq and, when its median is off by more than the
+// tolerance, the measurement joins the points and N is solved and rendered
+// once more; the closer of the two is kept.
 #pragma once
 
 #include "experiments/experiment.h"
@@ -48,13 +49,12 @@ struct RunSummary {
 
 RunSummary run(const Experiment& e, const RunOptions& opt);
 
-// The equal-time solve on its own (tests): least-squares a + b N through the
-// points, then N = (target - a) / b clamped to [1, 2^20]. Falls back to
-// t = b N through the largest point when the fitted slope is not positive.
-struct LinearFit {
-    double a = 0, b = 0;
-};
-LinearFit fitTime(const std::vector<std::pair<long, double>>& points);
-long solveN(const LinearFit& f, double targetMs);
+// The equal-time solve on its own (tests): N with t(N) = targetMs on the
+// piecewise-linear interpolation of the measured (N, median ms) points,
+// sorted by N; below the smallest time 1, above the largest extrapolated
+// along the last two points; clamped to [1, 2^20]. Measured MC times are not
+// linear in N over 1..1024 on every device (PoCL: t(128) / t(8) = 31), so a
+// local interpolation beats one global line.
+long solveN(std::vector<std::pair<long, double>> points, double targetMs);
 
 } // namespace lb::experiments

@@ -172,22 +172,27 @@ TEST(Experiment, BadFilesNameFileAndKey)
 
 // ---------------------------------------------------------------- equal time
 
-TEST(EqualTime, FitAndSolveAreExactOnALine)
+TEST(EqualTime, SolveInterpolatesTheMeasuredTimes)
 {
-    // Points on t = 0.25 + 0.0125 N (binary fractions: exact in double), so
-    // the least-squares line is that line up to rounding (1e-12 relative).
-    std::vector<std::pair<long, double>> pts;
-    for (long n : {8, 32, 128, 512}) pts.emplace_back(n, 0.25 + 0.0125 * n);
-    auto f = experiments::fitTime(pts);
-    EXPECT_NEAR(f.a, 0.25, 1e-12);
-    EXPECT_NEAR(f.b, 0.0125, 1e-14);
-    EXPECT_EQ(experiments::solveN(f, 0.25 + 0.0125 * 40), 40);
-    EXPECT_EQ(experiments::solveN(f, 0.1), 1);  // faster than MC at N = 1: clamped
-    // A non-positive fitted slope (timing noise) falls back to t = b N through the largest N.
-    auto g = experiments::fitTime({{8, 2.0}, {128, 1.0}});
-    EXPECT_EQ(g.a, 0);
-    EXPECT_DOUBLE_EQ(g.b, 1.0 / 128);
-    EXPECT_EQ(experiments::solveN(g, 0.5), 64);
+    // Exact on a line t = 0.25 + 0.0125 N (binary fractions, so exact in
+    // double): any target between measured points gives its N exactly.
+    std::vector<std::pair<long, double>> line;
+    for (long n : {512, 8, 128, 32}) line.emplace_back(n, 0.25 + 0.0125 * n);  // unsorted on purpose
+    EXPECT_EQ(experiments::solveN(line, 0.25 + 0.0125 * 40), 40);
+    EXPECT_EQ(experiments::solveN(line, 0.25 + 0.0125 * 300), 300);
+    EXPECT_EQ(experiments::solveN(line, 0.25 + 0.0125 * 1000), 1000);  // extrapolated along the last segment
+    // Superlinear times as PoCL measures them (t(128) / t(8) = 31): local, not
+    // global. Between (8, 0.25) and (32, 1.25) the target 0.75 is N = 20.
+    std::vector<std::pair<long, double>> pocl{{1, 0.03125}, {8, 0.25}, {32, 1.25}, {128, 7.75}};
+    EXPECT_EQ(experiments::solveN(pocl, 0.75), 20);
+    EXPECT_EQ(experiments::solveN(pocl, 0.01), 1);  // faster than MC at N = 1: clamped
+    // Between (1, 1/32) and (8, 1/4): 0.140625 = 1/32 + 3.5 / 32 -> N = 4.5, rounded half away from zero to 5.
+    EXPECT_EQ(experiments::solveN(pocl, 0.140625), 5);
+    // A single point: t proportional to N.
+    EXPECT_EQ(experiments::solveN({{16, 2.0}}, 1.0), 8);
+    // Noise can make a segment flat; the solve stays finite and in range.
+    long n = experiments::solveN({{8, 1.0}, {16, 1.0}}, 3.0);
+    EXPECT_EQ(n, 48);
 }
 
 // ---------------------------------------------------------------- whole runs
@@ -264,11 +269,10 @@ TEST_F(ExperimentRun, RecordsAreSaneAndAnInterruptedRunResumes)
         EXPECT_EQ(r.error.nonfinite, 0) << r.key();
         EXPECT_GT(r.time_ms.median, 0) << r.key();
         EXPECT_GE(r.time_ms.reps, 5);  // DESIGN section 6: median of >= 5
-        // Every method is a real approximation here: its NMSE is positive and
-        // below 1 (the light is not tiny; point at h = 0.1 is the worst, ~0.5
-        // at most on these luminaires), so a swapped or empty image shows.
+        // Every method here is an approximation with some error: an NMSE of
+        // exactly 0 would mean the reference was compared with itself.
         EXPECT_GT(r.error.nmse, 0) << r.key();
-        EXPECT_LT(r.error.nmse, 1.0) << r.key();
+        EXPECT_TRUE(std::isfinite(r.error.nmse)) << r.key();
         if (r.equal_time_to) {
             EXPECT_EQ(r.method, "mc");
             ASSERT_TRUE(r.n.has_value());
@@ -279,6 +283,15 @@ TEST_F(ExperimentRun, RecordsAreSaneAndAnInterruptedRunResumes)
             eqOk += r.extra["equal_time_ok"].get<bool>();
         }
     }
+    // MC converges on every scene: with the same point set, N = 128 has an
+    // NMSE below N = 1's by much more than 10x (1/N would give 128x; 10x
+    // leaves a margin for the scene-dependent constant of a fixed point set,
+    // measured >= 190x here), so curve cells with swapped N or images fail.
+    std::map<std::string, std::map<long, double>> curveNmse;
+    for (auto& r : full.records)
+        if (r.method == "mc" && !r.equal_time_to) curveNmse[r.extra["scene"]][r.params["n"].get<long>()] = r.error.nmse;
+    ASSERT_EQ(curveNmse.size(), 12u);
+    for (auto& [scene, m] : curveNmse) EXPECT_LT(10 * m.at(128), m.at(1)) << scene;
     // Equal time is a measurement on a shared 2-core machine: most, not all,
     // partners land within 15 % (the runner warns about the others).
     RecordProperty("equal_time_ok", static_cast<int>(eqOk));
@@ -345,10 +358,10 @@ TEST_F(ExperimentRun, SmokeExperimentProducesResultsPlotsAndReport)
     if (sh("/usr/bin/python3 -c 'import matplotlib' 2>/dev/null") != 0 && !test::deviceRequired())
         GTEST_SKIP() << "/usr/bin/python3 has no matplotlib";
     fs::path out = dir / "smoke";
-    std::string exp = (fs::path(test::sourceDir()) / "experiments" / "smoke.json").string();
-    ASSERT_EQ(run("run '" + exp + "' --out " + out.string()), 0) << slurp(dir / "stderr.txt");
+    std::string smoke = (fs::path(test::sourceDir()) / "experiments" / "smoke.json").string();
+    ASSERT_EQ(run("run '" + smoke + "' --out " + out.string()), 0) << slurp(dir / "stderr.txt");
     auto doc = results::load((out / "results.json").string());
-    auto e = experiments::loadExperiment(exp);
+    auto e = experiments::loadExperiment(smoke);
     ASSERT_FALSE(doc.records.empty());
     size_t eq = 0;
     for (auto& r : doc.records) {
