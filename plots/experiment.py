@@ -65,6 +65,17 @@ def rot_label(rad):
     return "R={:.0f}°".format(math.degrees(rad))
 
 
+def on_curve(r, cell):
+    """An MCI-curve record, or a method record that is the same MC at some N
+    (the runner keeps one cell when a method equals a curve point)."""
+    if role(r) == "mci_curve":
+        return True
+    if role(r) != "method" or r["method"] != "mc":
+        return False
+    strip = lambda p: {k: v for k, v in p.items() if k != "n"}  # noqa: E731
+    return any(role(c) == "mci_curve" and strip(c["params"]) == strip(r["params"]) for c in cell)
+
+
 def nmse_time(records, out, dpi):
     """One figure per luminaire and precision; a panel per (height, rotation)."""
     by = collections.defaultdict(list)
@@ -82,8 +93,8 @@ def nmse_time(records, out, dpi):
             for j, rot in enumerate(rots):
                 ax = axes[i][j]
                 cell = [r for r in rs if r["height"] == h and r["rotation"] == rot]
-                curve = sorted((r["n"] if "n" in r else r["params"]["n"], r["time_ms"]["median"], r["nmse"])
-                               for r in cell if role(r) == "mci_curve" and finite(r["nmse"]) and r["nmse"] > 0)
+                curve = sorted((r["params"]["n"], r["time_ms"]["median"], r["nmse"])
+                               for r in cell if on_curve(r, cell) and finite(r["nmse"]) and r["nmse"] > 0)
                 if curve:
                     ax.plot([c[1] for c in curve], [c[2] for c in curve], "-", color="0.5", lw=1,
                             marker=".", ms=3, label="MCI N={}..{}".format(curve[0][0], curve[-1][0]))
@@ -113,9 +124,11 @@ def nmse_time(records, out, dpi):
                 if key not in handles:
                     handles[key] = hd
                     labels.append(key)
-        fig.legend([handles[k] for k in labels], labels, loc="lower center", ncol=min(6, len(labels)), fontsize=8)
+        ncol = max(1, min(len(labels), 2 * len(rots)))
+        rows = (len(labels) + ncol - 1) // ncol
+        fig.legend([handles[k] for k in labels], labels, loc="lower center", ncol=ncol, fontsize=7)
         fig.suptitle("{} ({}): NMSE against run time".format(stem(lum), prec))
-        fig.tight_layout(rect=(0, 0.06, 1, 0.97))
+        fig.tight_layout(rect=(0, min(0.4, 0.035 * rows / max(1, len(heights)) * 4), 1, 0.97))
         path = os.path.join(out, "nmse_time_{}_{}.png".format(safe(stem(lum)), prec))
         fig.savefig(path, dpi=dpi)
         plt.close(fig)
