@@ -10,10 +10,13 @@
 # OUT must be on a file system every node sees. Resubmitting the array after a
 # failure resumes: finished cells are skipped. LUMIBENCH overrides the program
 # (default build/lumibench, relative to the submit directory).
+#
+# The array size is given on the command line (--array=1-N), not here, so
+# that the merge job submitted with the same script is a single job; add
+# --cpus-per-task, --time, --partition as the cluster wants (PoCL then uses
+# SLURM_CPUS_PER_TASK threads). experiments/slurm-local.sh starts a one-node
+# Slurm for trying this (a test does: tests/experiments/test_runner.cpp).
 #SBATCH --job-name=lumibench
-#SBATCH --array=1-4
-#SBATCH --cpus-per-task=4
-#SBATCH --time=02:00:00
 #SBATCH --output=lumibench-%A_%a.out
 set -euo pipefail
 bin=${LUMIBENCH:-build/lumibench}

@@ -338,6 +338,39 @@ TEST_F(ExperimentRun, TwoShardsWithGnuParallelMergeToOneRun)
     EXPECT_NE(report.find("Plots not made"), std::string::npos);
 }
 
+// experiments/slurm-array.sh for real, on a throw-away one-node Slurm
+// (experiments/slurm-local.sh: munge, slurmctld, slurmd from Debian).
+TEST_F(ExperimentRun, SlurmJobArrayShardsMergeToOneRun)
+{
+    if (sh("command -v slurmctld >/dev/null && command -v slurmd >/dev/null && command -v munged >/dev/null && "
+           "command -v sbatch >/dev/null") != 0)
+        GTEST_SKIP() << "Slurm is not installed (apt-get install slurmctld slurmd slurm-client munge)";
+    ASSERT_EQ(run("run " + exp + " --out " + (dir / "one").string() + " --no-report"), 0) << slurp(dir / "stderr.txt");
+    const std::string src = test::sourceDir(), log = (dir / "stderr.txt").string();
+    const std::string slurm = (dir / "slurm").string(), out = (dir / "sl").string();
+    const std::string local = "'" + src + "/experiments/slurm-local.sh'", array = "'" + src + "/experiments/slurm-array.sh'";
+    int up = sh(local + " start '" + slurm + "' > '" + slurm + ".env' 2>>'" + log + "'");
+    if (up != 0) {
+        sh(local + " stop '" + slurm + "'");
+        if (up == 1 && !test::deviceRequired()) GTEST_SKIP() << "the local Slurm did not start: " << slurp(log);
+        FAIL() << "slurm-local.sh start: " << up << "\n" << slurp(log);
+    }
+    // Both array tasks, then the merge job; timeouts so a job that is never
+    // scheduled fails the test instead of hanging it.
+    std::string env = ". '" + slurm + ".env' && cd '" + dir.string() + "' && LUMIBENCH='" + test::binary() +
+                      "' LUMIBENCH_PYTHON=/nonexistent ";
+    int rcArray = sh(env + "timeout 300 sbatch --quiet --wait --array=1-2 --cpus-per-task=1 " + array + " run '" + exp +
+                     "' '" + out + "' --quiet >>'" + log + "' 2>&1");
+    int rcMerge = sh(env + "timeout 120 sbatch --quiet --wait " + array + " merge '" + out + "' 2 >>'" + log + "' 2>&1");
+    sh(local + " stop '" + slurm + "'");
+    ASSERT_EQ(rcArray, 0) << slurp(log);
+    ASSERT_EQ(rcMerge, 0) << slurp(log);
+    auto s1 = results::load(out + "/shard-1-of-2/results.json");
+    EXPECT_EQ(s1.context["shard"], "1/2");
+    EXPECT_EQ(s1.records.size(), 6u * 8u);
+    expectSameErrors(results::load((dir / "one" / "results.json").string()), results::load(out + "/results.json"));
+}
+
 TEST_F(ExperimentRun, BadExperimentExitsWithInputError)
 {
     json j = tinyExperiment();
