@@ -88,6 +88,8 @@ def nmse_time(records, out, dpi):
         fig, axes = plt.subplots(len(heights), len(rots), figsize=(2.8 * len(rots), 2.4 * len(heights)),
                                  squeeze=False, sharex=True, sharey=True)
         methods = sorted({label(r) for r in rs if role(r) == "method"})
+        ns = sorted({r["params"]["n"] for r in rs if on_curve(r, rs)})
+        curve_ns = "{}..{}".format(ns[0], ns[-1]) if ns else ""  # one legend entry for every panel
         colours = {m: "C{}".format(i % 10) for i, m in enumerate(methods)}
         for i, h in enumerate(heights):
             for j, rot in enumerate(rots):
@@ -97,7 +99,7 @@ def nmse_time(records, out, dpi):
                                for r in cell if on_curve(r, cell) and finite(r["nmse"]) and r["nmse"] > 0)
                 if curve:
                     ax.plot([c[1] for c in curve], [c[2] for c in curve], "-", color="0.5", lw=1,
-                            marker=".", ms=3, label="MCI N={}..{}".format(curve[0][0], curve[-1][0]))
+                            marker=".", ms=3, label="MCI curve (N = {})".format(curve_ns))
                 for r in cell:
                     if not (finite(r["nmse"]) and r["nmse"] > 0 and finite(r["time_ms"]["median"])):
                         continue
