@@ -10,6 +10,7 @@ PKGS=(
   libcli11-dev nlohmann-json3-dev libfmt-dev libpng-dev
   python3 python3-matplotlib python3-numpy
   parallel
+  slurmctld slurmd slurm-client munge
 )
 missing=()
 for p in "${PKGS[@]}"; do

@@ -1,13 +1,54 @@
-// lumibench merge (not implemented yet: see the open issues).
+// lumibench merge --out DIR IN... : merges the results of shards (directories
+// holding results.json, or results files) into DIR/results.json, then writes
+// DIR/report.md and DIR/plots/ (unless --no-report).
 #include "cli/commands.h"
+
+#include "experiments/report.h"
+#include "experiments/results.h"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <iostream>
 
 namespace lb::cli {
 
 void addMergeCommand(CLI::App& app)
 {
+    struct Opts {
+        std::vector<std::string> inputs;
+        std::string out;
+        bool noReport = false;
+    };
+    auto o = std::make_shared<Opts>();
     auto* cmd = app.add_subcommand("merge", "Merge result directories of shards into one");
-    cmd->allow_extras();
-    cmd->callback([] { notImplemented("merge"); });
+    cmd->add_option("inputs", o->inputs, "Result directories (with results.json) or results files")->required();
+    cmd->add_option("--out", o->out, "Output directory (DIR/results.json, report.md, plots/)")->required();
+    cmd->add_flag("--no-report", o->noReport, "Do not write report.md and plots");
+    cmd->callback([o] {
+        namespace fs = std::filesystem;
+        std::vector<std::string> files;
+        for (const auto& in : o->inputs)
+            files.push_back(fs::is_directory(in) ? (fs::path(in) / "results.json").string() : in);
+        results::MergeStats st;
+        auto doc = results::mergeResults(files, &st);
+        fs::create_directories(o->out);
+        results::save((fs::path(o->out) / "results.json").string(), doc);
+        // Saved pictures come along, so the merged report can show them.
+        for (const auto& in : o->inputs) {
+            fs::path img = fs::path(in) / "images";
+            if (fs::is_directory(in) && fs::is_directory(img) && fs::absolute(in) != fs::absolute(o->out))
+                fs::copy(img, fs::path(o->out) / "images",
+                         fs::copy_options::recursive | fs::copy_options::overwrite_existing);
+        }
+        std::cerr << fmt::format("merged {} files: {} records in, {} out ({} replaced) -> {}/results.json\n", st.files,
+                                 st.records_in, st.records_out, st.replaced, o->out);
+        if (!o->noReport) {
+            std::string note = experiments::makePlots(o->out);
+            if (!note.empty()) std::cerr << "lumibench: warning: plots not made: " << note << '\n';
+            experiments::writeReport(o->out, note);
+        }
+    });
 }
 
 } // namespace lb::cli

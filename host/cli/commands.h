@@ -14,6 +14,7 @@ void addRenderCommand(CLI::App& app);
 void addCompareCommand(CLI::App& app);
 void addRunCommand(CLI::App& app);
 void addMergeCommand(CLI::App& app);
+void addReportCommand(CLI::App& app);
 void addTuneCommand(CLI::App& app);
 void addStabilityCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);

@@ -28,6 +28,7 @@ int main(int argc, char** argv)
     lb::cli::addCompareCommand(app);
     lb::cli::addRunCommand(app);
     lb::cli::addMergeCommand(app);
+    lb::cli::addReportCommand(app);
     lb::cli::addTuneCommand(app);
     lb::cli::addStabilityCommand(app);
     lb::cli::addBenchCommand(app);

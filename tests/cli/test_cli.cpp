@@ -37,7 +37,8 @@ TEST(Cli, HelpListsEverySubcommand)
 
 TEST(Cli, EverySubcommandHasHelp)
 {
-    for (const char* c : {"devices", "luminaire", "luminaire info", "luminaire eval", "render", "compare"}) {
+    for (const char* c :
+         {"devices", "luminaire", "luminaire info", "luminaire eval", "render", "compare", "run", "merge", "report"}) {
         auto r = run(std::string(c) + " --help");
         EXPECT_EQ(r.code, 0) << c << "\n" << r.out;
         EXPECT_NE(r.out.find("Usage"), std::string::npos) << c << "\n" << r.out;

@@ -1,0 +1,87 @@
+// experiment.h -- declarative experiments (issue 6): experiments/*.json.
+//
+//   {"name": "smoke",
+//    "luminaire_dir": "luminaires",          // relative to the source tree (or absolute)
+//    "luminaires": ["lambert.ldt", "spot.ldt"],   // or "*" for every .ldt/.ies there
+//    "heights": [0.1, 1.1], "rotations": ["pi/2", "3pi/4"],
+//    "methods": ["point", "mc:n=8", "cubature"],
+//    "equal_time": ["cubature"],             // methods that get an MCI partner at equal time
+//    "mci_curve": [1, 2, 4, ..., 1024],      // MC at these N on every scene (NMSE-time curve)
+//    "mc": "mc",                             // the MC SPEC used for the curve and equal time
+//    "equal_time_fit": [8, 32, 128],         // N to fit t(N) on when mci_curve is empty
+//    "reference": "reference",               // the reference SPEC
+//    "res": 64, "precision": ["float"], "size": [1, 1], "extent": 5,
+//    "reps": 5, "equal_time_tolerance": 0.15, "save_images": true}
+//
+// A scene is (luminaire, height, rotation, precision); its cells are the
+// methods, the MCI curve points and the equal-time partners, in that order.
+// Scenes are enumerated luminaire-major, then height, rotation, precision, in
+// the order of the file (luminaires from a directory sorted by name), so the
+// order, and with it the shard assignment, is deterministic.
+#pragma once
+
+#include "methods/registry.h"
+#include "scene/scene.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace lb::experiments {
+
+struct Experiment {
+    std::string path;  // the file it came from
+    std::string name;
+    std::string luminaireDir;
+    std::vector<std::string> luminaires;  // file paths (resolved)
+    std::vector<double> heights, rotations;
+    std::vector<std::string> rotationText;  // as written (labels)
+    std::vector<std::string> methods;       // SPEC strings
+    std::vector<std::string> equalTime;     // subset of methods
+    std::vector<long> mciCurve, equalTimeFit;
+    std::string mc = "mc", reference = "reference";
+    int res = 64;
+    std::vector<std::string> precisions{"float"};
+    double width = 1, length = 1, extent = 5;
+    int reps = 5;
+    double equalTimeTolerance = 0.15;
+    bool saveImages = false;
+    nlohmann::json raw;  // the file as read
+};
+
+// Command-line overrides applied after reading the file.
+struct Overrides {
+    std::string luminaireDir;  // --luminaires DIR: every .ldt/.ies file in DIR
+    int res = 0;               // --res N
+    int reps = 0;              // --reps K
+};
+
+// Reads and checks an experiment file. Throws lb::InputError naming the file
+// and the key for anything missing, mistyped or out of range; method SPECs are
+// parsed against the registry (an unknown method lists the valid ones).
+Experiment loadExperiment(const std::string& path, const Overrides& ov = {});
+
+struct SceneId {
+    std::string luminaire;  // path as resolved
+    double height = 0, rotation = 0;
+    std::string rotationText;
+    std::string precision;
+    int res = 0;
+    double width = 1, length = 1, extent = 5;
+    size_t index = 0;  // position in the enumeration (shard assignment)
+    Scene scene() const;
+    std::string label() const;  // short, file-name safe: "lambert_h0.1_r3pi-4_float"
+};
+
+// Every scene of the experiment in the deterministic order described above,
+// with `size` and `extent` from the experiment.
+std::vector<SceneId> scenes(const Experiment& e);
+
+// Shard K of N (1-based): the scenes with index % N == K - 1. A whole scene
+// (its reference, methods and equal-time partners) stays on one shard.
+bool inShard(const SceneId& s, int k, int n);
+// Parses "K/N" (1 <= K <= N); InputError otherwise.
+void parseShard(const std::string& text, int& k, int& n);
+
+} // namespace lb::experiments

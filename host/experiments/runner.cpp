@@ -1,0 +1,346 @@
+#include "experiments/runner.h"
+
+#include "experiments/results.h"
+#include "methods/analytic.h"
+#include "methods/render.h"
+#include "metrics/metrics.h"
+#include "metrics/png.h"
+#include "metrics/tonemap.h"
+#include "util/error.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <set>
+
+namespace lb::experiments {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+long solveN(std::vector<std::pair<long, double>> pts, double targetMs)
+{
+    std::sort(pts.begin(), pts.end());
+    auto clampN = [](double n) {
+        return static_cast<long>(std::clamp(std::isfinite(n) ? std::round(n) : 1.0, 1.0, double(1 << 20)));
+    };
+    if (pts.empty()) return 1;
+    if (pts.size() == 1) return clampN(double(pts[0].first) * targetMs / pts[0].second);  // t proportional to N
+    if (targetMs <= pts.front().second) return pts.front().first > 1 ? clampN(pts.front().first * targetMs / pts.front().second) : 1;
+    // The first segment whose end reaches the target, else the last one (extrapolated).
+    size_t i = 1;
+    while (i + 1 < pts.size() && pts[i].second < targetMs) ++i;
+    auto [n0, t0] = pts[i - 1];
+    auto [n1, t1] = pts[i];
+    if (!(t1 > t0)) return clampN(targetMs <= t1 ? double(n1) : double(n1) * targetMs / t1);  // flat by noise
+    return clampN(double(n0) + (targetMs - t0) * double(n1 - n0) / (t1 - t0));
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// One cell of a scene: a method (as written), an MCI-curve point, or the
+// equal-time partner of a method.
+struct Cell {
+    std::string role;  // "method" | "mci_curve" | "equal_time"
+    std::string spec;  // the SPEC rendered ("method", "mci_curve") or matched ("equal_time")
+    methods::MethodSpec parsed;
+};
+
+std::vector<Cell> cellsOf(const Experiment& e)
+{
+    std::vector<Cell> cells;
+    std::set<std::string> seen;  // canonical SPECs: "mc:n=8" and the curve's N = 8 are one cell
+    auto add = [&](const std::string& role, const std::string& spec) {
+        methods::MethodSpec p = methods::parseSpec(spec);
+        if (!seen.insert(p.canonical()).second) return;
+        cells.push_back({role, spec, p});
+    };
+    for (const auto& m : e.methods) add("method", m);
+    std::string mcBase = e.mc.find(':') == std::string::npos ? e.mc + ":" : e.mc + ",";
+    for (long n : e.mciCurve) add("mci_curve", mcBase + "n=" + std::to_string(n));
+    for (const auto& m : e.equalTime) cells.push_back({"equal_time", m, methods::parseSpec(m)});
+    return cells;
+}
+
+std::string fileSafe(const std::string& s)
+{
+    std::string out;
+    for (char c : s) out += (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-') ? c : '_';
+    return out;
+}
+
+std::string hms(double s)
+{
+    if (!std::isfinite(s) || s < 0) return "?";
+    long t = std::lround(s);
+    return t >= 3600 ? fmt::format("{}:{:02d}:{:02d}", t / 3600, (t / 60) % 60, t % 60)
+                     : fmt::format("{}:{:02d}", t / 60, t % 60);
+}
+
+// The scene's part of a record.
+results::Record baseRecord(const SceneId& sid, ocl::Runtime& rt)
+{
+    results::Record r;
+    r.luminaire = fs::path(sid.luminaire).filename().string();
+    r.height = sid.height;
+    r.rotation = sid.rotation;
+    r.res = sid.res;
+    r.precision = sid.precision;
+    r.device = rt.info().name;
+    r.driver = rt.info().driver;
+    r.extra["scene"] = sid.label();
+    return r;
+}
+
+struct SceneRun {
+    const Experiment& e;
+    const SceneId& sid;
+    ocl::Runtime& rt;
+    const photometry::Table& table;
+    const RunOptions& opt;
+    const std::string& resultsPath;
+    const json& context;
+    Scene scene;
+    methods::Precision prec;
+    Image ref;
+    std::string imageDir;
+
+    results::Record base() const { return baseRecord(sid, rt); }
+
+    methods::RenderResult render(const methods::MethodSpec& spec) const
+    {
+        methods::RenderOptions ro;
+        ro.reps = e.reps;
+        return methods::render(rt, table, scene, spec, prec, ro);
+    }
+
+    results::Record record(const methods::MethodSpec& spec, const methods::RenderResult& rr, const Cell& cell,
+                           const std::string& cellName) const
+    {
+        results::Record r = base();
+        r.method = spec.name;
+        r.params = spec.paramsJson();
+        r.time_ms = {rr.timing.median_ms, rr.timing.min_ms, rr.timing.reps};
+        r.error = metrics::compare(ref, rr.image);
+        r.extra["spec"] = cell.role == "equal_time" ? "mc:n=" + std::to_string(spec.integer("n")) : cell.spec;
+        r.extra["role"] = cell.role;
+        r.extra["build_s"] = rr.buildSeconds;
+        if (!rr.stats.empty()) r.extra["stats"] = rr.stats;
+        if (!imageDir.empty()) saveImages(cellName, rr.image, r.error);
+        return r;
+    }
+
+    // <cell>.exr and the PNG triple of `lumibench compare --png`, one k per scene.
+    void saveImages(const std::string& name, const Image& img, const metrics::Metrics& m) const
+    {
+        std::string p = (fs::path(imageDir) / name).string();
+        writeExr(p + ".exr", img);
+        double k = tonemap::defaultK(ref);
+        double over = std::isfinite(m.ueb) ? m.ueb : 0.0, under = std::isfinite(m.leb) ? -m.leb : 0.0;
+        writePng(p + "_ref.png", tonemap::tonemapPicture(ref, k));
+        writePng(p + "_test.png", tonemap::tonemapPicture(img, k));
+        writePng(p + "_err.png", tonemap::errorPicture(ref, img, over, under));
+        json j = m;
+        j["k"] = k;
+        std::ofstream(p + ".json") << j.dump() << '\n';
+    }
+};
+
+} // namespace
+
+RunSummary run(const Experiment& e, const RunOptions& opt)
+{
+    RunSummary sum;
+    auto t0 = Clock::now();
+    fs::create_directories(opt.outDir);
+    const std::string resultsPath = (fs::path(opt.outDir) / "results.json").string();
+
+    ocl::Runtime rt(opt.device);
+    json context = results::makeContext(
+        rt.info().name, rt.info().driver,
+        {{"platform", rt.info().platform},
+         {"experiment", e.name},
+         {"experiment_file", e.path},
+         {"experiment_spec", e.raw},
+         {"luminaire_dir", e.luminaireDir},
+         {"res", e.res},
+         {"reps", e.reps},
+         {"shard", fmt::format("{}/{}", opt.shardK, opt.shardN)}});
+
+    // Resume: the cells already written. Method and curve cells match by cell
+    // key; an equal-time partner (whose N was chosen at run time) by scene,
+    // device and the SPEC it matches.
+    std::set<std::string> doneKeys;
+    std::map<std::string, double> doneTimes;  // key -> median ms (equal-time targets)
+    if (fs::exists(resultsPath)) {
+        for (const auto& r : results::load(resultsPath).records) {
+            doneKeys.insert(r.key());
+            doneTimes[r.key()] = r.time_ms.median;
+            if (r.equal_time_to) {
+                results::Record k = r;
+                k.method = "equal_time";
+                k.params = json::object();
+                doneKeys.insert(k.key());
+            }
+        }
+    }
+
+    std::vector<Cell> cells = cellsOf(e);
+    std::vector<SceneId> mine;
+    for (const auto& s : scenes(e))
+        if (inShard(s, opt.shardK, opt.shardN)) mine.push_back(s);
+    sum.scenes = mine.size();
+    sum.cells = mine.size() * cells.size();
+
+    std::map<std::string, photometry::Table> tables;
+    const methods::MethodSpec refSpec = methods::parseSpec(e.reference);
+    size_t cellsSeen = 0;
+    double computeSeconds = 0;
+
+    for (size_t si = 0; si < mine.size(); ++si) {
+        const SceneId& sid = mine[si];
+
+        // Keys of this scene's cells, to skip the scene without a reference render.
+        auto keyOf = [&](const Cell& c) {
+            results::Record r = baseRecord(sid, rt);
+            if (c.role == "equal_time") {
+                r.method = "equal_time";
+                r.params = json::object();
+                r.equal_time_to = c.parsed.canonical();
+            } else {
+                r.method = c.parsed.name;
+                r.params = c.parsed.paramsJson();
+            }
+            return r.key();
+        };
+        std::vector<bool> todo(cells.size());
+        size_t ntodo = 0;
+        for (size_t i = 0; i < cells.size(); ++i) ntodo += (todo[i] = !doneKeys.count(keyOf(cells[i])));
+        sum.skipped += cells.size() - ntodo;
+        cellsSeen += cells.size() - ntodo;
+        if (ntodo == 0) continue;
+
+        if (!tables.count(sid.luminaire)) tables.emplace(sid.luminaire, methods::loadLuminaire(sid.luminaire));
+        const photometry::Table& table = tables.at(sid.luminaire);
+        SceneRun sr{e, sid, rt, table, opt, resultsPath, context, sid.scene(), methods::parsePrecision(sid.precision),
+                    {}, {}};
+        if (e.saveImages) {
+            sr.imageDir = (fs::path(opt.outDir) / "images" / sid.label()).string();
+            fs::create_directories(sr.imageDir);
+        }
+        {
+            methods::RenderOptions ro;
+            ro.reps = 1;
+            sr.ref = methods::render(rt, table, sr.scene, refSpec, sr.prec, ro).image;
+            if (!sr.imageDir.empty()) writeExr((fs::path(sr.imageDir) / "reference.exr").string(), sr.ref);
+        }
+
+        // Medians of this scene's cells (this run or an earlier one), by canonical SPEC.
+        std::map<std::string, double> times;
+        std::vector<std::pair<long, double>> curve;
+        auto remember = [&](const methods::MethodSpec& s, double ms) {
+            times[s.canonical()] = ms;
+            if (s.name == "mc" && s.given.count("n")) {
+                // Only curve points of the experiment's MC pattern enter the fit.
+                methods::MethodSpec base = methods::parseSpec(e.mc);
+                json pa = s.paramsJson(), pb = base.paramsJson();
+                pa.erase("n");
+                pb.erase("n");
+                if (pa == pb) curve.emplace_back(s.integer("n"), ms);
+            }
+        };
+        for (size_t i = 0; i < cells.size(); ++i)
+            if (cells[i].role != "equal_time" && !todo[i]) remember(cells[i].parsed, doneTimes[keyOf(cells[i])]);
+
+        for (size_t i = 0; i < cells.size(); ++i) {
+            if (!todo[i]) continue;
+            const Cell& c = cells[i];
+            auto tc = Clock::now();
+            if (c.role != "equal_time") {
+                auto rr = sr.render(c.parsed);
+                remember(c.parsed, rr.timing.median_ms);
+                results::appendRecord(resultsPath, context, sr.record(c.parsed, rr, c, fileSafe(c.spec)));
+            } else {
+                // Equal-time MCI partner of c.spec (DESIGN section 6).
+                const std::string target = c.parsed.canonical();
+                if (!times.count(target))
+                    throw Error(fmt::format("equal time: no time of '{}' at scene {}", c.spec, sid.label()));
+                const double tM = times[target];
+                std::vector<std::pair<long, double>> pts = curve;
+                if (pts.size() < 2) {
+                    pts.clear();
+                    for (long n : e.equalTimeFit) {
+                        auto s = methods::parseSpec(e.mc + (e.mc.find(':') == std::string::npos ? ":" : ",") +
+                                                    "n=" + std::to_string(n));
+                        pts.emplace_back(n, sr.render(s).timing.median_ms);
+                    }
+                }
+                auto mcAt = [&](long n) {
+                    return methods::parseSpec(e.mc + (e.mc.find(':') == std::string::npos ? ":" : ",") + "n=" +
+                                              std::to_string(n));
+                };
+                long n1 = solveN(pts, tM);
+                auto s1 = mcAt(n1);
+                auto r1 = sr.render(s1);
+                double off1 = std::abs(r1.timing.median_ms / tM - 1);
+                pts.emplace_back(n1, r1.timing.median_ms);
+                if (off1 > e.equalTimeTolerance) {  // refine once with the new point
+                    long n2 = solveN(pts, tM);
+                    if (n2 != n1) {
+                        auto s2 = mcAt(n2);
+                        auto r2 = sr.render(s2);
+                        pts.emplace_back(n2, r2.timing.median_ms);
+                        if (std::abs(r2.timing.median_ms / tM - 1) < off1) {
+                            n1 = n2;
+                            s1 = s2;
+                            r1 = std::move(r2);
+                        }
+                    }
+                }
+                json fitJson = json::array();
+                for (auto [n, t] : pts) fitJson.push_back({n, t});
+                results::Record r = sr.record(s1, r1, c, "mci_eq_" + fileSafe(c.spec));
+                r.equal_time_to = target;
+                r.n = n1;
+                double ratio = r1.timing.median_ms / tM;
+                r.extra["equal_time_label"] = c.spec;
+                r.extra["equal_time_target_ms"] = tM;
+                r.extra["equal_time_ratio"] = ratio;
+                r.extra["equal_time_ok"] = std::abs(ratio - 1) <= e.equalTimeTolerance;
+                r.extra["equal_time_fit"] = fitJson;
+                if (std::abs(ratio - 1) > e.equalTimeTolerance) {
+                    ++sum.equalTimeOff;
+                    std::cerr << fmt::format("lumibench: warning: {}: MCI at equal time to {}: N = {}, {:.4g} ms vs "
+                                             "{:.4g} ms (ratio {:.3f}, outside +-{:.0f}%)\n",
+                                             sid.label(), c.spec, n1, r1.timing.median_ms, tM, ratio,
+                                             100 * e.equalTimeTolerance);
+                }
+                results::appendRecord(resultsPath, context, r);
+            }
+            ++sum.computed;
+            ++cellsSeen;
+            computeSeconds += std::chrono::duration<double>(Clock::now() - tc).count();
+        }
+        if (opt.progress) {
+            double elapsed = std::chrono::duration<double>(Clock::now() - t0).count();
+            size_t left = sum.cells - cellsSeen;
+            double eta = sum.computed ? elapsed / double(sum.computed) * double(left) : NAN;
+            std::cerr << fmt::format("[{}] cells {}/{} ({:.0f}%), scene {}/{} {}, elapsed {}, ETA {}\n", e.name,
+                                     cellsSeen, sum.cells, 100.0 * cellsSeen / std::max<size_t>(1, sum.cells), si + 1,
+                                     mine.size(), sid.label(), hms(elapsed), hms(eta));
+        }
+    }
+    sum.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    if (!fs::exists(resultsPath)) results::save(resultsPath, results::Results{context, {}});
+    return sum;
+}
+
+} // namespace lb::experiments

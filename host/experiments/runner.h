@@ -1,0 +1,60 @@
+// runner.h -- runs an experiment (experiment.h) into a results directory:
+//
+//   DIR/results.json   one record per cell (results.h), appended atomically as
+//                      each cell finishes, so an interrupted run resumes: a
+//                      rerun skips the cells already in the file
+//   DIR/images/<scene>/  with "save_images": reference.exr, <cell>.exr and the
+//                      PNG triple <cell>_ref/_test/_err.png + <cell>.json that
+//                      plots/image_grid.py lays out
+//
+// Per scene the reference is rendered once (cached on disk by render()), then
+// every method, the MCI curve and the equal-time partners, compared in memory.
+//
+// Each record carries, besides the results.h keys, `spec` (the SPEC as the
+// experiment wrote it, or "mc:n=<N>" for the curve), `role` ("method",
+// "mci_curve" or "equal_time"), `scene` (the scene label) and `build_s`.
+// Equal-time records also carry `equal_time_target_ms` (the matched method's
+// median), `equal_time_ratio` (their median / target), `equal_time_ok`
+// (|ratio - 1| <= tolerance) and `equal_time_fit` ([[N, median ms], ...]).
+//
+// Equal time (DESIGN section 6): t(N) of MC is measured on the scene's
+// MCI-curve points (or, without a curve, on renders at "equal_time_fit"),
+// N_eq solves t(N) = t_M on their piecewise-linear interpolation (solveN);
+// MC is rendered at N_eq and, when its median is off by more than the
+// tolerance, the measurement joins the points and N is solved and rendered
+// once more; the closer of the two is kept.
+#pragma once
+
+#include "experiments/experiment.h"
+
+#include <string>
+
+namespace lb::experiments {
+
+struct RunOptions {
+    std::string outDir;
+    int shardK = 1, shardN = 1;
+    int device = -1;
+    bool progress = true;  // progress lines on stderr
+};
+
+struct RunSummary {
+    size_t scenes = 0;      // scenes of this shard
+    size_t cells = 0;       // cells of this shard
+    size_t skipped = 0;     // already in results.json
+    size_t computed = 0;    // rendered now
+    size_t equalTimeOff = 0;  // equal-time partners outside the tolerance
+    double seconds = 0;
+};
+
+RunSummary run(const Experiment& e, const RunOptions& opt);
+
+// The equal-time solve on its own (tests): N with t(N) = targetMs on the
+// piecewise-linear interpolation of the measured (N, median ms) points,
+// sorted by N; below the smallest time 1, above the largest extrapolated
+// along the last two points; clamped to [1, 2^20]. Measured MC times are not
+// linear in N over 1..1024 on every device (PoCL: t(128) / t(8) = 31), so a
+// local interpolation beats one global line.
+long solveN(std::vector<std::pair<long, double>> points, double targetMs);
+
+} // namespace lb::experiments

@@ -1,0 +1,221 @@
+#!/usr/bin/python3
+"""Figures of an experiment run: reads DIR/results.json, writes DIR/plots/*.png.
+
+    /usr/bin/python3 plots/experiment.py DIR [--max-grids K]
+
+- nmse_time_<luminaire>_<precision>.png: NMSE against median kernel time,
+  log-log, one panel per height (rows) and rotation (columns): the MCI curve
+  (MC at N = 1..1024, `role` mci_curve) as a line, every method as a point,
+  equal-time MCI partners as stars.
+- nmse_h<height>_<precision>.png: mean NMSE over the rotations per luminaire,
+  one line per method (thesis Figs. 6.7-6.10: one figure per height).
+- grid_<scene>.png: reference | method | error for each method of a scene, from
+  the PNG triples the runner saves with "save_images" (plots/image_grid.py);
+  at most --max-grids scenes.
+
+Only the JSON is read, so figures can be redone without re-running. Exits 3
+when matplotlib is missing (lumibench then still writes report.md).
+"""
+import argparse
+import collections
+import json
+import math
+import os
+import sys
+
+try:
+    import matplotlib
+
+    matplotlib.use("Agg")  # files only, no display
+    import matplotlib.pyplot as plt
+except ImportError:
+    sys.stderr.write("experiment.py: matplotlib is missing (Debian: apt-get install python3-matplotlib; "
+                     "run with /usr/bin/python3)\n")
+    sys.exit(3)
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import image_grid  # noqa: E402
+
+
+def finite(v):
+    return isinstance(v, (int, float)) and math.isfinite(v)
+
+
+def role(r):
+    if "equal_time_to" in r:
+        return "equal_time"
+    return r.get("role", "method")
+
+
+def label(r):
+    if "equal_time_to" in r:
+        return "MCI=" + r.get("equal_time_label", r["equal_time_to"])
+    return r.get("spec", r["method"])
+
+
+def stem(lum):
+    return os.path.splitext(os.path.basename(lum))[0]
+
+
+def safe(s):
+    return "".join(c if c.isalnum() or c in ".-" else "_" for c in str(s))
+
+
+def rot_label(rad):
+    return "R={:.0f}°".format(math.degrees(rad))
+
+
+def on_curve(r, cell):
+    """An MCI-curve record, or a method record that is the same MC at some N
+    (the runner keeps one cell when a method equals a curve point)."""
+    if role(r) == "mci_curve":
+        return True
+    if role(r) != "method" or r["method"] != "mc":
+        return False
+    strip = lambda p: {k: v for k, v in p.items() if k != "n"}  # noqa: E731
+    return any(role(c) == "mci_curve" and strip(c["params"]) == strip(r["params"]) for c in cell)
+
+
+def nmse_time(records, out, dpi):
+    """One figure per luminaire and precision; a panel per (height, rotation)."""
+    by = collections.defaultdict(list)
+    for r in records:
+        by[(r["luminaire"], r["precision"])].append(r)
+    files = []
+    for (lum, prec), rs in sorted(by.items()):
+        heights = sorted({r["height"] for r in rs})
+        rots = sorted({r["rotation"] for r in rs})
+        fig, axes = plt.subplots(len(heights), len(rots), figsize=(2.8 * len(rots), 2.4 * len(heights)),
+                                 squeeze=False, sharex=True, sharey=True)
+        methods = sorted({label(r) for r in rs if role(r) == "method"})
+        ns = sorted({r["params"]["n"] for r in rs if on_curve(r, rs)})
+        curve_ns = "{}..{}".format(ns[0], ns[-1]) if ns else ""  # one legend entry for every panel
+        colours = {m: "C{}".format(i % 10) for i, m in enumerate(methods)}
+        for i, h in enumerate(heights):
+            for j, rot in enumerate(rots):
+                ax = axes[i][j]
+                cell = [r for r in rs if r["height"] == h and r["rotation"] == rot]
+                curve = sorted((r["params"]["n"], r["time_ms"]["median"], r["nmse"])
+                               for r in cell if on_curve(r, cell) and finite(r["nmse"]) and r["nmse"] > 0)
+                if curve:
+                    ax.plot([c[1] for c in curve], [c[2] for c in curve], "-", color="0.5", lw=1,
+                            marker=".", ms=3, label="MCI curve (N = {})".format(curve_ns))
+                for r in cell:
+                    if not (finite(r["nmse"]) and r["nmse"] > 0 and finite(r["time_ms"]["median"])):
+                        continue
+                    if role(r) == "method":
+                        ax.plot(r["time_ms"]["median"], r["nmse"], "o", color=colours[label(r)], ms=5,
+                                label=label(r))
+                    elif role(r) == "equal_time":
+                        m = r.get("equal_time_label", "")
+                        ax.plot(r["time_ms"]["median"], r["nmse"], "*", ms=9, mec="k", mew=0.5,
+                                color=colours.get(m, "k"), label="MCI=" + m + " (N={})".format(r.get("n")))
+                ax.set_xscale("log")
+                ax.set_yscale("log")
+                ax.grid(True, which="both", lw=0.3, alpha=0.5)
+                if i == 0:
+                    ax.set_title(rot_label(rot), fontsize=9)
+                if j == 0:
+                    ax.set_ylabel("h={} m\nNMSE".format(h), fontsize=9)
+                if i == len(heights) - 1:
+                    ax.set_xlabel("time (ms)", fontsize=9)
+        handles, labels = {}, []
+        for ax in axes.flat:
+            for hd, lb in zip(*ax.get_legend_handles_labels()):
+                key = lb.split(" (N=")[0]
+                if key not in handles:
+                    handles[key] = hd
+                    labels.append(key)
+        ncol = max(1, min(len(labels), 2 * len(rots)))
+        rows = (len(labels) + ncol - 1) // ncol
+        fig.legend([handles[k] for k in labels], labels, loc="lower center", ncol=ncol, fontsize=7)
+        fig.suptitle("{} ({}): NMSE against run time".format(stem(lum), prec))
+        fig.tight_layout(rect=(0, min(0.4, 0.035 * rows / max(1, len(heights)) * 4), 1, 0.97))
+        path = os.path.join(out, "nmse_time_{}_{}.png".format(safe(stem(lum)), prec))
+        fig.savefig(path, dpi=dpi)
+        plt.close(fig)
+        files.append(path)
+    return files
+
+
+def nmse_per_height(records, out, dpi):
+    """Mean NMSE over the rotations per luminaire, one figure per height and precision."""
+    acc = collections.defaultdict(list)
+    for r in records:
+        if role(r) == "mci_curve" or not finite(r["nmse"]):
+            continue
+        acc[(r["height"], r["precision"], label(r), stem(r["luminaire"]))].append(r["nmse"])
+    files = []
+    for h, prec in sorted({(k[0], k[1]) for k in acc}):
+        lums = sorted({k[3] for k in acc if k[0] == h and k[1] == prec})
+        labels = []
+        for k in acc:
+            if k[0] == h and k[1] == prec and k[2] not in labels:
+                labels.append(k[2])
+        labels.sort(key=lambda s: (s.startswith("MCI="), s))
+        fig, ax = plt.subplots(figsize=(max(5, 1.0 * len(lums) + 2), 3.6))
+        for i, lb in enumerate(labels):
+            xs, ys = [], []
+            for x, lum in enumerate(lums):
+                v = acc.get((h, prec, lb, lum))
+                if v and sum(v) > 0:
+                    xs.append(x)
+                    ys.append(sum(v) / len(v))
+            ax.plot(xs, ys, "--" if lb.startswith("MCI=") else "-", marker="*" if lb.startswith("MCI=") else "o",
+                    color="C{}".format(i % 10), label=lb)
+        ax.set_xticks(range(len(lums)))
+        ax.set_xticklabels(lums, rotation=30, ha="right", fontsize=8)
+        ax.set_yscale("log")
+        ax.set_ylabel("NMSE (mean over rotations)")
+        ax.set_title("h = {} m ({})".format(h, prec))
+        ax.grid(True, which="both", lw=0.3, alpha=0.5)
+        ax.legend(fontsize=7)
+        fig.tight_layout()
+        path = os.path.join(out, "nmse_h{}_{}.png".format(h, prec))
+        fig.savefig(path, dpi=dpi)
+        plt.close(fig)
+        files.append(path)
+    return files
+
+
+def grids(records, dir_, out, max_grids):
+    """reference | method | error per scene from DIR/images/<scene>/<cell>_{ref,test,err}.png."""
+    by = collections.OrderedDict()
+    for r in records:
+        if role(r) != "mci_curve" and "scene" in r:
+            by.setdefault(r["scene"], []).append(r)
+    files = []
+    for scene, rs in list(by.items())[:max_grids]:
+        rows = []
+        for r in rs:
+            cell = safe(r.get("spec", r["method"])) if role(r) == "method" else \
+                "mci_eq_" + safe(r.get("equal_time_label", ""))
+            prefix = os.path.join(dir_, "images", scene, cell)
+            if os.path.exists(prefix + "_err.png"):
+                name = label(r) + (" N={}".format(r["n"]) if "n" in r else "")
+                rows.append("{}={}".format(name, prefix))
+        if rows:
+            path = os.path.join(out, "grid_{}.png".format(safe(scene)))
+            image_grid.main(rows + ["--out", path, "--title", scene, "--size", "2.0", "--dpi", "100"])
+            files.append(path)
+    return files
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("dir", help="results directory (with results.json)")
+    ap.add_argument("--max-grids", type=int, default=8, help="image grids for at most this many scenes")
+    ap.add_argument("--dpi", type=int, default=110)
+    args = ap.parse_args(argv)
+    with open(os.path.join(args.dir, "results.json")) as f:
+        doc = json.load(f)
+    records = doc["records"]
+    out = os.path.join(args.dir, "plots")
+    os.makedirs(out, exist_ok=True)
+    files = nmse_time(records, out, args.dpi) + nmse_per_height(records, out, args.dpi)
+    files += grids(records, args.dir, out, args.max_grids)
+    print("experiment.py: {} figures in {}".format(len(files), out))
+
+
+if __name__ == "__main__":
+    main()
