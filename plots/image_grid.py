@@ -27,6 +27,10 @@ import matplotlib
 matplotlib.use("Agg")  # files only, no display
 import matplotlib.image as mpimg  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.patches import Patch  # noqa: E402
+
+# The colours of host/metrics/tonemap.h (kOrange, kBlue, kNonFinite), for the legend.
+ORANGE, BLUE, MAGENTA = (1.0, 128 / 255, 0.0), (0.0, 102 / 255, 1.0), (1.0, 0.0, 1.0)
 
 
 def parse_row(spec):
@@ -64,6 +68,7 @@ def main(argv=None):
     ap.add_argument("--title", default="", help="figure title")
     ap.add_argument("--size", type=float, default=2.6, help="size of one picture in inches (default 2.6)")
     ap.add_argument("--dpi", type=int, default=150)
+    ap.add_argument("--no-legend", action="store_true", help="leave out the legend of the error colours")
     args = ap.parse_args(argv)
 
     columns = args.columns.split(",")
@@ -76,7 +81,8 @@ def main(argv=None):
                 sys.exit(f"image_grid: {prefix + suffix} not found (write it with lumibench compare --png {prefix})")
 
     n = len(rows)
-    fig, axes = plt.subplots(n, 3, figsize=(3 * args.size, n * (args.size + 0.35)), squeeze=False)
+    height = n * (args.size + 0.35) + (0 if args.no_legend else 0.3)
+    fig, axes = plt.subplots(n, 3, figsize=(3 * args.size, height), squeeze=False)
     for i, (label, prefix) in enumerate(rows):
         for j, suffix in enumerate(("_ref.png", "_test.png", "_err.png")):
             ax = axes[i][j]
@@ -89,7 +95,15 @@ def main(argv=None):
         axes[i][2].set_xlabel(caption(prefix), fontsize=8)
     if args.title:
         fig.suptitle(args.title)
-    fig.tight_layout()
+    # Room at the bottom for the legend of the error colours (0.3 inch).
+    legend_frac = 0 if args.no_legend else 0.3 / fig.get_figheight()
+    fig.tight_layout(rect=(0, legend_frac, 1, 1))
+    if not args.no_legend:
+        legend = [Patch(color=ORANGE, label="too bright (full at UEB)"),
+                  Patch(facecolor="white", edgecolor="0.5", label="no error"),
+                  Patch(color=BLUE, label="too dark (full at |LEB|)"),
+                  Patch(color=MAGENTA, label="non-finite")]
+        fig.legend(handles=legend, loc="lower center", ncol=4, fontsize=7, frameon=False)
     fig.savefig(args.out, dpi=args.dpi)
     print(args.out)
 
