@@ -5,6 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <atomic>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
@@ -55,6 +61,35 @@ inline std::string sharedDir()
     if (dir.empty()) GTEST_SKIP() << "../shared is not present";
 
 inline std::string sourceDir() { return LB_SOURCE_DIR; }
+
+struct CliResult {
+    int code = -1;    // exit status, -1 if the program did not exit normally
+    std::string out;  // stdout
+    std::string err;  // stderr
+};
+
+// Runs build/lumibench with `args` (a shell word list), stdout and stderr apart.
+inline CliResult runCli(const std::string& args)
+{
+    static std::atomic<int> counter{0};
+    auto errFile = std::filesystem::temp_directory_path() /
+                   ("lb-cli-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ".err");
+    std::string cmd = std::string(LB_BINARY) + " " + args + " 2>" + errFile.string();
+    CliResult r;
+    std::array<char, 4096> buf;
+    size_t n;
+    if (FILE* p = popen(cmd.c_str(), "r")) {
+        while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
+        int st = pclose(p);
+        r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+    }
+    if (FILE* f = std::fopen(errFile.c_str(), "r")) {
+        while ((n = fread(buf.data(), 1, buf.size(), f)) > 0) r.err.append(buf.data(), n);
+        std::fclose(f);
+    }
+    std::filesystem::remove(errFile);
+    return r;
+}
 inline std::string binary() { return LB_BINARY; }
 
 } // namespace lb::test

@@ -15,14 +15,8 @@ namespace {
 
 std::pair<int, std::string> runBench(const std::string& args)
 {
-    std::string cmd = test::binary() + " bench " + args + " 2>/dev/null";
-    std::unique_ptr<FILE, int (*)(FILE*)> p(popen(cmd.c_str(), "r"), pclose);
-    std::string out;
-    std::array<char, 4096> buf;
-    size_t n;
-    while ((n = fread(buf.data(), 1, buf.size(), p.get())) > 0) out.append(buf.data(), n);
-    int st = pclose(p.release());
-    return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
+    auto c = test::runCli("bench " + args);
+    return {c.code, c.out};
 }
 
 TEST(BenchCli, QuickJsonRun)

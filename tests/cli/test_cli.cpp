@@ -13,18 +13,11 @@ struct Result {
     std::string out;
 };
 
-// Runs build/lumibench with `args`, capturing stdout and stderr together.
+// Runs build/lumibench with `args`, stdout and stderr together.
 Result run(const std::string& args)
 {
-    std::string cmd = test::binary() + " " + args + " 2>&1";
-    std::unique_ptr<FILE, int (*)(FILE*)> p(popen(cmd.c_str(), "r"), pclose);
-    Result r{-1, ""};
-    std::array<char, 4096> buf;
-    size_t n;
-    while ((n = fread(buf.data(), 1, buf.size(), p.get())) > 0) r.out.append(buf.data(), n);
-    int st = pclose(p.release());
-    r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-    return r;
+    auto c = test::runCli(args);
+    return {c.code, c.out + c.err};
 }
 
 TEST(Cli, HelpListsEverySubcommand)

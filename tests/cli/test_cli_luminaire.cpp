@@ -20,15 +20,8 @@ struct Result {
 
 Result run(const std::string& args, bool withStderr = true)
 {
-    std::string cmd = test::binary() + " " + args + (withStderr ? " 2>&1" : " 2>/dev/null");
-    std::unique_ptr<FILE, int (*)(FILE*)> p(popen(cmd.c_str(), "r"), pclose);
-    Result r{-1, ""};
-    std::array<char, 4096> buf;
-    size_t n;
-    while ((n = fread(buf.data(), 1, buf.size(), p.get())) > 0) r.out.append(buf.data(), n);
-    int st = pclose(p.release());
-    r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-    return r;
+    auto c = test::runCli(args);
+    return {c.code, withStderr ? c.out + c.err : c.out};
 }
 
 TEST(CliLuminaire, InfoAndEvalAnswerForEverySharedFile)

@@ -25,21 +25,11 @@ struct Result {
     std::string out, err;
 };
 
-// Runs build/lumibench with `args`; stdout and stderr apart (stderr via a file).
-Result run(const std::string& args, const fs::path& dir)
+// Runs build/lumibench with `args`; stdout and stderr apart.
+Result run(const std::string& args, const fs::path&)
 {
-    const std::string errFile = (dir / "stderr.txt").string();
-    std::string cmd = test::binary() + " " + args + " 2>" + errFile;
-    std::unique_ptr<FILE, int (*)(FILE*)> p(popen(cmd.c_str(), "r"), pclose);
-    Result r{-1, "", ""};
-    std::array<char, 4096> buf;
-    size_t n;
-    while ((n = fread(buf.data(), 1, buf.size(), p.get())) > 0) r.out.append(buf.data(), n);
-    int st = pclose(p.release());
-    r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-    std::unique_ptr<FILE, int (*)(FILE*)> f(fopen(errFile.c_str(), "r"), fclose);
-    while (f && (n = fread(buf.data(), 1, buf.size(), f.get())) > 0) r.err.append(buf.data(), n);
-    return r;
+    auto c = test::runCli(args);
+    return {c.code, c.out, c.err};
 }
 
 // A scratch folder per test, removed afterwards.

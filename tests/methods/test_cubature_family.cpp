@@ -48,21 +48,8 @@ struct Cli {
 
 Cli cli(const std::string& args)
 {
-    auto errFile = std::filesystem::temp_directory_path() / fmt::format("lb-cub-cli-{}.err", ::getpid());
-    std::string cmd = test::binary() + " " + args + " 2>" + errFile.string();
-    std::unique_ptr<FILE, int (*)(FILE*)> p(popen(cmd.c_str(), "r"), pclose);
-    Cli r{-1, "", ""};
-    std::array<char, 4096> buf;
-    size_t n;
-    while ((n = fread(buf.data(), 1, buf.size(), p.get())) > 0) r.out.append(buf.data(), n);
-    int st = pclose(p.release());
-    r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-    if (std::FILE* f = std::fopen(errFile.c_str(), "r")) {
-        while ((n = fread(buf.data(), 1, buf.size(), f)) > 0) r.err.append(buf.data(), n);
-        std::fclose(f);
-    }
-    std::filesystem::remove(errFile);
-    return r;
+    auto c = test::runCli(args);
+    return {c.code, c.out, c.err};
 }
 
 // Every option value at least once (and delaunay with cp + barycentre, all
