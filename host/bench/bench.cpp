@@ -53,7 +53,7 @@ struct Bench {
     }
 
     // cubature.cl: render(P, lum, out, row0, stats, want_stats, plane_eps, horizon_eps,
-    // corner_inset, dyn_weight),
+    // corner_inset, dyn_weight, blend_dist),
     // without the per-pixel statistics (want_stats = 0).
     double cubature(const std::string& defines, const std::vector<float>& lum)
     {
@@ -72,6 +72,7 @@ struct Bench {
         ocl::setReal(k, 7, co.horizonEps, false);
         ocl::setReal(k, 8, co.cornerInset, false);
         ocl::setReal(k, 9, co.dynWeight, false);
+        ocl::setReal(k, 10, co.blendDist, false);
         return time(k);
     }
 };

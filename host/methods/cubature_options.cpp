@@ -86,9 +86,10 @@ CubatureOptions CubatureOptions::parse(const std::map<std::string, std::string>&
         else if (k == "horizon_eps") o.horizonEps = nonNegative(k, v);
         else if (k == "corner_inset") o.cornerInset = nonNegative(k, v);
         else if (k == "dyn_weight") o.dynWeight = nonNegative(k, v);
+        else if (k == "blend_dist") o.blendDist = nonNegative(k, v);
         else
             throw InputError(fmt::format("cubature: unknown parameter '{}' (expected triangulation, weighting, "
-                                         "normalize, dynamic, plane_eps, horizon_eps, corner_inset, dyn_weight)",
+                                         "normalize, dynamic, plane_eps, horizon_eps, corner_inset, dyn_weight, blend_dist)",
                                          k));
     }
     return o;
@@ -111,7 +112,8 @@ std::map<std::string, std::string> CubatureOptions::describe() const
             {"plane_eps", fmt::format("{}", planeEps)},
             {"horizon_eps", fmt::format("{}", horizonEps)},
             {"corner_inset", fmt::format("{}", cornerInset)},
-            {"dyn_weight", fmt::format("{}", dynWeight)}};
+            {"dyn_weight", fmt::format("{}", dynWeight)},
+            {"blend_dist", fmt::format("{}", blendDist)}};
 }
 
 } // namespace lb::methods

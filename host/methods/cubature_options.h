@@ -28,6 +28,9 @@ struct CubatureOptions {
     // sample placement tunables of lb_cubature_irradiance_ex (issue 7).
     double cornerInset = 0.0;
     double dynWeight = 1.0;
+    // blend_dist (m): far-field blend into a 3 x 3 grid MC (thesis 6.6);
+    // 100 m is beyond every pixel of the normalized scene: no blend.
+    double blendDist = 100.0;
 
     // Keys: triangulation, weighting, normalize, dynamic, plane_eps,
     // horizon_eps. `dynamic` is a '+'-separated set of cp, np, mrp,

@@ -51,6 +51,9 @@ void registerCubature(Registry& r)
         Param::real("dyn_weight", 1.0, 0.0, 4.0, Scale::Linear,
                     "scale of the dynamic samples' weights, all weights rescaled to the same sum (1 = the "
                     "triangulation's weights)"),
+        Param::real("blend_dist", 100.0, 0.5, 100.0, Scale::Log,
+                    "beyond this distance (m) from the light's centre the result blends linearly into a 3 x 3 grid "
+                    "MC estimate, fully MC from 1.5x on (thesis 6.6; 100 = never in the normalized scene)"),
     };
     f.validate = [](const MethodSpec& s) {
         CubatureOptions o = options(s);
@@ -76,6 +79,7 @@ void registerCubature(Registry& r)
         ocl::setReal(c.kernel, first + 3, o.horizonEps, c.dbl());
         ocl::setReal(c.kernel, first + 4, o.cornerInset, c.dbl());
         ocl::setReal(c.kernel, first + 5, o.dynWeight, c.dbl());
+        ocl::setReal(c.kernel, first + 6, o.blendDist, c.dbl());
     };
     // Triangles and Lawson flips per pixel (the kernel writes them on every
     // run; the writes are part of the timed kernel, 8 bytes per pixel).

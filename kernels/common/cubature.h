@@ -553,3 +553,35 @@ LB_FN real lb_cubature_irradiance(__global const float* lum, lb_light L, real3 x
     return lb_cubature_irradiance_ex(lum, L, x, nx, triangulation, weighting, normalize_ff, dynamic, plane_eps,
                                      horizon_eps, R(0), R(1), ntri, nflips);
 }
+
+/* Far-field blend (thesis 6.6 proposes blending the cubature into MCI with
+ * distance; issue 7's blend_dist). lb_grid_mc_irradiance: the area form of
+ * DESIGN section 1 on the midpoints of a k x k grid over the light,
+ * E = (1/k^2) sum I(d_i) max(0, n_x . w_i) / r_i^2 -- a fixed, deterministic
+ * point set (an MCI-k^2 with stratified midpoints), accurate once the light
+ * is small in view. */
+LB_FN real lb_grid_mc_irradiance(__global const float* lum, lb_light L, real3 x, real3 nx, int k)
+{
+    real e = R(0);
+    for (int i = 0; i < k; ++i)
+        for (int j = 0; j < k; ++j) {
+            real s = ((real)i + R(0.5)) / (real)k - R(0.5), t = ((real)j + R(0.5)) / (real)k - R(0.5);
+            real3 p = L.c + L.u * (s * L.w) + L.v * (t * L.l) - x; /* sample relative to x */
+            real r2 = dot(p, p);
+            if (r2 <= R(0))
+                continue;
+            real r = sqrt(r2);
+            real cx = dot(nx, p) / r;
+            if (cx <= R(0))
+                continue;
+            e += lb_intensity_local(lum, lb_to_light_frame(L, -p / r)) * cx / r2;
+        }
+    return e / (real)(k * k);
+}
+
+/* Blend weight of the grid MC at distance dist from the light's centre: 0 up
+ * to blend_dist, linear to 1 at 1.5 blend_dist. */
+LB_FN real lb_blend_weight(real dist, real blend_dist)
+{
+    return clamp((dist - blend_dist) / (R(0.5) * blend_dist), R(0), R(1));
+}
