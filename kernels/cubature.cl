@@ -7,7 +7,10 @@
  *   LB_CUB_WEIGHT     0 sample (paper Eq. 9) | 1 average (Eq. 10) | 2 dotout
  *   LB_CUB_NORMALIZE  0 none | 1 formfactor (thesis Eq. 5.11)
  *   LB_CUB_DYNAMIC    bit set of dynamic points: 1 cp, 2 np, 4 mrp, 8 barycentre (0: corners only)
- * Continuous tunables (kernel arguments): plane_eps, horizon_eps (metres).
+ * Continuous tunables (kernel arguments): plane_eps, horizon_eps (metres),
+ * corner_inset, dyn_weight (common/cubature.h lb_cubature_irradiance_ex; 0, 1 = plain),
+ * blend_dist (m): beyond it the result blends into a 3 x 3 grid MC (lb_blend_weight;
+ * fully MC, without the cubature, from 1.5 blend_dist on).
  *
  * @variants: "" | "-DLB_CUB_TRI=1" | "-DLB_CUB_TRI=1 -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=15" | "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_DYNAMIC=0" | "-DLB_LUT"
  */
@@ -32,7 +35,8 @@
  * height. stats: 2 ints per pixel of the whole image (triangles, flips),
  * written when want_stats != 0 (pass any small buffer otherwise). */
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
-                     __global int* stats, int want_stats, real plane_eps, real horizon_eps)
+                     __global int* stats, int want_stats, real plane_eps, real horizon_eps,
+                     real corner_inset, real dyn_weight, real blend_dist)
 {
     int col = get_global_id(0);
     int row = row0 + (int)get_global_id(1);
@@ -42,9 +46,14 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     lb_light L = lb_scene_light(P);
     real3 x = lb_pixel_position(P, row, col);
     real3 nx = lb_p3(P, 16);
-    int nt, nf;
-    real e = lb_cubature_irradiance(lum, L, x, nx, LB_CUB_TRI, LB_CUB_WEIGHT, LB_CUB_NORMALIZE, LB_CUB_DYNAMIC,
-                                    plane_eps, horizon_eps, &nt, &nf);
+    int nt = 0, nf = 0;
+    real t = lb_blend_weight(length(x - L.c), blend_dist);
+    real e = R(0);
+    if (t < R(1))
+        e = lb_cubature_irradiance_ex(lum, L, x, nx, LB_CUB_TRI, LB_CUB_WEIGHT, LB_CUB_NORMALIZE, LB_CUB_DYNAMIC,
+                                      plane_eps, horizon_eps, corner_inset, dyn_weight, &nt, &nf);
+    if (t > R(0))
+        e = (R(1) - t) * e + t * lb_grid_mc_irradiance(lum, L, x, nx, 3);
     int i = row * n + col;
     out[i] = e;
     if (want_stats) {

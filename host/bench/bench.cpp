@@ -52,7 +52,8 @@ struct Bench {
         return time(k);
     }
 
-    // cubature.cl: render(P, lum, out, row0, stats, want_stats, plane_eps, horizon_eps),
+    // cubature.cl: render(P, lum, out, row0, stats, want_stats, plane_eps, horizon_eps,
+    // corner_inset, dyn_weight, blend_dist),
     // without the per-pixel statistics (want_stats = 0).
     double cubature(const std::string& defines, const std::vector<float>& lum)
     {
@@ -69,6 +70,9 @@ struct Bench {
         k.setArg(5, cl_int(0));
         ocl::setReal(k, 6, co.planeEps, false);
         ocl::setReal(k, 7, co.horizonEps, false);
+        ocl::setReal(k, 8, co.cornerInset, false);
+        ocl::setReal(k, 9, co.dynWeight, false);
+        ocl::setReal(k, 10, co.blendDist, false);
         return time(k);
     }
 };

@@ -1,13 +1,44 @@
-// lumibench tune (not implemented yet: see the open issues).
+// lumibench tune EXP --out DIR: nlopt search of a method's continuous
+// parameters against the NMSE over the experiment's training scenes (host/tune).
 #include "cli/commands.h"
+#include "tune/tune.h"
+
+#include <fmt/format.h>
+
+#include <memory>
 
 namespace lb::cli {
 
 void addTuneCommand(CLI::App& app)
 {
+    struct Opts {
+        std::string exp, out;
+        int device = -1;
+        bool quiet = false, noPlot = false;
+        int maxeval = 0;
+        double maxtime = -1;
+    };
+    auto o = std::make_shared<Opts>();
     auto* cmd = app.add_subcommand("tune", "Tune epsilons and sample placement with nlopt against NMSE");
-    cmd->allow_extras();
-    cmd->callback([] { notImplemented("tune"); });
+    cmd->add_option("experiment", o->exp, "Tune experiment file, e.g. experiments/tune-smoke.json")->required();
+    cmd->add_option("--out", o->out, "Output directory (tune.json, tune.png)")->required();
+    cmd->add_option("--maxeval", o->maxeval, "Override the experiment's evaluation budget");
+    cmd->add_option("--maxtime", o->maxtime, "Override the experiment's time budget (seconds, 0 = none)");
+    cmd->add_option("--device", o->device, "OpenCL device index (lumibench devices)");
+    cmd->add_flag("--no-plot", o->noPlot, "Do not draw tune.png");
+    cmd->add_flag("--quiet", o->quiet, "No progress lines on stderr");
+    cmd->callback([o] {
+        tune::TuneExperiment e = tune::loadTuneExperiment(o->exp);
+        if (o->maxeval > 0) e.maxeval = o->maxeval;
+        if (o->maxtime >= 0) e.maxtime = o->maxtime;
+        tune::TuneOptions t;
+        t.outDir = o->out;
+        t.device = o->device;
+        t.quiet = o->quiet;
+        t.plot = !o->noPlot;
+        auto doc = tune::runTune(e, t);
+        fmt::print("{}\n", doc["tuned"]["spec"].get<std::string>());
+    });
 }
 
 } // namespace lb::cli

@@ -84,9 +84,12 @@ CubatureOptions CubatureOptions::parse(const std::map<std::string, std::string>&
         else if (k == "dynamic") o.dynamic = parseDynamicSet(v);
         else if (k == "plane_eps") o.planeEps = nonNegative(k, v);
         else if (k == "horizon_eps") o.horizonEps = nonNegative(k, v);
+        else if (k == "corner_inset") o.cornerInset = nonNegative(k, v);
+        else if (k == "dyn_weight") o.dynWeight = nonNegative(k, v);
+        else if (k == "blend_dist") o.blendDist = nonNegative(k, v);
         else
             throw InputError(fmt::format("cubature: unknown parameter '{}' (expected triangulation, weighting, "
-                                         "normalize, dynamic, plane_eps, horizon_eps)",
+                                         "normalize, dynamic, plane_eps, horizon_eps, corner_inset, dyn_weight, blend_dist)",
                                          k));
     }
     return o;
@@ -107,7 +110,10 @@ std::map<std::string, std::string> CubatureOptions::describe() const
             {"normalize", formfactor ? "formfactor" : "none"},
             {"dynamic", dynamicSetName(dynamic)},
             {"plane_eps", fmt::format("{}", planeEps)},
-            {"horizon_eps", fmt::format("{}", horizonEps)}};
+            {"horizon_eps", fmt::format("{}", horizonEps)},
+            {"corner_inset", fmt::format("{}", cornerInset)},
+            {"dyn_weight", fmt::format("{}", dynWeight)},
+            {"blend_dist", fmt::format("{}", blendDist)}};
 }
 
 } // namespace lb::methods

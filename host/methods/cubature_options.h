@@ -24,6 +24,13 @@ struct CubatureOptions {
     // 0.1). Default 0: no bias; in the normalized scene the light never
     // crosses the receiver's horizon, so the option only matters elsewhere.
     double horizonEps = 0.0;
+    // corner_inset (fraction, 0 = at the corners) and dyn_weight (1 = plain):
+    // sample placement tunables of lb_cubature_irradiance_ex (issue 7).
+    double cornerInset = 0.0;
+    double dynWeight = 1.0;
+    // blend_dist (m): far-field blend into a 3 x 3 grid MC (thesis 6.6);
+    // 100 m is beyond every pixel of the normalized scene: no blend.
+    double blendDist = 100.0;
 
     // Keys: triangulation, weighting, normalize, dynamic, plane_eps,
     // horizon_eps. `dynamic` is a '+'-separated set of cp, np, mrp,

@@ -45,6 +45,15 @@ void registerCubature(Registry& r)
                     "receivers closer than this (m) to the light's plane are moved to this distance (paper 5.3)"),
         Param::real("horizon_eps", 0.0, 0.0, 0.5, Scale::Linear,
                     "clip the light at n_x . (p - x) >= this (m): the tilted horizon of thesis 5.2.4 (it used 0.1)"),
+        Param::real("corner_inset", 0.0, 0.0, 0.5, Scale::Linear,
+                    "the corner samples look the radiance up this fraction of the way towards the clipped light's "
+                    "corner mean (0 = at the corners; the triangles keep their weights)"),
+        Param::real("dyn_weight", 1.0, 0.0, 4.0, Scale::Linear,
+                    "scale of the dynamic samples' weights, all weights rescaled to the same sum (1 = the "
+                    "triangulation's weights)"),
+        Param::real("blend_dist", 100.0, 0.5, 100.0, Scale::Log,
+                    "beyond this distance (m) from the light's centre the result blends linearly into a 3 x 3 grid "
+                    "MC estimate, fully MC from 1.5x on (thesis 6.6; 100 = never in the normalized scene)"),
     };
     f.validate = [](const MethodSpec& s) {
         CubatureOptions o = options(s);
@@ -68,6 +77,9 @@ void registerCubature(Registry& r)
         c.kernel.setArg(first + 1, cl_int(1));
         ocl::setReal(c.kernel, first + 2, o.planeEps, c.dbl());
         ocl::setReal(c.kernel, first + 3, o.horizonEps, c.dbl());
+        ocl::setReal(c.kernel, first + 4, o.cornerInset, c.dbl());
+        ocl::setReal(c.kernel, first + 5, o.dynWeight, c.dbl());
+        ocl::setReal(c.kernel, first + 6, o.blendDist, c.dbl());
     };
     // Triangles and Lawson flips per pixel (the kernel writes them on every
     // run; the writes are part of the timed kernel, 8 bytes per pixel).

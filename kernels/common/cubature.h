@@ -492,10 +492,20 @@ LB_FN real lb_cubature_setup(lb_cub* T, lb_light L, real3 x, real3 nx, int trian
 
 /* Cubature irradiance (lux) at x: lb_cubature_setup, then the photometric
  * lookups. normalize: 0 none, 1 formfactor (thesis Eq. 5.11). *ntri and
- * *nflips receive the statistics. */
-LB_FN real lb_cubature_irradiance(__global const float* lum, lb_light L, real3 x, real3 nx, int triangulation,
-                                  int weighting, int normalize_ff, int dynamic, real plane_eps, real horizon_eps,
-                                  int* ntri, int* nflips)
+ * *nflips receive the statistics. Two placement tunables (issue 7, searched
+ * by `lumibench tune`; 0 and 1 are the plain method, bit for bit):
+ *   corner_inset  the hull samples (the clipped light's corners) look the
+ *                 radiance up at p + corner_inset (c - p), c the mean of
+ *                 the clipped light's corners; the triangles and with them the
+ *                 weights stay those of the corners (a quadrature-node shift
+ *                 away from the grazing directions at the light's rim);
+ *   dyn_weight    the weights of the dynamic samples are scaled by it and
+ *                 all weights rescaled to the same sum, so the estimate
+ *                 stays a weighted mean of the radiance times the same
+ *                 total cosine-weighted solid angle. */
+LB_FN real lb_cubature_irradiance_ex(__global const float* lum, lb_light L, real3 x, real3 nx, int triangulation,
+                                     int weighting, int normalize_ff, int dynamic, real plane_eps, real horizon_eps,
+                                     real corner_inset, real dyn_weight, int* ntri, int* nflips)
 {
     lb_cub T;
     real w[LB_CUB_MAXS];
@@ -503,13 +513,75 @@ LB_FN real lb_cubature_irradiance(__global const float* lum, lb_light L, real3 x
     lb_cubature_setup(&T, L, x, nx, triangulation, weighting, dynamic, plane_eps, horizon_eps, w, &elam);
     *ntri = T.nt;
     *nflips = T.flips;
+    if (dyn_weight != R(1) && T.ns > T.nh) {
+        real before = R(0), after = R(0);
+        for (int i = 0; i < T.ns; ++i) {
+            before += w[i];
+            if (i >= T.nh)
+                w[i] *= dyn_weight;
+            after += w[i];
+        }
+        real k = after > R(0) ? before / after : R(0);
+        for (int i = 0; i < T.ns; ++i)
+            w[i] *= k;
+    }
+    real3 c = R3(0, 0, 0);
+    if (corner_inset != R(0)) {
+        for (int i = 0; i < T.nh; ++i)
+            c += T.p[i];
+        c /= (real)(T.nh > 0 ? T.nh : 1);
+    }
     real e = R(0), ws = R(0);
     for (int i = 0; i < T.ns; ++i) {
+        real3 p = T.p[i];
+        if (corner_inset != R(0) && i < T.nh)
+            p += corner_inset * (c - p);
         if (w[i] != R(0))
-            e += w[i] * lb_radiance_from(lum, L, T.p[i]);
+            e += w[i] * lb_radiance_from(lum, L, p);
         ws += w[i];
     }
     if (normalize_ff)
         return ws > R(0) ? elam * e / ws : R(0);
     return e;
+}
+
+/* The plain method: no inset, dynamic samples at their triangulation weight. */
+LB_FN real lb_cubature_irradiance(__global const float* lum, lb_light L, real3 x, real3 nx, int triangulation,
+                                  int weighting, int normalize_ff, int dynamic, real plane_eps, real horizon_eps,
+                                  int* ntri, int* nflips)
+{
+    return lb_cubature_irradiance_ex(lum, L, x, nx, triangulation, weighting, normalize_ff, dynamic, plane_eps,
+                                     horizon_eps, R(0), R(1), ntri, nflips);
+}
+
+/* Far-field blend (thesis 6.6 proposes blending the cubature into MCI with
+ * distance; issue 7's blend_dist). lb_grid_mc_irradiance: the area form of
+ * DESIGN section 1 on the midpoints of a k x k grid over the light,
+ * E = (1/k^2) sum I(d_i) max(0, n_x . w_i) / r_i^2 -- a fixed, deterministic
+ * point set (an MCI-k^2 with stratified midpoints), accurate once the light
+ * is small in view. */
+LB_FN real lb_grid_mc_irradiance(__global const float* lum, lb_light L, real3 x, real3 nx, int k)
+{
+    real e = R(0);
+    for (int i = 0; i < k; ++i)
+        for (int j = 0; j < k; ++j) {
+            real s = ((real)i + R(0.5)) / (real)k - R(0.5), t = ((real)j + R(0.5)) / (real)k - R(0.5);
+            real3 p = L.c + L.u * (s * L.w) + L.v * (t * L.l) - x; /* sample relative to x */
+            real r2 = dot(p, p);
+            if (r2 <= R(0))
+                continue;
+            real r = sqrt(r2);
+            real cx = dot(nx, p) / r;
+            if (cx <= R(0))
+                continue;
+            e += lb_intensity_local(lum, lb_to_light_frame(L, -p / r)) * cx / r2;
+        }
+    return e / (real)(k * k);
+}
+
+/* Blend weight of the grid MC at distance dist from the light's centre: 0 up
+ * to blend_dist, linear to 1 at 1.5 blend_dist. */
+LB_FN real lb_blend_weight(real dist, real blend_dist)
+{
+    return clamp((dist - blend_dist) / (R(0.5) * blend_dist), R(0), R(1));
 }

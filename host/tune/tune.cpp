@@ -1,0 +1,522 @@
+// tune.cpp -- see tune.h.
+#include "tune/tune.h"
+
+#include "cli/commands.h"
+#include "methods/render.h"
+#include "methods/spec.h"
+#include "metrics/metrics.h"
+#include "photometry/load.h"
+#include "util/error.h"
+
+#include <fmt/format.h>
+#include <nlopt.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <memory>
+#include <numeric>
+#include <set>
+
+namespace lb::tune {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+[[noreturn]] void fail(const std::string& path, const std::string& key, const std::string& what)
+{
+    throw InputError(fmt::format("{}: key \"{}\": {}", path, key, what));
+}
+
+std::string resolveDir(const std::string& dir)
+{
+    fs::path p(dir);
+    if (p.is_absolute() || fs::exists(p)) return p.string();
+    return (fs::path(LB_SOURCE_DIR) / p).string();  // relative to the source tree
+}
+
+std::vector<double> numbers(const std::string& path, const std::string& key, const json& v)
+{
+    if (!v.is_array() || v.empty()) fail(path, key, "expected a non-empty list of numbers");
+    std::vector<double> out;
+    for (const auto& x : v) {
+        if (!x.is_number() || !std::isfinite(x.get<double>()))
+            fail(path, key, fmt::format("expected finite numbers, found element {}", x.dump()));
+        out.push_back(x.get<double>());
+    }
+    return out;
+}
+
+std::vector<std::string> strings(const std::string& path, const std::string& key, const json& v)
+{
+    std::vector<std::string> out;
+    if (v.is_string()) out.push_back(v.get<std::string>());
+    else if (v.is_array())
+        for (const auto& x : v) {
+            if (!x.is_string()) fail(path, key, fmt::format("expected strings, found element {}", x.dump()));
+            out.push_back(x.get<std::string>());
+        }
+    else fail(path, key, fmt::format("expected a list of strings, found {}", v.dump()));
+    if (out.empty()) fail(path, key, "expected a non-empty list");
+    return out;
+}
+
+SceneSet sceneSet(const std::string& path, const std::string& key, const json& j, const std::string& lumDir)
+{
+    if (!j.is_object()) fail(path, key, "expected an object with luminaires, heights, rotations");
+    static const std::set<std::string> keys = {"luminaires", "heights", "rotations"};
+    for (auto it = j.begin(); it != j.end(); ++it)
+        if (!keys.count(it.key())) fail(path, key + "." + it.key(), "unknown key (known: luminaires, heights, rotations)");
+    for (const auto& k : keys)
+        if (!j.contains(k)) fail(path, key + "." + k, "missing");
+    SceneSet s;
+    for (const auto& n : strings(path, key + ".luminaires", j["luminaires"])) {
+        fs::path p = fs::path(n).is_absolute() ? fs::path(n) : fs::path(lumDir) / n;
+        if (!fs::exists(p)) fail(path, key + ".luminaires", fmt::format("file '{}' not found", p.string()));
+        s.luminaires.push_back(p.string());
+    }
+    s.heights = numbers(path, key + ".heights", j["heights"]);
+    const json& rs = j["rotations"];
+    if (!rs.is_array() || rs.empty()) fail(path, key + ".rotations", "expected a non-empty list");
+    for (const auto& x : rs) {
+        std::string text = x.is_string() ? x.get<std::string>() : x.dump();
+        try {
+            s.rotations.push_back(cli::parseAngle(text));
+        } catch (const InputError&) {
+            fail(path, key + ".rotations", fmt::format("expected radians or an expression like 3pi/4, found '{}'", text));
+        }
+        s.rotationText.push_back(text);
+    }
+    return s;
+}
+
+// One scene: its table, its reference image.
+struct Case {
+    std::string label;
+    std::shared_ptr<photometry::Table> table;
+    Scene scene;
+    Image ref;
+};
+
+} // namespace
+
+double Dim::toValue(double u) const
+{
+    u = std::clamp(u, 0.0, 1.0);
+    double v = param.scale == methods::Scale::Log && param.lo > 0
+                   ? std::exp(std::log(param.lo) + u * (std::log(param.hi) - std::log(param.lo)))
+                   : param.lo + u * (param.hi - param.lo);
+    v = std::clamp(v, param.lo, param.hi);
+    if (param.kind == methods::Kind::Int) v = std::round(v);
+    return v;
+}
+
+double Dim::toUnit(double v) const
+{
+    if (param.hi <= param.lo) return 0;
+    double u = param.scale == methods::Scale::Log && param.lo > 0
+                   ? (std::log(std::max(v, param.lo)) - std::log(param.lo)) / (std::log(param.hi) - std::log(param.lo))
+                   : (v - param.lo) / (param.hi - param.lo);
+    return std::clamp(u, 0.0, 1.0);
+}
+
+TuneExperiment loadTuneExperiment(const std::string& path)
+{
+    std::ifstream in(path);
+    if (!in) throw InputError(fmt::format("{}: cannot open the tune experiment file", path));
+    json j;
+    try {
+        j = json::parse(in);
+    } catch (const json::parse_error& err) {
+        throw InputError(fmt::format("{}: not valid JSON: {}", path, err.what()));
+    }
+    if (!j.is_object()) throw InputError(fmt::format("{}: expected a JSON object", path));
+    static const std::set<std::string> keys = {
+        "name",      "description", "method",    "params",   "reference", "luminaire_dir", "res",
+        "precision", "size",        "extent",    "train",    "validation", "objective",    "algorithm",
+        "global",    "global_maxeval", "maxeval", "maxtime", "seed"};
+    for (auto it = j.begin(); it != j.end(); ++it)
+        if (!keys.count(it.key())) fail(path, it.key(), fmt::format("unknown key (known: {})", fmt::join(keys, ", ")));
+
+    TuneExperiment e;
+    e.path = path;
+    e.raw = j;
+    auto str = [&](const std::string& k) {
+        if (!j[k].is_string()) fail(path, k, fmt::format("expected a string, found {}", j[k].dump()));
+        return j[k].get<std::string>();
+    };
+    auto integer = [&](const std::string& k, long lo, long hi) {
+        if (!j[k].is_number_integer() || j[k].get<long>() < lo || j[k].get<long>() > hi)
+            fail(path, k, fmt::format("expected an integer in [{}, {}], found {}", lo, hi, j[k].dump()));
+        return j[k].get<long>();
+    };
+    auto number = [&](const std::string& k, double lo, double hi) {
+        if (!j[k].is_number() || !(j[k].get<double>() >= lo && j[k].get<double>() <= hi))
+            fail(path, k, fmt::format("expected a number in [{}, {}], found {}", lo, hi, j[k].dump()));
+        return j[k].get<double>();
+    };
+    e.name = j.contains("name") ? str("name") : fs::path(path).stem().string();
+    if (!j.contains("method")) fail(path, "method", "missing (a SPEC, e.g. \"cubature:triangulation=fan\")");
+    e.method = str("method");
+    methods::MethodSpec base;
+    try {
+        base = methods::parseSpec(e.method);
+    } catch (const InputError& err) {
+        fail(path, "method", err.what());
+    }
+    const auto& fam = methods::family(base.name);
+    if (j.contains("params")) {
+        e.params = strings(path, "params", j["params"]);
+        for (const auto& n : e.params) {
+            auto it = std::find_if(fam.params.begin(), fam.params.end(), [&](auto& p) { return p.name == n; });
+            if (it == fam.params.end() || !(it->kind == methods::Kind::Real || it->kind == methods::Kind::Int))
+                fail(path, "params", fmt::format("'{}' is not a numeric parameter of method {}", n, base.name));
+            if (base.given.count(n)) fail(path, "params", fmt::format("'{}' is searched, so \"method\" must not set it", n));
+        }
+    } else {
+        for (const auto& p : fam.params)
+            if (p.tunable && (p.kind == methods::Kind::Real || p.kind == methods::Kind::Int) && !base.given.count(p.name))
+                e.params.push_back(p.name);
+    }
+    if (e.params.empty()) fail(path, "params", fmt::format("method {} has no tunable parameter left to search", base.name));
+    if (j.contains("reference")) {
+        e.reference = str("reference");
+        try {
+            if (methods::parseSpec(e.reference).name != "reference") fail(path, "reference", "expected a reference SPEC");
+        } catch (const InputError& err) {
+            fail(path, "reference", err.what());
+        }
+    }
+    std::string lumDir = resolveDir(j.contains("luminaire_dir") ? str("luminaire_dir") : "luminaires");
+    if (j.contains("res")) e.res = static_cast<int>(integer("res", 1, 4096));
+    if (j.contains("precision")) {
+        e.precision = str("precision");
+        try {
+            methods::parsePrecision(e.precision);
+        } catch (const InputError& err) {
+            fail(path, "precision", err.what());
+        }
+    }
+    if (j.contains("size")) {
+        auto s = numbers(path, "size", j["size"]);
+        if (s.size() != 2 || !(s[0] > 0) || !(s[1] > 0)) fail(path, "size", "expected [W, L] in metres, both > 0");
+        e.width = s[0];
+        e.length = s[1];
+    }
+    if (j.contains("extent")) e.extent = number("extent", 1e-6, 1e6);
+    for (const char* k : {"train", "validation"})
+        if (!j.contains(k)) fail(path, k, "missing (an object with luminaires, heights, rotations)");
+    e.train = sceneSet(path, "train", j["train"], lumDir);
+    e.validation = sceneSet(path, "validation", j["validation"], lumDir);
+    if (j.contains("objective")) {
+        e.objective = str("objective");
+        if (e.objective != "mean" && e.objective != "worst")
+            fail(path, "objective", fmt::format("expected mean or worst, found '{}'", e.objective));
+    }
+    auto checkAlgo = [&](const std::string& k, const std::string& name) {
+        if (nlopt_algorithm_from_string(name.c_str()) < 0)
+            fail(path, k, fmt::format("unknown nlopt algorithm '{}' (e.g. LN_SBPLX, LN_NELDERMEAD, GN_DIRECT_L)", name));
+        nlopt_algorithm a = nlopt_algorithm_from_string(name.c_str());
+        std::string full = nlopt_algorithm_name(a);
+        (void)full;
+    };
+    if (j.contains("algorithm")) e.algorithm = str("algorithm");
+    checkAlgo("algorithm", e.algorithm);
+    if (e.algorithm.rfind("LN_", 0) != 0 && e.algorithm.rfind("GN_", 0) != 0)
+        fail(path, "algorithm", fmt::format("'{}' needs gradients; use a derivative-free LN_ or GN_ algorithm", e.algorithm));
+    if (j.contains("global")) {
+        e.global = str("global");
+        checkAlgo("global", e.global);
+        if (e.global.rfind("GN_", 0) != 0) fail(path, "global", fmt::format("expected a GN_ algorithm, found '{}'", e.global));
+    }
+    if (j.contains("global_maxeval")) e.globalMaxeval = static_cast<int>(integer("global_maxeval", 1, 1000000));
+    if (j.contains("maxeval")) e.maxeval = static_cast<int>(integer("maxeval", 1, 1000000));
+    if (j.contains("maxtime")) e.maxtime = number("maxtime", 0, 1e7);
+    if (j.contains("seed")) e.seed = static_cast<unsigned>(integer("seed", 0, 0xffffffffL));
+    return e;
+}
+
+std::string specWith(const std::string& base, const std::vector<std::string>& names, const std::vector<double>& values)
+{
+    methods::MethodSpec s = methods::parseSpec(base);
+    std::map<std::string, std::string> kv;
+    for (const auto& k : s.given) kv[k] = s.values.at(k);
+    for (size_t i = 0; i < names.size(); ++i) kv[names[i]] = fmt::format("{}", values[i]);
+    std::string out = s.name;
+    char sep = ':';
+    for (const auto& [k, v] : kv) {
+        out += fmt::format("{}{}={}", sep, k, v);
+        sep = ',';
+    }
+    return out;
+}
+
+namespace {
+
+class Tuner {
+public:
+    Tuner(const TuneExperiment& e, const TuneOptions& o) : e_(e), opt_(o), rt_(o.device)
+    {
+        prec_ = methods::parsePrecision(e.precision);
+        base_ = methods::parseSpec(e.method);
+        const auto& fam = methods::family(base_.name);
+        for (const auto& n : e.params)
+            for (const auto& p : fam.params)
+                if (p.name == n) dims_.push_back({p});
+        train_ = cases(e.train, "train");
+        validation_ = cases(e.validation, "validation");
+    }
+
+    json run();
+
+private:
+    std::vector<Case> cases(const SceneSet& s, const std::string& what)
+    {
+        std::vector<Case> out;
+        methods::MethodSpec ref = methods::parseSpec(e_.reference);
+        methods::RenderOptions ro;
+        ro.progress = !opt_.quiet;
+        for (const auto& lum : s.luminaires) {
+            auto table = std::make_shared<photometry::Table>(photometry::load(lum));
+            for (double h : s.heights)
+                for (size_t r = 0; r < s.rotations.size(); ++r) {
+                    Case c;
+                    c.table = table;
+                    c.scene.height = h;
+                    c.scene.rotation = s.rotations[r];
+                    c.scene.res = e_.res;
+                    c.scene.width = e_.width;
+                    c.scene.length = e_.length;
+                    c.scene.extent = e_.extent;
+                    c.label = fmt::format("{} h={} R={}", fs::path(lum).stem().string(), h, s.rotationText[r]);
+                    if (!opt_.quiet) fmt::print(stderr, "tune: {} reference {}\n", what, c.label);
+                    c.ref = methods::render(rt_, *table, c.scene, ref, prec_, ro).image;
+                    out.push_back(std::move(c));
+                }
+        }
+        return out;
+    }
+
+    // NMSE of the method with `values` on every case (non-finite pixels: a
+    // large penalty so the search moves away; they are reported too).
+    std::vector<double> nmse(const std::vector<Case>& cs, const std::vector<double>& values, long* nonfinite = nullptr)
+    {
+        std::vector<std::string> names;
+        for (const auto& d : dims_) names.push_back(d.param.name);
+        methods::MethodSpec s = methods::parseSpec(specWith(e_.method, names, values));
+        methods::RenderOptions ro;
+        ro.reps = 1;  // only the image matters here
+        std::vector<double> out;
+        for (const auto& c : cs) {
+            auto r = methods::render(rt_, *c.table, c.scene, s, prec_, ro);
+            auto m = metrics::compare(c.ref, r.image);
+            if (nonfinite) *nonfinite += m.nonfinite;
+            out.push_back(m.nonfinite > 0 || !std::isfinite(m.nmse) ? 1e6 : m.nmse);
+        }
+        return out;
+    }
+
+    double aggregate(const std::vector<double>& v) const
+    {
+        if (e_.objective == "worst") return *std::max_element(v.begin(), v.end());
+        double s = 0;
+        for (double x : v) s += x;
+        return s / double(v.size());
+    }
+
+    std::vector<double> values(const std::vector<double>& u) const
+    {
+        std::vector<double> v;
+        for (size_t i = 0; i < dims_.size(); ++i) v.push_back(dims_[i].toValue(u[i]));
+        return v;
+    }
+
+    json paramsJson(const std::vector<double>& v) const
+    {
+        json p = json::object();
+        for (size_t i = 0; i < dims_.size(); ++i) p[dims_[i].param.name] = v[i];
+        return p;
+    }
+
+    // One nlopt stage from u0; updates best_ and the trace.
+    void stage(const std::string& algo, int maxeval, double maxtime, std::vector<double>& u);
+
+    const TuneExperiment& e_;
+    TuneOptions opt_;
+    ocl::Runtime rt_;
+    methods::Precision prec_;
+    methods::MethodSpec base_;
+    std::vector<Dim> dims_;
+    std::vector<Case> train_, validation_;
+    json trace_ = json::array();
+    int evals_ = 0;
+    double best_ = std::numeric_limits<double>::infinity();
+    std::vector<double> bestU_;
+    std::string stageName_;
+};
+
+void Tuner::stage(const std::string& algo, int maxeval, double maxtime, std::vector<double>& u)
+{
+    size_t n = dims_.size();
+    nlopt::opt o(static_cast<nlopt::algorithm>(nlopt_algorithm_from_string(algo.c_str())), static_cast<unsigned>(n));
+    o.set_lower_bounds(std::vector<double>(n, 0.0));
+    o.set_upper_bounds(std::vector<double>(n, 1.0));
+    o.set_maxeval(maxeval);
+    if (maxtime > 0) o.set_maxtime(maxtime);
+    o.set_initial_step(std::vector<double>(n, 0.15));  // 15% of each (scaled) range
+    o.set_xtol_abs(1e-4);
+    o.set_ftol_rel(1e-6);
+    stageName_ = algo;
+    int total = maxeval;
+    int k0 = evals_;
+    auto f = [](const std::vector<double>& x, std::vector<double>&, void* data) -> double {
+        auto* t = static_cast<std::pair<Tuner*, std::pair<int, int>>*>(data);
+        Tuner& self = *t->first;
+        auto v = self.values(x);
+        double obj = self.aggregate(self.nmse(self.train_, v));
+        ++self.evals_;
+        if (obj < self.best_) {
+            self.best_ = obj;
+            self.bestU_ = x;
+        }
+        self.trace_.push_back({{"evaluation", self.evals_},
+                               {"stage", self.stageName_},
+                               {"objective", obj},
+                               {"best", self.best_},
+                               {"params", self.paramsJson(v)}});
+        if (!self.opt_.quiet)
+            fmt::print(stderr, "tune: {} evaluation {}/{}  objective {:.6g}  best {:.6g}  {}\n", self.stageName_,
+                       self.evals_ - t->second.first, t->second.second, obj, self.best_, self.paramsJson(v).dump());
+        return obj;
+    };
+    // Progress counts k/maxeval within the stage.
+    std::pair<Tuner*, std::pair<int, int>> data{this, {k0, total}};
+    o.set_min_objective(f, &data);
+    double fval = 0;
+    try {
+        o.optimize(u, fval);
+    } catch (const nlopt::roundoff_limited&) {
+        // best point so far stands
+    } catch (const nlopt::forced_stop&) {
+    }
+    if (!bestU_.empty()) u = bestU_;
+}
+
+json Tuner::run()
+{
+    auto t0 = std::chrono::steady_clock::now();
+    nlopt::srand(e_.seed);
+    std::vector<double> defaults;
+    for (const auto& d : dims_) defaults.push_back(std::stod(base_.values.at(d.param.name)));
+
+    json doc;
+    doc["experiment"] = e_.path;
+    doc["name"] = e_.name;
+    doc["method"] = e_.method;
+    doc["objective"] = e_.objective;
+    doc["seed"] = e_.seed;
+    doc["device"] = rt_.info().name;
+    json dims = json::array();
+    for (const auto& d : dims_)
+        dims.push_back({{"name", d.param.name},
+                        {"default", d.param.def},
+                        {"lo", d.param.lo},
+                        {"hi", d.param.hi},
+                        {"scale", d.param.scale == methods::Scale::Log ? "log" : "linear"},
+                        {"meaning", d.param.meaning}});
+    doc["search"] = dims;
+    json scenes;
+    for (auto* set : {&train_, &validation_}) {
+        json a = json::array();
+        for (const auto& c : *set) a.push_back(c.label);
+        scenes[set == &train_ ? "train" : "validation"] = a;
+    }
+    doc["scenes"] = scenes;
+
+    auto summary = [&](const std::vector<double>& v, const std::string& algo, int evals) {
+        long nfT = 0, nfV = 0;
+        auto tr = nmse(train_, v, &nfT);
+        auto va = nmse(validation_, v, &nfV);
+        json s;
+        s["params"] = paramsJson(v);
+        std::vector<std::string> names;
+        for (const auto& d : dims_) names.push_back(d.param.name);
+        s["spec"] = specWith(e_.method, names, v);
+        s["train_nmse"] = aggregate(tr);
+        s["validation_nmse"] = aggregate(va);
+        s["train_nmse_per_scene"] = tr;
+        s["validation_nmse_per_scene"] = va;
+        s["train_nmse_mean"] = std::accumulate(tr.begin(), tr.end(), 0.0) / tr.size();
+        s["validation_nmse_mean"] = std::accumulate(va.begin(), va.end(), 0.0) / va.size();
+        s["train_nmse_worst"] = *std::max_element(tr.begin(), tr.end());
+        s["validation_nmse_worst"] = *std::max_element(va.begin(), va.end());
+        s["nonfinite"] = nfT + nfV;
+        s["evaluations"] = evals;
+        s["algorithm"] = algo;
+        return s;
+    };
+    doc["default"] = summary(defaults, "none", 0);
+    if (!opt_.quiet)
+        fmt::print(stderr, "tune: default  train {:.6g}  validation {:.6g}\n", doc["default"]["train_nmse"].get<double>(),
+                   doc["default"]["validation_nmse"].get<double>());
+
+    std::vector<double> u;
+    for (size_t i = 0; i < dims_.size(); ++i) u.push_back(dims_[i].toUnit(defaults[i]));
+    std::string algo = e_.algorithm;
+    double remaining = e_.maxtime;
+    if (!e_.global.empty()) {
+        int g = e_.globalMaxeval > 0 ? e_.globalMaxeval : std::max(1, e_.maxeval / 2);
+        stage(e_.global, g, e_.maxtime, u);
+        algo = e_.global + "+" + e_.algorithm;
+        if (e_.maxtime > 0)
+            remaining = std::max(1.0, e_.maxtime - std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    }
+    int left = std::max(1, e_.maxeval - evals_);
+    // The local search starts from the best point so far (the defaults are its first evaluation).
+    stage(e_.algorithm, left, remaining, u);
+    std::vector<double> best = values(bestU_.empty() ? u : bestU_);
+    doc["tuned"] = summary(best, algo, evals_);
+    doc["trace"] = trace_;
+    doc["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    doc["improved_validation"] = doc["tuned"]["validation_nmse"].get<double>() < doc["default"]["validation_nmse"].get<double>();
+    if (!opt_.quiet)
+        fmt::print(stderr, "tune: tuned {}  train {:.6g}  validation {:.6g}  ({} evaluations, {:.1f} s)\n",
+                   doc["tuned"]["params"].dump(), doc["tuned"]["train_nmse"].get<double>(),
+                   doc["tuned"]["validation_nmse"].get<double>(), evals_, doc["seconds"].get<double>());
+    return doc;
+}
+
+} // namespace
+
+json runTune(const TuneExperiment& e, const TuneOptions& opt)
+{
+    Tuner t(e, opt);
+    json doc = t.run();
+    fs::create_directories(opt.outDir);
+    fs::path out = fs::path(opt.outDir) / "tune.json";
+    {
+        std::ofstream f(out.string() + ".tmp");
+        if (!f) throw Error(fmt::format("cannot write {}", out.string()));
+        f << doc.dump(2) << "\n";
+    }
+    fs::rename(out.string() + ".tmp", out);
+    if (opt.plot) {
+        fs::path script = fs::path(LB_SOURCE_DIR) / "plots" / "tune.py";
+        fs::path png = fs::path(opt.outDir) / "tune.png";
+        if (fs::exists("/usr/bin/python3") && fs::exists(script)) {
+            std::string cmd = fmt::format("/usr/bin/python3 '{}' '{}' '{}'", script.string(), out.string(), png.string());
+            if (std::system(cmd.c_str()) != 0) fmt::print(stderr, "tune: warning: the convergence plot failed ({})\n", cmd);
+        }
+    }
+    return doc;
+}
+
+} // namespace lb::tune

@@ -1,0 +1,81 @@
+// tune.h -- nlopt tuning of a method's continuous parameters against NMSE
+// (issue 7): `lumibench tune EXP --out DIR`.
+//
+// A tune experiment (experiments/tune-*.json):
+//
+//   {"name": "tune-smoke",
+//    "method": "cubature:triangulation=fan",   // the SPEC whose tunables are searched
+//    "params": ["plane_eps", "horizon_eps"],   // default: every tunable Real/Int of the method
+//    "reference": "reference:tol=1e-4",
+//    "luminaire_dir": "luminaires", "res": 24, "precision": "float", "size": [1, 1], "extent": 5,
+//    "train":      {"luminaires": ["lambert.ldt"], "heights": [0.1], "rotations": ["pi/2", "3pi/4"]},
+//    "validation": {"luminaires": ["spot.ldt"],    "heights": [1.1], "rotations": ["pi/2", "3pi/4"]},
+//    "objective": "mean",                        // mean | worst NMSE over the training scenes
+//    "algorithm": "LN_SBPLX",                    // any nlopt name (LN_NELDERMEAD, LN_BOBYQA, ...)
+//    "global": "GN_DIRECT_L", "global_maxeval": 40,   // optional global search before the local one
+//    "maxeval": 30, "maxtime": 60, "seed": 1}
+//
+// Each parameter is searched in the unit interval mapped onto its bounds from
+// the tunables table, linearly or logarithmically (Scale::Log). Continuous
+// parameters are kernel arguments, so every evaluation reuses the cached
+// program; references come from the render cache.
+#pragma once
+
+#include "methods/registry.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace lb::tune {
+
+struct SceneSet {
+    std::vector<std::string> luminaires;  // resolved paths
+    std::vector<double> heights, rotations;
+    std::vector<std::string> rotationText;
+};
+
+struct TuneExperiment {
+    std::string path, name;
+    std::string method;               // base SPEC
+    std::vector<std::string> params;  // names searched
+    std::string reference = "reference";
+    int res = 24;
+    std::string precision = "float";
+    double width = 1, length = 1, extent = 5;
+    SceneSet train, validation;
+    std::string objective = "mean";  // mean | worst
+    std::string algorithm = "LN_SBPLX";
+    std::string global;              // "" = none
+    int globalMaxeval = 0;           // 0: half of maxeval
+    int maxeval = 30;
+    double maxtime = 0;              // seconds, 0 = none
+    unsigned seed = 1;
+    nlohmann::json raw;
+};
+
+// Reads and checks the file; lb::InputError naming the file and key otherwise.
+TuneExperiment loadTuneExperiment(const std::string& path);
+
+// One searched parameter: its row of the tunables table.
+struct Dim {
+    methods::Param param;
+    double toValue(double u) const;   // unit interval -> value (clamped to the bounds)
+    double toUnit(double v) const;    // value -> unit interval
+};
+
+struct TuneOptions {
+    std::string outDir;
+    int device = -1;
+    bool quiet = false;
+    bool plot = true;  // run plots/tune.py when /usr/bin/python3 has matplotlib
+};
+
+// Runs the search and writes outDir/tune.json (and tune.png); returns the document.
+nlohmann::json runTune(const TuneExperiment& e, const TuneOptions& opt);
+
+// The SPEC with `names` set to `values` (canonical text), the rest from `base`.
+std::string specWith(const std::string& base, const std::vector<std::string>& names, const std::vector<double>& values);
+
+} // namespace lb::tune

@@ -1,0 +1,36 @@
+#!/usr/bin/env python3
+"""Convergence plot of `lumibench tune`: objective per evaluation and the best so far.
+
+Usage: /usr/bin/python3 plots/tune.py DIR/tune.json OUT.png
+"""
+import json
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def main():
+    if len(sys.argv) != 3:
+        sys.exit("usage: tune.py tune.json out.png")
+    doc = json.load(open(sys.argv[1]))
+    trace = doc["trace"]
+    k = [t["evaluation"] for t in trace]
+    fig, ax = plt.subplots(figsize=(6, 4))
+    ax.plot(k, [t["objective"] for t in trace], ".", color="0.6", label="objective")
+    ax.plot(k, [t["best"] for t in trace], "-", color="C0", label="best so far")
+    ax.axhline(doc["default"]["train_nmse"], color="C1", ls="--", label="default (train)")
+    ax.set_yscale("log")
+    ax.set_xlabel("evaluation")
+    ax.set_ylabel(f"{doc['objective']} NMSE over the training scenes")
+    ax.set_title(f"{doc['name']}: {doc['tuned']['algorithm']}, validation "
+                 f"{doc['default']['validation_nmse']:.4g} -> {doc['tuned']['validation_nmse']:.4g}", fontsize=9)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(sys.argv[2], dpi=120)
+
+
+if __name__ == "__main__":
+    main()
