@@ -29,8 +29,9 @@ struct CubatureOptions {
     double cornerInset = 0.0;
     double dynWeight = 1.0;
     // blend_dist (m): far-field blend into a 3 x 3 grid MC (thesis 6.6);
-    // 100 m is beyond every pixel of the normalized scene: no blend.
-    double blendDist = 100.0;
+    // 1e6 m is beyond every scene of the suite (the stability catalogue's far
+    // field is at h = 1000): no blend.
+    double blendDist = 1e6;
 
     // Keys: triangulation, weighting, normalize, dynamic, plane_eps,
     // horizon_eps. `dynamic` is a '+'-separated set of cp, np, mrp,

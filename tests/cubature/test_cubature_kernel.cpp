@@ -78,7 +78,7 @@ void matchesHost(ocl::Runtime* rt, bool dbl, double tol)
         ocl::setReal(k, 7, 0.0, dbl);
         ocl::setReal(k, 8, 0.0, dbl);  // corner_inset: plain
         ocl::setReal(k, 9, 1.0, dbl);  // dyn_weight: plain
-        ocl::setReal(k, 10, 100.0, dbl);  // blend_dist: no blend
+        ocl::setReal(k, 10, 1e6, dbl);  // blend_dist: the default, no blend
         rt->launch2D(k, N, N).wait();
         std::vector<T> out(N * N);
         std::vector<int> st(2 * N * N);
@@ -155,7 +155,7 @@ TEST(CubatureKernel, TimingsTrianglesFlips)
         ocl::setReal(k, 7, 0.0, false);
         ocl::setReal(k, 8, 0.0, false);  // corner_inset: plain
         ocl::setReal(k, 9, 1.0, false);  // dyn_weight: plain
-        ocl::setReal(k, 10, 100.0, false);  // blend_dist: no blend
+        ocl::setReal(k, 10, 1e6, false);  // blend_dist: the default, no blend
         auto t = rt->time([&] { return rt->launch2D(k, N, N); }, 5, 1);
         std::vector<int> st(2 * N * N);
         rt->queue().enqueueReadBuffer(bs, CL_TRUE, 0, st.size() * 4, st.data());
