@@ -9,6 +9,7 @@
 #include "photometry/ies.h"
 
 #include "photometry/symmetry.h"
+#include "photometry/text.h"
 #include "util/error.h"
 
 #include <fmt/format.h>
@@ -185,9 +186,7 @@ std::string iesText(const Table& t, const std::string& name)
 
 void writeIes(const Table& t, const std::string& path, const std::string& name)
 {
-    std::ofstream out(path, std::ios::binary);
-    out << iesText(t, name);
-    if (!out) throw Error(fmt::format("{}: cannot write", path));
+    writeTextFile(path, iesText(t, name));
 }
 
 } // namespace lb::photometry

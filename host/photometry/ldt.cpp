@@ -11,6 +11,7 @@
 #include "photometry/ldt.h"
 
 #include "photometry/symmetry.h"
+#include "photometry/text.h"
 #include "util/error.h"
 
 #include <fmt/format.h>
@@ -219,9 +220,7 @@ std::string ldtText(const Table& t, const std::string& name)
 
 void writeLdt(const Table& t, const std::string& path, const std::string& name)
 {
-    std::ofstream out(path, std::ios::binary);
-    out << ldtText(t, name);
-    if (!out) throw Error(fmt::format("{}: cannot write", path));
+    writeTextFile(path, ldtText(t, name));
 }
 
 } // namespace lb::photometry

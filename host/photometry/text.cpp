@@ -159,4 +159,11 @@ int TokenCursor::integer(const std::string& what, int lo, int hi)
     return static_cast<int>(v);
 }
 
+void writeTextFile(const std::string& path, const std::string& text)
+{
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    if (!out) throw Error(fmt::format("{}: cannot write", path));
+}
+
 } // namespace lb::photometry

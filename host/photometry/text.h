@@ -30,6 +30,9 @@ struct TextFile {
 // How a token looks in a message: quoted, shortened, control bytes escaped.
 std::string quote(const std::string& token);
 
+// Writes `text` to `path` (binary, as given); throws lb::Error naming the path.
+void writeTextFile(const std::string& path, const std::string& text);
+
 // Strict number parsing: the whole token must be a finite decimal number.
 // decimalComma accepts "12,5" (EULUMDAT). Returns false when it is not one.
 bool parseNumber(const std::string& token, double& out, bool decimalComma);
