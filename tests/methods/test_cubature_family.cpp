@@ -3,6 +3,7 @@
 #include "methods/analytic.h"
 #include "methods/render.h"
 #include "metrics/image.h"
+#include "methods/render_helpers.h"
 #include "testutil.h"
 
 #include <fmt/format.h>
@@ -21,23 +22,8 @@ namespace {
 
 using methods::Precision;
 
-methods::RenderResult run(ocl::Runtime& rt, const photometry::Table& t, const Scene& sc, const std::string& spec,
-                          Precision p)
-{
-    methods::RenderOptions opt;
-    opt.reps = 1;
-    opt.useCache = false;
-    return methods::render(rt, t, sc, methods::parseSpec(spec), p, opt);
-}
-
-Scene scene(double h, double R, int res)
-{
-    Scene s;
-    s.height = h;
-    s.rotation = R;
-    s.res = res;
-    return s;
-}
+using test::run;
+using test::scene;
 
 std::string lambertPath() { return test::sourceDir() + "/luminaires/lambert.ldt"; }
 

@@ -2,6 +2,7 @@
 // normalized scene: convergence, determinism, symmetry, finiteness.
 #include "methods/analytic.h"
 #include "methods/render.h"
+#include "methods/render_helpers.h"
 #include "testutil.h"
 
 #include <fmt/format.h>
@@ -16,23 +17,8 @@ namespace {
 
 using methods::Precision;
 
-methods::RenderResult run(ocl::Runtime& rt, const photometry::Table& t, const Scene& sc, const std::string& spec,
-                          Precision p = Precision::Double)
-{
-    methods::RenderOptions opt;
-    opt.reps = 1;
-    opt.useCache = false;
-    return methods::render(rt, t, sc, methods::parseSpec(spec), p, opt);
-}
-
-Scene scene(double h, double R, int res)
-{
-    Scene s;
-    s.height = h;
-    s.rotation = R;
-    s.res = res;
-    return s;
-}
+using test::run;
+using test::scene;
 
 double mse(const Image& a, const Image& b)
 {
