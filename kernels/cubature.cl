@@ -7,12 +7,18 @@
  *   LB_CUB_WEIGHT     0 sample (paper Eq. 9) | 1 average (Eq. 10) | 2 dotout
  *   LB_CUB_NORMALIZE  0 none | 1 formfactor (thesis Eq. 5.11)
  *   LB_CUB_DYNAMIC    bit set of dynamic points: 1 cp, 2 np, 4 mrp, 8 barycentre (0: corners only)
+ *   LB_CUB_RECT_FAN   nothing clipped, nothing blended, fan around CP or corner 0,
+ *                     normalize none: the straight-line lb_cub_rect_fan (issue 9;
+ *                     host/methods/specialize.h decides it per scene)
+ *   LB_LANES=8        with LB_CUB_RECT_FAN and LB_LUT, float: eight pixels per
+ *                     work-item in float8 (host/methods: lanes; CPUs by default)
+ *   LB_LUT            trig-free intensity table (common/lut.h), `lum` is the LUT
  * Continuous tunables (kernel arguments): plane_eps, horizon_eps (metres),
  * corner_inset, dyn_weight (common/cubature.h lb_cubature_irradiance_ex; 0, 1 = plain),
  * blend_dist (m): beyond it the result blends into a 3 x 3 grid MC (lb_blend_weight;
  * fully MC, without the cubature, from 1.5 blend_dist on).
  *
- * @variants: "" | "-DLB_CUB_TRI=1" | "-DLB_CUB_TRI=1 -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=15" | "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_DYNAMIC=0" | "-DLB_LUT"
+ * @variants: "" | "-DLB_CUB_TRI=1" | "-DLB_CUB_TRI=1 -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=15" | "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_DYNAMIC=0" | "-DLB_LUT" | "-DLB_LUT -DLB_CUB_RECT_FAN" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=0" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0"
  */
 #include "common/lbmath.h"
 
@@ -34,6 +40,79 @@
  * irradiance in lux, row-major, row 0 at the top; rows row0 .. row0 + global
  * height. stats: 2 ints per pixel of the whole image (triangles, flips),
  * written when want_stats != 0 (pass any small buffer otherwise). */
+#if defined(LB_CUB_RECT_FAN) && defined(LB_LANES) && LB_LANES == 8 && !defined(LB_DOUBLE)
+/* Eight pixels of a row per work-item in float8 (common/lanes8.h): the host
+ * launches ceil(N / 8) work-items per row. Float only: a double build ignores
+ * LB_LANES (the host asks for 8 lanes only in float). */
+#include "common/lanes8.h"
+#include "common/lut_lanes.inc"
+#include "common/scene_lanes.inc"
+#include "common/cubature_lanes.inc"
+#include "common/lanes_end.h"
+
+__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
+                     __global int* stats, int want_stats, real plane_eps, real horizon_eps,
+                     real corner_inset, real dyn_weight, real blend_dist)
+{
+    int col0 = 8 * (int)get_global_id(0);
+    int row = row0 + (int)get_global_id(1);
+    int res = (int)P[15];
+    if (col0 >= res || row >= res)
+        return;
+    float8 ou, ov, on;
+    lb_corner_offset_x8(P, (float8)(0, 1, 2, 3, 4, 5, 6, 7) + (real)col0, row, &ou, &ov, &on);
+    real au, av, an;
+    lb_receiver_normal_local(P, &au, &av, &an);
+    int8 nt;
+    float8 e = lb_cub_rect_fan_x8(lum, ou, ov, on, P[12], P[13], au, av, an, LB_CUB_WEIGHT,
+                                  (LB_CUB_DYNAMIC & LB_CUB_CP) != 0, plane_eps, corner_inset, dyn_weight, &nt);
+    int i = row * res + col0;
+    if (col0 + 8 <= res && !want_stats) {
+        vstore8(e, 0, out + i);
+        return;
+    }
+    float ev[8];
+    int nv[8];
+    vstore8(e, 0, ev);
+    vstore8(nt, 0, nv);
+    for (int j = 0; j < 8 && col0 + j < res; ++j) {
+        out[i + j] = ev[j];
+        if (want_stats) {
+            stats[2 * (i + j)] = nv[j];
+            stats[2 * (i + j) + 1] = 0;
+        }
+    }
+}
+#elif defined(LB_CUB_RECT_FAN)
+/* The scene needs no clip and no blend, and the method is a fan around CP
+ * (or corner 0): common/cubature_lanes.inc lb_cub_rect_fan, one pixel per
+ * work-item (GPUs, double, the exact lookup). horizon_eps and blend_dist are
+ * unused: the host chose this variant because neither changes any pixel. */
+__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
+                     __global int* stats, int want_stats, real plane_eps, real horizon_eps,
+                     real corner_inset, real dyn_weight, real blend_dist)
+{
+    int col = get_global_id(0);
+    int row = row0 + (int)get_global_id(1);
+    int res = (int)P[15];
+    /* no early return: the store below is masked instead (mc.cl) */
+    bool inside = col < res && row < res;
+    real ou, ov, on, au, av, an;
+    lb_corner_offset(P, (real)col, row, &ou, &ov, &on);
+    lb_receiver_normal_local(P, &au, &av, &an);
+    int nt;
+    real e = lb_cub_rect_fan(lum, ou, ov, on, P[12], P[13], au, av, an, LB_CUB_WEIGHT,
+                             (LB_CUB_DYNAMIC & LB_CUB_CP) != 0, plane_eps, corner_inset, dyn_weight, &nt);
+    if (inside) {
+        int i = row * res + col;
+        out[i] = e;
+        if (want_stats) {
+            stats[2 * i] = nt;
+            stats[2 * i + 1] = 0;
+        }
+    }
+}
+#else
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
                      __global int* stats, int want_stats, real plane_eps, real horizon_eps,
                      real corner_inset, real dyn_weight, real blend_dist)
@@ -61,3 +140,4 @@ __kernel void render(__global const real* P, __global const float* lum, __global
         stats[2 * i + 1] = nf;
     }
 }
+#endif

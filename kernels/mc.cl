@@ -25,13 +25,9 @@
  * light's plane when >= 0 (the same arithmetic as the kernel's `on`). */
 LB_FN real mc_on(__global const real* P, int col, int row)
 {
-    real s = P[14], fres = P[15];
-    real x = -R(0.5) * s + ((real)col + R(0.5)) * s / fres;
-    real y = R(0.5) * s - ((real)row + R(0.5)) * s / fres;
-    real ox = P[0] - R(0.5) * (P[12] * P[3] + P[13] * P[6]) - x;
-    real oy = P[1] - R(0.5) * (P[12] * P[4] + P[13] * P[7]) - y;
-    real oz = P[2] - R(0.5) * (P[12] * P[5] + P[13] * P[8]);
-    return ox * P[9] + oy * P[10] + oz * P[11];
+    real ou, ov, on;
+    lb_corner_offset(P, (real)col, row, &ou, &ov, &on);
+    return on;
 }
 
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
@@ -43,22 +39,12 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     /* No per-pixel early return: every work-item of a group reaches the
      * barrier below equally often. */
     bool inside = col < res && row < res;
-    /* All scalar (see common/scene.h for P): float3 values in the loop body
-     * stop PoCL's work-item loop vectoriser. */
-    real s = P[14], fres = P[15];
-    real x = -R(0.5) * s + ((real)col + R(0.5)) * s / fres;
-    real y = R(0.5) * s - ((real)row + R(0.5)) * s / fres;
-    real ux = P[3], uy = P[4], uz = P[5];
-    real vx = P[6], vy = P[7], vz = P[8];
-    real nlx = P[9], nly = P[10], nlz = P[11];
+    /* All scalar (common/scene_lanes.inc): float3 values in the loop body
+     * stop PoCL's work-item loop vectoriser. Offset of corner (-u, -v) from
+     * the pixel, in the light frame. */
+    real ou, ov, on;
+    lb_corner_offset(P, (real)col, row, &ou, &ov, &on);
     real w = P[12], l = P[13];
-    /* Offset o of corner (-u, -v) from the pixel (x, y, 0), in the light frame. */
-    real ox = P[0] - R(0.5) * (w * ux + l * vx) - x;
-    real oy = P[1] - R(0.5) * (w * uy + l * vy) - y;
-    real oz = P[2] - R(0.5) * (w * uz + l * vz);
-    real ou = ox * ux + oy * uy + oz * uz;
-    real ov = ox * vx + oy * vy + oz * vz;
-    real on = ox * nlx + oy * nly + oz * nlz;
 #ifdef LB_NO_BACK
     /* Every direction d = -w to a pixel with on >= 0 has d . n_L <= 0: no
      * light. The barrier below needs the whole work-group to take the same
@@ -79,10 +65,9 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     }
 #endif
     /* Receiver cosine (unnormalised): n_x . w = au (ou + W s) + av (ov + L t) + an on. */
-    real nxx = P[16], nxy = P[17], nxz = P[18];
-    real au = nxx * ux + nxy * uy + nxz * uz;
-    real av = nxx * vx + nxy * vy + nxz * vz;
-    real an0 = (nxx * nlx + nxy * nly + nxz * nlz) * on;
+    real au, av, an;
+    lb_receiver_normal_local(P, &au, &av, &an);
+    real an0 = an * on;
     real on2 = on * on;
     real sum = R(0);
     for (int i = 0; i < n; ++i) {

@@ -31,9 +31,11 @@ struct Bench {
         std::vector<float> f(v.begin(), v.end());
         return floats(f);
     }
-    double time(cl::Kernel& k)
+    // `lanes` pixels of a row per work-item (methods::Family::lanes).
+    double time(cl::Kernel& k, int lanes = 1)
     {
-        return rt.time([&] { return rt.launch2D(k, scene.res, scene.res, opt.lx, opt.ly); }, opt.reps, 1).median_ms;
+        size_t cols = (scene.res + lanes - 1) / lanes;
+        return rt.time([&] { return rt.launch2D(k, cols, scene.res, opt.lx, opt.ly); }, opt.reps, 1).median_ms;
     }
 
     // naive.cl or mc.cl: render(P, lum, out, row0, st, n).
@@ -55,9 +57,10 @@ struct Bench {
     // cubature.cl: render(P, lum, out, row0, stats, want_stats, plane_eps, horizon_eps,
     // corner_inset, dyn_weight, blend_dist),
     // without the per-pixel statistics (want_stats = 0).
-    double cubature(const std::string& defines, const std::vector<float>& lum)
+    double cubature(const std::string& defines, const std::vector<float>& lum, int lanes = 1)
     {
-        cl::Kernel k = rt.kernel("cubature.cl", "render", defines);
+        cl::Kernel k = rt.kernel("cubature.cl", "render",
+                                 lanes > 1 ? defines + fmt::format(" -DLB_LANES={}", lanes) : defines);
         methods::CubatureOptions co;
         cl::Buffer P = reals(scene.params()), L = floats(lum);
         cl::Buffer out(rt.context(), CL_MEM_WRITE_ONLY, sizeof(float) * scene.res * scene.res);
@@ -73,7 +76,7 @@ struct Bench {
         ocl::setReal(k, 8, co.cornerInset, false);
         ocl::setReal(k, 9, co.dynWeight, false);
         ocl::setReal(k, 10, co.blendDist, false);
-        return time(k);
+        return time(k, lanes);
     }
 };
 
@@ -172,16 +175,32 @@ nlohmann::json run(ocl::Runtime& rt, const photometry::Table& table, const Scene
         if (fam.setArgs) fam.setArgs(ctx, 4);
         add(name, b.time(k), defs);
     }
-    methods::CubatureOptions co;
-    double cubExact = b.cubature(co.defines(), exact);
-    double cub = b.cubature(co.defines() + " -DLB_LUT", lut.packed);
-    add("cubature (exact lookup)", cubExact, co.defines());
-    add("cubature", cub, co.defines() + " -DLB_LUT");
+    // The cubature as `render` builds it (methods/specialize.h
+    // analyseCubature): specialised, then the general kernel with the same
+    // LUT, then the exact lookup.
+    auto cubDefines = [&](const methods::CubatureOptions& o) {
+        return o.defines() + methods::analyseCubature(scene, table, o).defines();
+    };
+    methods::CubatureOptions co, coGeneral, coExact, co1;
+    coGeneral.specialize = false;
+    coExact.specialize = false;
+    coExact.lut = false;
+    co1.lanes = 1;
+    const auto cubSpec = methods::analyseCubature(scene, table, co);
+    const int lanes = methods::cubatureLanes(cubSpec, co, rt.info().type, false);
+    double cub = b.cubature(cubDefines(co), lut.packed, lanes);
+    double cubGeneral = b.cubature(cubDefines(coGeneral), lut.packed);
+    double cubExact = b.cubature(cubDefines(coExact), exact);
+    add("cubature (exact lookup, general)", cubExact, cubDefines(coExact));
+    add("cubature (lut, general)", cubGeneral, cubDefines(coGeneral));
+    if (cubSpec.rectFan && lanes > 1) add("cubature:lanes=1", b.cubature(cubDefines(co1), lut.packed), cubDefines(co1));
+    add("cubature", cub, cubDefines(co) + (lanes > 1 ? fmt::format(" -DLB_LANES={}", lanes) : ""));
+    doc["cubature_specialization"] = cubSpec.json();
+    doc["cubature_lanes"] = lanes;
     if (!opt.quick) {
         methods::CubatureOptions cd;
         cd.triangulation = 1;
-        add("cubature:triangulation=delaunay", b.cubature(cd.defines() + " -DLB_LUT", lut.packed),
-            cd.defines() + " -DLB_LUT");
+        add("cubature:triangulation=delaunay", b.cubature(cubDefines(cd), lut.packed), cubDefines(cd));
     }
     doc["methods"] = methods;
 
@@ -208,8 +227,9 @@ std::string format(const nlohmann::json& d)
     o << fmt::format("device: {} ({}), {}^2 pixels, local {}x{}, median of {} after 1 warm-up\n",
                      d["device"].get<std::string>(), d["driver"].get<std::string>(), d["res"].get<int>(),
                      d["local"][0].get<int>(), d["local"][1].get<int>(), d["reps"].get<int>());
-    o << fmt::format("luminaire: {}  scene: {}\nspecialization: {}\n", d["luminaire"].get<std::string>(),
-                     d["scene"].get<std::string>(), d["specialization"].dump());
+    o << fmt::format("luminaire: {}  scene: {}\nspecialization: mc {}, cubature {}\n",
+                     d["luminaire"].get<std::string>(), d["scene"].get<std::string>(), d["specialization"].dump(),
+                     d["cubature_specialization"].dump());
     const auto& mc = d["mc"];
     o << fmt::format("MC n={}: naive {:.3g} samples/s, fast {:.3g} samples/s, ratio {:.1f} (target >= 10: {})\n",
                      mc["n"].get<int>(), mc["naive_sps"].get<double>(), mc["fast_sps"].get<double>(),

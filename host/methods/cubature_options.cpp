@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
 #include <sstream>
 
@@ -87,9 +88,13 @@ CubatureOptions CubatureOptions::parse(const std::map<std::string, std::string>&
         else if (k == "corner_inset") o.cornerInset = nonNegative(k, v);
         else if (k == "dyn_weight") o.dynWeight = nonNegative(k, v);
         else if (k == "blend_dist") o.blendDist = nonNegative(k, v);
+        else if (k == "lookup") o.lut = choose(k, v, {"lut", "exact"}) == 0;
+        else if (k == "specialize") o.specialize = choose(k, v, {"auto", "none"}) == 0;
+        else if (k == "lanes") o.lanes = std::array<int, 3>{0, 1, 8}[choose(k, v, {"auto", "1", "8"})];
         else
             throw InputError(fmt::format("cubature: unknown parameter '{}' (expected triangulation, weighting, "
-                                         "normalize, dynamic, plane_eps, horizon_eps, corner_inset, dyn_weight, blend_dist)",
+                                         "normalize, dynamic, plane_eps, horizon_eps, corner_inset, dyn_weight, blend_dist, "
+                                         "lookup, specialize, lanes)",
                                          k));
     }
     return o;
@@ -113,7 +118,10 @@ std::map<std::string, std::string> CubatureOptions::describe() const
             {"horizon_eps", fmt::format("{}", horizonEps)},
             {"corner_inset", fmt::format("{}", cornerInset)},
             {"dyn_weight", fmt::format("{}", dynWeight)},
-            {"blend_dist", fmt::format("{}", blendDist)}};
+            {"blend_dist", fmt::format("{}", blendDist)},
+            {"lookup", lut ? "lut" : "exact"},
+            {"specialize", specialize ? "auto" : "none"},
+            {"lanes", lanes == 0 ? "auto" : std::to_string(lanes)}};
 }
 
 } // namespace lb::methods

@@ -32,9 +32,19 @@ struct CubatureOptions {
     // 1e6 m is beyond every scene of the suite (the stability catalogue's far
     // field is at h = 1000): no blend.
     double blendDist = 1e6;
+    // lookup: the trig-free table (common/lut.h, as mc's default) or the exact
+    // bilinear lookup; specialize: the smallest kernel for the scene
+    // (methods/specialize.h) or the general one.
+    bool lut = true;
+    bool specialize = true;
+    // lanes: pixels per work-item of the straight-line rectangle fan, 0 =
+    // auto (8 on CPU devices, 1 elsewhere); used only where that variant
+    // applies, in float with the LUT (methods/specialize.h cubatureLanes).
+    int lanes = 0;
 
     // Keys: triangulation, weighting, normalize, dynamic, plane_eps,
-    // horizon_eps. `dynamic` is a '+'-separated set of cp, np, mrp,
+    // horizon_eps, corner_inset, dyn_weight, blend_dist, lookup, specialize,
+    // lanes. `dynamic` is a '+'-separated set of cp, np, mrp,
     // barycentre (alias bary), or none (corners only). Unknown keys, values
     // or negative epsilons throw lb::InputError naming them.
     static CubatureOptions parse(const std::map<std::string, std::string>& kv);

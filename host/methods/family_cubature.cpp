@@ -2,6 +2,8 @@
 // math in kernels/common/cubature.h, spec keys -> defines in cubature_options.h.
 #include "methods/cubature_options.h"
 #include "methods/registry.h"
+#include "methods/specialize.h"
+#include "photometry/lut.h"
 #include "util/error.h"
 
 #include <fmt/format.h>
@@ -55,6 +57,14 @@ void registerCubature(Registry& r)
                     "beyond this distance (m) from the light's centre the result blends linearly into a 3 x 3 grid "
                     "MC estimate, fully MC from 1.5x on (thesis 6.6; the default 1e6 = never: beyond every scene of the "
                     "suite, the h = 1000 far-field stability cases included)"),
+        Param::choice("lookup", "lut", {"lut", "exact"},
+                      "intensity lookup: trig-free table (photometry/lut.h, as mc) or the exact bilinear one"),
+        Param::choice("specialize", "auto", {"auto", "none"},
+                      "auto: smallest kernel for the scene (methods/specialize.h: the straight-line fan of an "
+                      "unclipped rectangle, 1D table); none: the general one"),
+        Param::choice("lanes", "auto", {"auto", "1", "8"},
+                      "pixels per work-item of the straight-line rectangle fan (float, lut): 8 = float8 code, "
+                      "auto = 8 on CPU devices (PoCL), 1 elsewhere"),
     };
     f.validate = [](const MethodSpec& s) {
         CubatureOptions o = options(s);
@@ -69,6 +79,17 @@ void registerCubature(Registry& r)
                 dynamicSetName(o.dynamic)));
     };
     f.defines = [](const MethodSpec& s) { return options(s).defines(); };
+    f.sceneDefines = [](const MethodSpec& s, const Scene& scene, const photometry::Table& t) {
+        return analyseCubature(scene, t, options(s)).defines();
+    };
+    f.lanes = [](const MethodSpec& s, const Scene& scene, const photometry::Table& t, const ocl::DeviceInfo& dev,
+                 Precision p) {
+        CubatureOptions o = options(s);
+        return cubatureLanes(analyseCubature(scene, t, o), o, dev.type, p == Precision::Double);
+    };
+    f.lumBuffer = [](const MethodSpec& s, const photometry::Table& t) {
+        return options(s).lut ? photometry::buildLut(t).packed : t.packed();
+    };
     f.setArgs = [](LaunchContext& c, int first) {
         CubatureOptions o = options(c.spec);
         size_t npx = static_cast<size_t>(c.res()) * c.res();

@@ -41,6 +41,7 @@ struct LaunchContext {
     std::map<std::string, Image> extraImages;   // e.g. "err" for the reference
     std::map<std::string, cl::Buffer> named;    // buffers setArgs hands to finish (e.g. "stats")
     nlohmann::json stats = nlohmann::json::object();  // named counters for the result file
+    int lanes = 1;                              // pixels of a row per work-item (Family::lanes)
 
     bool dbl() const { return precision == Precision::Double; }
     int res() const { return scene.res; }
@@ -69,6 +70,11 @@ struct Family {
     // Optional: the float buffer passed as `lum` (default: table.packed()), e.g.
     // the trig-free table of photometry/lut.h for kernels built with -DLB_LUT.
     std::function<std::vector<float>(const MethodSpec&, const photometry::Table&)> lumBuffer;
+    // Optional: pixels of a row per work-item for this spec, scene and device
+    // (default 1). With n > 1 the program gets -DLB_LANES=n and the launch
+    // ceil(N / n) work-items per row.
+    std::function<int(const MethodSpec&, const Scene&, const photometry::Table&, const ocl::DeviceInfo&, Precision)>
+        lanes;
     // Sets the kernel's arguments from index `first` on (after P, lum, out, row0).
     std::function<void(LaunchContext&, int first)> setArgs;
     // After the timed runs: read extra buffers, fill stats / extraImages.

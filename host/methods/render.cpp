@@ -128,9 +128,12 @@ RenderResult render(ocl::Runtime& rt, const photometry::Table& table, const Scen
     std::string options = fam.defines ? fam.defines(spec) : std::string();
     if (fam.sceneDefines) options += fam.sceneDefines(spec, scene, table);
     if (dbl) options += " -DLB_DOUBLE";
+    const int lanes = fam.lanes ? fam.lanes(spec, scene, table, rt.info(), precision) : 1;
+    if (lanes > 1) options += fmt::format(" -DLB_LANES={}", lanes);
     double b0 = rt.buildSeconds();
     LaunchContext ctx{rt, spec, scene, table, precision, rt.kernel(fam.file, fam.kernelName, options), {}, {}, {}, {}};
     ctx.stats = nlohmann::json::object();  // {} above made it null
+    ctx.lanes = lanes;
     result.buildSeconds = rt.buildSeconds() - b0;
 
     const int res = scene.res;
@@ -155,7 +158,7 @@ RenderResult render(ocl::Runtime& rt, const photometry::Table& table, const Scen
         for (int r0 = 0; r0 < res; r0 += band) {
             int rows = std::min(band, res - r0);
             ctx.kernel.setArg(3, cl_int(r0));
-            total += ocl::Runtime::eventMs(rt.launch2D(ctx.kernel, res, rows));
+            total += ocl::Runtime::eventMs(rt.launch2D(ctx.kernel, (res + lanes - 1) / lanes, rows));
             if (opt.progress)
                 std::cerr << fmt::format("\r{}: {:3d}% ({:.1f} s)", spec.name, 100 * (r0 + rows) / res, total / 1e3)
                           << std::flush;
@@ -163,7 +166,8 @@ RenderResult render(ocl::Runtime& rt, const photometry::Table& table, const Scen
         if (opt.progress) std::cerr << '\n';
         result.timing = ocl::summarize({total});
     } else {
-        result.timing = rt.time([&] { return rt.launch2D(ctx.kernel, res, res); }, std::max(1, opt.reps), 1);
+        const size_t cols = (res + lanes - 1) / lanes;
+        result.timing = rt.time([&] { return rt.launch2D(ctx.kernel, cols, res); }, std::max(1, opt.reps), 1);
     }
 
     result.image = Image(res, res);

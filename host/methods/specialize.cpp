@@ -14,15 +14,16 @@ std::string Specialization::defines() const
     if (lut && lut1d) d += " -DLB_LUT_1D";
     if (noHorizon) d += " -DLB_NO_HORIZON";
     if (noBack) d += " -DLB_NO_BACK";
+    if (rectFan) d += " -DLB_CUB_RECT_FAN";
     return d;
 }
 
 nlohmann::json Specialization::json() const
 {
-    return {{"lut", lut}, {"lut1d", lut && lut1d}, {"no_horizon", noHorizon}, {"no_back", noBack}};
+    return {{"lut", lut}, {"lut1d", lut && lut1d}, {"no_horizon", noHorizon}, {"no_back", noBack}, {"rect_fan", rectFan}};
 }
 
-bool lightAboveEveryHorizon(const Scene& scene)
+bool lightAboveEveryHorizon(const Scene& scene, double margin)
 {
     auto P = scene.params();
     glm::dvec3 nx(P[16], P[17], P[18]);
@@ -31,7 +32,37 @@ bool lightAboveEveryHorizon(const Scene& scene)
     for (const auto& p : scene.corners())
         for (int r : {0, n - 1})
             for (int c : {0, n - 1}) lo = std::min(lo, glm::dot(nx, p - scene.pixel(r, c)));
-    return lo > 0;
+    return lo > margin;
+}
+
+namespace {
+
+// Largest distance from the light's centre to a pixel centre: distance is
+// convex, so over the square grid it peaks at an image corner.
+double farthestPixel(const Scene& scene)
+{
+    glm::dvec3 c(scene.params()[0], scene.params()[1], scene.params()[2]);
+    int n = scene.res;
+    double far = 0;
+    for (int r : {0, n - 1})
+        for (int col : {0, n - 1}) far = std::max(far, glm::length(scene.pixel(r, col) - c));
+    return far;
+}
+
+} // namespace
+
+Specialization analyseCubature(const Scene& scene, const photometry::Table& table, const CubatureOptions& o)
+{
+    Specialization s;
+    s.lut = o.lut;
+    if (!o.specialize) return s;
+    s.lut1d = o.lut && photometry::isRotational(table);
+    // lb_blend_weight is exactly 0 up to blend_dist; 1e-6 relative covers the
+    // kernel's float rounding of the distance.
+    bool noBlend = farthestPixel(scene) * (1 + 1e-6) < o.blendDist;
+    bool fanCp = o.triangulation == 0 && (o.dynamic == 1 || o.dynamic == 0);
+    s.rectFan = fanCp && !o.formfactor && noBlend && lightAboveEveryHorizon(scene, o.horizonEps + o.planeEps);
+    return s;
 }
 
 Specialization analyse(const Scene& scene, const photometry::Table& table, bool lut, bool specialize)
@@ -43,6 +74,17 @@ Specialization analyse(const Scene& scene, const photometry::Table& table, bool 
     s.noHorizon = lightAboveEveryHorizon(scene);
     s.noBack = photometry::emitsNoBack(table);
     return s;
+}
+
+} // namespace lb::methods
+
+namespace lb::methods {
+
+int cubatureLanes(const Specialization& s, const CubatureOptions& o, const std::string& deviceType, bool dbl)
+{
+    if (!s.rectFan || !s.lut || dbl) return 1;
+    if (o.lanes > 0) return o.lanes;
+    return deviceType == "CPU" ? 8 : 1;
 }
 
 } // namespace lb::methods

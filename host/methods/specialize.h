@@ -17,7 +17,18 @@
 //              no azimuth computation.
 //   fan        (cubature) triangulation=fan: no flip machinery (already a
 //              structural define of cubature.cl, LB_CUB_TRI=0).
+//   rectFan    (cubature) nothing is clipped -- every light corner lies more
+//              than horizon_eps + plane_eps above the receiver plane of every
+//              pixel (the plane shift moves a receiver by up to plane_eps
+//              before the tilted-horizon clip) --, no pixel is beyond
+//              blend_dist from the light's centre (the pixel farthest away is
+//              an image corner), and the method is a fan around CP or corner
+//              0 without formfactor: LB_CUB_RECT_FAN, the straight-line
+//              lb_cub_rect_fan of common/cubature.h (no clip, no
+//              triangulation structure, no loops; PoCL vectorises it).
 #pragma once
+
+#include "methods/cubature_options.h"
 
 #include "photometry/table.h"
 #include "scene/scene.h"
@@ -33,6 +44,7 @@ struct Specialization {
     bool lut1d = false;      // LB_LUT_1D
     bool noHorizon = false;  // LB_NO_HORIZON
     bool noBack = false;     // LB_NO_BACK
+    bool rectFan = false;    // LB_CUB_RECT_FAN (cubature only)
 
     std::string defines() const;  // " -DLB_LUT ..." (leading space when not empty)
     nlohmann::json json() const;
@@ -42,7 +54,16 @@ struct Specialization {
 // `specialize` = false gives the general kernel (only the lookup choice).
 Specialization analyse(const Scene& scene, const photometry::Table& table, bool lut, bool specialize = true);
 
-// Whether every light corner is above the receiver of every pixel.
-bool lightAboveEveryHorizon(const Scene& scene);
+// The cubature's analysis: lookup, lut1d and rectFan (the other rules do not
+// apply to cubature.cl). o.lut and o.specialize choose as for mc.
+Specialization analyseCubature(const Scene& scene, const photometry::Table& table, const CubatureOptions& o);
+
+// Pixels per work-item for the cubature: o.lanes (0 = 8 on a CPU device, 1
+// elsewhere) where the rectangle fan runs in float with the LUT, else 1.
+int cubatureLanes(const Specialization& s, const CubatureOptions& o, const std::string& deviceType, bool dbl);
+
+// Whether every light corner is more than `margin` (m) above the receiver of
+// every pixel.
+bool lightAboveEveryHorizon(const Scene& scene, double margin = 0);
 
 } // namespace lb::methods

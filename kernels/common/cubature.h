@@ -585,3 +585,10 @@ LB_FN real lb_blend_weight(real dist, real blend_dist)
 {
     return clamp((dist - blend_dist) / (R(0.5) * blend_dist), R(0), R(1));
 }
+
+/* The straight-line cubature of an unclipped rectangle (issue 9):
+ * cubature_lanes.inc, here one pixel per call (lb_cub_rect_fan); the 8-lane
+ * form is included by kernels/cubature.cl. */
+#include "lanes1.h"
+#include "cubature_lanes.inc"
+#include "lanes_end.h"

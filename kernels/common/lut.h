@@ -57,51 +57,10 @@ LB_FN real lb_lut_a(real x, real y)
     return a < R(0) ? a + R(4) : a;
 }
 
-/* Intensity (cd) in direction (x, y, z) of the luminaire frame, not
- * necessarily normalised. Bilinear on the uniform (q, a) grid. */
-LB_FN real lb_lut_intensity3(__global const float* lut, real x, real y, real z)
-{
-    int ng = (int)lut[0];
-    real rho = LB_LUT_SQRT(x * x + y * y);
-    real sg = rho + (z < R(0) ? -z : z);
-    /* q and a share one division: 1 / ((rho + |z|) (|x| + |y|)). On the axis
-     * (|x| + |y| = 0, so rho = 0) both pseudo-angles are 0 / q(z). The 1D
-     * variant computes q the same way, so that it equals the 2D one to the
-     * last bit. */
-    real sa = (x < R(0) ? -x : x) + (y < R(0) ? -y : y);
-    real inv = R(1) / (sg * sa);
-    real t = sa > R(0) ? rho * sa * inv : R(0);
-    real q = z >= R(0) ? t : R(2) - t;
-#ifndef LB_LUT_1D
-    real p = sa > R(0) ? y * sg * inv : R(0);
-    real a = x >= R(0) ? p : R(2) - p;
-    a = a < R(0) ? a + R(4) : a;
-#endif
-    real fg = (q - (real)lut[2]) * (real)lut[4];
-    /* Branch-free (the loop vectoriser if-converts no loads): read a clamped
-     * cell, then zero the result outside the measured range. */
-    real keep = (fg >= R(0) && fg <= (real)ng) ? R(1) : R(0);
-    fg = fg < R(0) ? R(0) : fg;
-    fg = fg > (real)ng ? (real)ng : fg;
-    int ig = (int)fg;
-    ig = ig > ng - 1 ? ng - 1 : ig;
-    real tg = fg - (real)ig;
-#ifdef LB_LUT_1D
-    __global const float* c0 = lut + LB_LUT_HEADER + ig;
-    return keep * ((real)c0[0] + ((real)c0[1] - (real)c0[0]) * tg);
-#else
-    int na = (int)lut[1];
-    real fa = a * (real)lut[5];
-    int ia = (int)fa;
-    ia = ia > na - 1 ? na - 1 : ia;
-    real ta = fa - (real)ia;
-    __global const float* c0 = lut + LB_LUT_HEADER + ia * (ng + 1) + ig;
-    __global const float* c1 = c0 + (ng + 1);
-    real lo = (real)c0[0] + ((real)c0[1] - (real)c0[0]) * tg;
-    real hi = (real)c1[0] + ((real)c1[1] - (real)c1[0]) * tg;
-    return keep * (lo + (hi - lo) * ta);
-#endif
-}
+/* lb_lut_intensity3(lut, x, y, z): lut_lanes.inc, one pixel per call here. */
+#include "lanes1.h"
+#include "lut_lanes.inc"
+#include "lanes_end.h"
 
 LB_FN real lb_lut_intensity(__global const float* lut, real3 d)
 {

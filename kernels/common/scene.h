@@ -56,3 +56,17 @@ LB_FN real3 lb_to_light_frame(lb_light L, real3 d)
 {
     return R3(dot(d, L.u), dot(d, L.v), dot(d, L.n));
 }
+
+/* The receiver normal n_x (P[16..19)) in the light's frame (u, v, n_L). */
+LB_FN void lb_receiver_normal_local(__global const real* P, real* au, real* av, real* an)
+{
+    real nxx = P[16], nxy = P[17], nxz = P[18];
+    *au = nxx * P[3] + nxy * P[4] + nxz * P[5];
+    *av = nxx * P[6] + nxy * P[7] + nxz * P[8];
+    *an = nxx * P[9] + nxy * P[10] + nxz * P[11];
+}
+
+/* lb_corner_offset(P, col, row, &ou, &ov, &on): scene_lanes.inc. */
+#include "lanes1.h"
+#include "scene_lanes.inc"
+#include "lanes_end.h"

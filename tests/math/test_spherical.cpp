@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 namespace {
@@ -129,6 +130,43 @@ TEST(Spherical, LambertTiltedMatchesQuadrature)
         }
     s *= W * L / (n * n);
     EXPECT_NEAR(E, s, 1e-5 * s);
+}
+
+} // namespace
+
+namespace {
+
+// lb_atan2_poly (cubature_lanes.inc) in float against std::atan2 in double:
+// every octant, the axes, tiny and huge ratios, both signs. Cephes quotes
+// ~2 ulp for its atanf polynomial; the reduction adds one division and one
+// addition of pi/4, pi/2 or pi. Bound: 2.5e-7 relative or 1.5e-7 absolute
+// (whichever is larger: near the octant boundaries pi/2 - a and pi - a cancel).
+TEST(Spherical, Atan2PolyFloat)
+{
+    double worstRel = 0, worstAbs = 0;
+    auto check = [&](float y, float x) {
+        double a = lb::f32::lb_atan2_poly(y, x);
+        double e = std::atan2(double(y), double(x));
+        double err = std::fabs(a - e);
+        ASSERT_LE(err, std::max(2.5e-7 * std::fabs(e), 1.5e-7)) << y << ", " << x;
+        if (e != 0) worstRel = std::max(worstRel, err / std::fabs(e));
+        worstAbs = std::max(worstAbs, err);
+    };
+    for (int i = 0; i <= 20000; ++i) {
+        double t = 2 * kPi * i / 20000;
+        for (double r : {1e-30, 1e-3, 1.0, 7.5, 1e20}) check(float(r * std::sin(t)), float(r * std::cos(t)));
+    }
+    for (float s : {1e-8f, 1e-4f, 0.4142135f, 0.41421357f, 1.0f, 2.4142137f, 1e4f, 1e8f})
+        for (float sy : {-1.0f, 1.0f})
+            for (float sx : {-1.0f, 1.0f}) check(sy * s, sx * 1.0f);
+    check(0.0f, 1.0f);
+    check(1.0f, 0.0f);
+    check(0.0f, -1.0f);
+    check(-1.0f, 0.0f);
+    EXPECT_EQ(lb::f32::lb_atan2_poly(0.0f, 0.0f), 0.0f);
+    // double kernels call atan2 itself
+    EXPECT_EQ(lb::f64::lb_atan2_poly(0.3, -0.7), std::atan2(0.3, -0.7));
+    std::printf("lb_atan2_poly float: worst %.3g relative, %.3g absolute\n", worstRel, worstAbs);
 }
 
 } // namespace

@@ -139,10 +139,12 @@ TEST(CubatureFamily, LambertFormfactorMatchesReference)
     for (double h : {0.1, 1.1}) {
         Scene sc = scene(h, 3 * M_PI / 4, 16);
         auto ref = run(*rt, t, sc, "reference", rt->fp64() ? Precision::Double : Precision::Float);
-        for (const char* spec : {"cubature:normalize=formfactor",
+        // lookup=exact: the bound above is the exact bilinear lookup's (the
+        // trig-free table's error is tested in tests/photometry/test_lut.cpp)
+        for (const char* spec : {"cubature:normalize=formfactor,lookup=exact",
                                  "cubature:normalize=formfactor,triangulation=delaunay,weighting=dotout,"
-                                 "dynamic=cp+np+mrp+barycentre",
-                                 "cubature:normalize=formfactor,weighting=sample,dynamic=np"}) {
+                                 "dynamic=cp+np+mrp+barycentre,lookup=exact",
+                                 "cubature:normalize=formfactor,weighting=sample,dynamic=np,lookup=exact"}) {
             for (Precision p : {Precision::Float, Precision::Double}) {
                 if (p == Precision::Double && !rt->fp64()) continue;
                 double tol = p == Precision::Double ? 3e-5 : 5e-5;
@@ -170,7 +172,9 @@ TEST(CubatureFamily, LambertFormfactorMatchesReference)
 // already Delaunay (the thesis saw no flips), so the delaunay variant makes no
 // flip and renders the identical image, bit for bit (the flip sweep only
 // reads the triangulation when it flips nothing). Kinked, asymmetric
-// luminaire (sideways) and every published rotation at two heights.
+// luminaire (sideways) and every published rotation at two heights. The fan
+// is the general kernel's (specialize=none): the straight-line fan of an
+// unclipped rectangle equals it up to rounding, test_specialize.cpp.
 TEST(CubatureFamily, FanEqualsDelaunayForCornersAndClosestPoint)
 {
     LB_REQUIRE_RUNTIME(rt);
@@ -178,7 +182,7 @@ TEST(CubatureFamily, FanEqualsDelaunayForCornersAndClosestPoint)
     for (double h : {0.1, 1.1})
         for (double R : {M_PI / 2, 5 * M_PI / 8, 3 * M_PI / 4, 7 * M_PI / 8, M_PI}) {
             Scene sc = scene(h, R, 24);
-            auto fan = run(*rt, t, sc, "cubature", Precision::Float);
+            auto fan = run(*rt, t, sc, "cubature:specialize=none", Precision::Float);
             auto del = run(*rt, t, sc, "cubature:triangulation=delaunay", Precision::Float);
             EXPECT_EQ(int(del.stats.at("flips_max")), 0) << h << " " << R;
             EXPECT_EQ(fan.image.px, del.image.px) << h << " " << R;

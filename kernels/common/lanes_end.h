@@ -1,0 +1,9 @@
+/* lanes_end.h -- see lanes1.h. */
+#undef LB_V
+#undef LB_I
+#undef LB_M
+#undef LB_VFN
+#undef LB_TO_I
+#undef LB_TO_V
+#undef LB_GATHER
+#undef LB_VINTENSITY3
