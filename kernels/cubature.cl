@@ -67,8 +67,12 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     float8 e = lb_cub_rect_fan_x8(lum, ou, ov, on, P[12], P[13], au, av, an, LB_CUB_WEIGHT,
                                   (LB_CUB_DYNAMIC & LB_CUB_CP) != 0, plane_eps, corner_inset, dyn_weight, &nt);
     int i = row * res + col0;
-    if (col0 + 8 <= res && !want_stats) {
+    if (col0 + 8 <= res) {
         vstore8(e, 0, out + i);
+        if (want_stats) { /* (triangles, flips = 0) pairs; 8-wide (16-wide vectors change the ABI on AVX2) */
+            vstore8((int8)(nt.s0, 0, nt.s1, 0, nt.s2, 0, nt.s3, 0), 0, stats + 2 * i);
+            vstore8((int8)(nt.s4, 0, nt.s5, 0, nt.s6, 0, nt.s7, 0), 0, stats + 2 * i + 8);
+        }
         return;
     }
     float ev[8];
