@@ -1,5 +1,6 @@
 #include "bench/bench.h"
 
+#include "experiments/results.h"
 #include "methods/cubature_options.h"
 #include "methods/registry.h"
 #include "methods/samples.h"
@@ -97,6 +98,8 @@ nlohmann::json run(ocl::Runtime& rt, const photometry::Table& table, const Scene
     nlohmann::json doc;
     doc["device"] = rt.info().name;
     doc["driver"] = rt.info().platform + " " + rt.info().driver;
+    // commit, date, host, compiler (as the experiments' result files)
+    doc["context"] = results::makeContext(rt.info().name, doc["driver"].get<std::string>(), nullptr);
     doc["res"] = scene.res;
     doc["reps"] = opt.reps;
     doc["local"] = {opt.lx, opt.ly};

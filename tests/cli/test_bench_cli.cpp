@@ -25,7 +25,8 @@ TEST(BenchCli, QuickJsonRun)
     auto [code, out] = runBench("--res 24 --quick --json --rounds 1 --reps 1 --samples 4 --luminaire downlight");
     ASSERT_EQ(code, 0) << out;
     auto j = nlohmann::json::parse(out);
-    for (const char* k : {"device", "driver", "res", "mc", "methods", "mc_fit", "cubature", "specialization", "lut"})
+    for (const char* k : {"context", "device", "driver", "res", "mc", "methods", "mc_fit", "cubature", "specialization",
+                          "cubature_specialization", "cubature_lanes", "lut"})
         EXPECT_TRUE(j.contains(k)) << k;
     EXPECT_EQ(j["res"], 24);
     // downlight.ldt is rotational and emits nothing backwards: all rules fire.
@@ -36,6 +37,11 @@ TEST(BenchCli, QuickJsonRun)
     EXPECT_NEAR(j["mc"]["ratio"].get<double>(),
                 j["mc"]["naive_ms"].get<double>() / j["mc"]["fast_ms"].get<double>(), 1e-9);
     EXPECT_GE(j["cubature"]["equal_time_n"].get<int>(), 1);
+    EXPECT_TRUE(j["context"].contains("commit"));
+    // h = 1: the cubature takes the straight-line rectangle fan, 8 lanes on a
+    // CPU device (PoCL), one pixel per work-item elsewhere
+    EXPECT_EQ(j["cubature_specialization"]["rect_fan"], true);
+    EXPECT_EQ(j["cubature_lanes"].get<int>(), rt->info().type == "CPU" ? 8 : 1);
     EXPECT_GE(j["methods"].size(), 6u);
 }
 
