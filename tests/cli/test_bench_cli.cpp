@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 
 namespace lb {
@@ -43,6 +44,26 @@ TEST(BenchCli, QuickJsonRun)
     EXPECT_EQ(j["cubature_specialization"]["rect_fan"], true);
     EXPECT_EQ(j["cubature_lanes"].get<int>(), rt->info().type == "CPU" ? 8 : 1);
     EXPECT_GE(j["methods"].size(), 6u);
+}
+
+// plots/bench_table.py turns the committed runs into README's tables: the
+// median run by the cubature ratio, and a clear error for a missing file.
+TEST(BenchCli, TableScriptReadsCommittedRuns)
+{
+    std::string dir = test::sourceDir();
+    std::string cmd = "python3 " + dir + "/plots/bench_table.py " + dir + "/experiments/bench/pocl-epyc-run1.json " +
+                      dir + "/experiments/bench/pocl-epyc-run2.json " + dir +
+                      "/experiments/bench/pocl-epyc-run3.json 2>&1";
+    std::unique_ptr<FILE, int (*)(FILE*)> p(popen(cmd.c_str(), "r"), pclose);
+    ASSERT_TRUE(p);
+    std::string out;
+    std::array<char, 4096> buf{};
+    while (fgets(buf.data(), buf.size(), p.get())) out += buf.data();
+    EXPECT_NE(out.find("Median run: "), std::string::npos) << out;
+    EXPECT_NE(out.find("| cubature / MC 8 time (target <= 1) |"), std::string::npos) << out;
+    EXPECT_NE(out.find("| mc:n=8 |"), std::string::npos) << out;
+    std::string bad = "python3 " + dir + "/plots/bench_table.py " + dir + "/nothing.json > /dev/null 2>&1";
+    EXPECT_NE(std::system(bad.c_str()), 0);
 }
 
 TEST(BenchCli, BadOptionsExitTwo)
