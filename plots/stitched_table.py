@@ -1,0 +1,99 @@
+#!/usr/bin/env python3
+"""Stitched-NMSE table of a `lumibench run` results.json (docs/thesis-sct-vs-mci.md).
+
+The thesis computes its figures and appendix B on the images of all rotations
+stitched into one. From each record, MSE = NMSE * mean_ref * mean_test (thesis
+Eq. 6.7: NMSE = MSE / (mean_ref mean_test)); over the rotations of one
+(luminaire, height, method) with equal pixel counts the stitched image has the
+mean MSE and the mean of the means, so
+    NMSE_stitched = mean(MSE) / (mean(mean_ref) * mean(mean_test)).
+Columns: every method of the experiment and, for each equal-time label, MCI at
+its time with the mean N over the rotations in parentheses. Below the table:
+in how many single scenes each method beats its equal-time MCI, and how many
+equal-time pairs missed the tolerance. Standard library only.
+
+Usage: python3 plots/stitched_table.py DIR/results.json[.xz] [--methods A,B,...]
+"""
+import argparse
+import collections
+import json
+import lzma
+import os
+import sys
+
+
+def stitched(recs):
+    mse = sum(r["nmse"] * r["mean_ref"] * r["mean_test"] for r in recs) / len(recs)
+    mr = sum(r["mean_ref"] for r in recs) / len(recs)
+    mt = sum(r["mean_test"] for r in recs) / len(recs)
+    return mse / (mr * mt) if mr > 0 and mt > 0 else float("nan")
+
+
+def fmt(x):
+    return f"{x:.3g}"
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("results")
+    ap.add_argument("--methods", help="comma-separated method labels to show (default: all, in file order)")
+    a = ap.parse_args()
+    try:
+        opener = lzma.open if a.results.endswith(".xz") else open
+        with opener(a.results, "rt") as f:
+            doc = json.load(f)
+    except (OSError, ValueError, lzma.LZMAError) as e:
+        sys.exit(f"{a.results}: {e}")
+    recs = doc.get("records")
+    if not isinstance(recs, list):
+        sys.exit(f"{a.results}: no 'records' list (not a lumibench results file)")
+    methods, eq_labels = [], []
+    groups = collections.defaultdict(list)   # (lum, h, column) -> records
+    for r in recs:
+        if r.get("role") == "method":
+            col = r["spec"]
+            if col not in methods:
+                methods.append(col)
+        elif r.get("role") == "equal_time":
+            col = "mci@" + r["equal_time_label"]
+            if r["equal_time_label"] not in eq_labels:
+                eq_labels.append(r["equal_time_label"])
+        else:
+            continue
+        groups[(os.path.splitext(r["luminaire"])[0], r["height"], col)].append(r)
+    if a.methods:
+        methods = [m for m in a.methods.split(",")]
+    cols = []
+    for m in methods:
+        cols.append(m)
+        if m in eq_labels:
+            cols.append("mci@" + m)
+    keys = sorted({(k[0], k[1]) for k in groups})
+    head = [c if not c.startswith("mci@") else "MCI at its time (mean N)" for c in cols]
+    print("| luminaire | h | " + " | ".join(head) + " |")
+    print("|---|---|" + "---|" * len(cols))
+    for lum, h in keys:
+        cells = []
+        for c in cols:
+            g = groups.get((lum, h, c), [])
+            if not g:
+                cells.append("-")
+            elif c.startswith("mci@"):
+                n = sum(r["n"] for r in g) / len(g)
+                cells.append(f"{fmt(stitched(g))} ({n:.0f})")
+            else:
+                cells.append(fmt(stitched(g)))
+        print(f"| {lum.split('_')[0]} | {h:g} | " + " | ".join(cells) + " |")
+    print()
+    by_scene = {(r["scene"], r["spec"]): r for r in recs if r.get("role") == "method"}
+    for lab in eq_labels:
+        eq = [r for r in recs if r.get("role") == "equal_time" and r["equal_time_label"] == lab]
+        wins = sum(1 for r in eq if (r["scene"], lab) in by_scene and by_scene[(r["scene"], lab)]["nmse"] < r["nmse"])
+        missed = sum(1 for r in eq if not r.get("equal_time_ok", True))
+        ns = sorted(r["n"] for r in eq)
+        print(f"- {lab}: beats its equal-time MCI in {wins} of {len(eq)} scenes; MCI N {ns[0]}..{ns[-1]} "
+              f"(median {ns[len(ns) // 2]}); pairs outside the tolerance: {missed}")
+
+
+if __name__ == "__main__":
+    main()

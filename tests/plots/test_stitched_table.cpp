@@ -1,0 +1,75 @@
+// plots/stitched_table.py: the thesis' stitched NMSE from a results file,
+// checked on two hand-made rotations (no device needed).
+#include "testutil.h"
+
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace lb {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string capture(const std::string& cmd, int* code)
+{
+    std::string out;
+    FILE* f = popen(cmd.c_str(), "r");
+    if (!f) return out;
+    std::array<char, 4096> buf{};
+    while (fgets(buf.data(), buf.size(), f)) out += buf.data();
+    int st = pclose(f);
+    *code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+    return out;
+}
+
+nlohmann::json rec(const std::string& role, const std::string& spec, double R, double nmse, double mref, double mtest)
+{
+    nlohmann::json r = {{"role", role}, {"spec", spec}, {"luminaire", "L_1.ldt"}, {"height", 1.1},
+                        {"rotation", R}, {"scene", "s" + std::to_string(R)}, {"nmse", nmse},
+                        {"mean_ref", mref}, {"mean_test", mtest}};
+    return r;
+}
+
+TEST(Plots, StitchedTable)
+{
+    fs::path dir = fs::temp_directory_path() / ("lb_stitch_" + std::to_string(getpid()));
+    fs::create_directories(dir);
+    // cubature: MSE = NMSE mean_ref mean_test = 1*2*1 = 2 and 0.5*2*3 = 3;
+    // stitched: mean MSE 2.5 / (mean ref 2 * mean test 2) = 0.625.
+    // MCI at its time: MSE 8 and 8 -> 8 / (2 * 2) = 2, mean N (2 + 4) / 2 = 3.
+    nlohmann::json recs = nlohmann::json::array();
+    recs.push_back(rec("method", "cubature", 1.0, 1.0, 2.0, 1.0));
+    recs.push_back(rec("method", "cubature", 2.0, 0.5, 2.0, 3.0));
+    for (auto [R, n] : {std::pair{1.0, 2}, std::pair{2.0, 4}}) {
+        auto r = rec("equal_time", "mc:n=" + std::to_string(n), R, 2.0, 2.0, 2.0);
+        r["equal_time_label"] = "cubature";
+        r["n"] = n;
+        r["equal_time_ok"] = n == 2;
+        recs.push_back(r);
+    }
+    std::ofstream(dir / "results.json") << nlohmann::json{{"records", recs}}.dump();
+    int code = -1;
+    std::string script = test::sourceDir() + "/plots/stitched_table.py";
+    std::string out = capture("python3 " + script + " " + (dir / "results.json").string() + " 2>&1", &code);
+    EXPECT_EQ(code, 0) << out;
+    EXPECT_NE(out.find("| L | 1.1 | 0.625 | 2 (3) |"), std::string::npos) << out;
+    // cubature beats MCI (NMSE 1 < 2, 0.5 < 2) in both scenes; one pair missed
+    EXPECT_NE(out.find("beats its equal-time MCI in 2 of 2 scenes"), std::string::npos) << out;
+    EXPECT_NE(out.find("pairs outside the tolerance: 1"), std::string::npos) << out;
+    std::ofstream(dir / "bad.json") << "{\"x\": 1}";
+    capture("python3 " + script + " " + (dir / "bad.json").string() + " 2>&1", &code);
+    EXPECT_NE(code, 0);
+    fs::remove_all(dir);
+}
+
+} // namespace
+} // namespace lb
