@@ -7,8 +7,8 @@
  *   LB_CUB_WEIGHT     0 sample (paper Eq. 9) | 1 average (Eq. 10) | 2 dotout
  *   LB_CUB_NORMALIZE  0 none | 1 formfactor (thesis Eq. 5.11)
  *   LB_CUB_DYNAMIC    bit set of dynamic points: 1 cp, 2 np, 4 mrp, 8 barycentre (0: corners only)
- *   LB_CUB_RECT_FAN   nothing clipped, nothing blended, fan around CP or corner 0,
- *                     normalize none: the straight-line lb_cub_rect_fan (issue 9;
+ *   LB_CUB_RECT_FAN   nothing clipped, nothing blended, fan around CP or corner 0:
+ *                     the straight-line lb_cub_rect_fan (issue 9;
  *                     host/methods/specialize.h decides it per scene)
  *   LB_LANES=8        with LB_CUB_RECT_FAN and LB_LUT, float: eight pixels per
  *                     work-item in float8 (host/methods: lanes; CPUs by default)
@@ -18,7 +18,7 @@
  * blend_dist (m): beyond it the result blends into a 3 x 3 grid MC (lb_blend_weight;
  * fully MC, without the cubature, from 1.5 blend_dist on).
  *
- * @variants: "" | "-DLB_CUB_TRI=1" | "-DLB_CUB_TRI=1 -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=15" | "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_DYNAMIC=0" | "-DLB_LUT" | "-DLB_LUT -DLB_CUB_RECT_FAN" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=0" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0"
+ * @variants: "" | "-DLB_CUB_TRI=1" | "-DLB_CUB_TRI=1 -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=15" | "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_DYNAMIC=0" | "-DLB_LUT" | "-DLB_LUT -DLB_CUB_RECT_FAN" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0 -DLB_CUB_NORMALIZE=1"
  */
 #include "common/lbmath.h"
 
@@ -65,7 +65,8 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     lb_receiver_normal_local(P, &au, &av, &an);
     int8 nt;
     float8 e = lb_cub_rect_fan_x8(lum, ou, ov, on, P[12], P[13], au, av, an, LB_CUB_WEIGHT,
-                                  (LB_CUB_DYNAMIC & LB_CUB_CP) != 0, plane_eps, corner_inset, dyn_weight, &nt);
+                                  (LB_CUB_DYNAMIC & LB_CUB_CP) != 0, LB_CUB_NORMALIZE, plane_eps, corner_inset,
+                                  dyn_weight, &nt);
     int i = row * res + col0;
     if (col0 + 8 <= res) {
         vstore8(e, 0, out + i);
@@ -106,7 +107,8 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     lb_receiver_normal_local(P, &au, &av, &an);
     int nt;
     real e = lb_cub_rect_fan(lum, ou, ov, on, P[12], P[13], au, av, an, LB_CUB_WEIGHT,
-                             (LB_CUB_DYNAMIC & LB_CUB_CP) != 0, plane_eps, corner_inset, dyn_weight, &nt);
+                             (LB_CUB_DYNAMIC & LB_CUB_CP) != 0, LB_CUB_NORMALIZE, plane_eps, corner_inset,
+                                  dyn_weight, &nt);
     if (inside) {
         int i = row * res + col;
         out[i] = e;

@@ -61,7 +61,7 @@ Specialization analyseCubature(const Scene& scene, const photometry::Table& tabl
     // kernel's float rounding of the distance.
     bool noBlend = farthestPixel(scene) * (1 + 1e-6) < o.blendDist;
     bool fanCp = o.triangulation == 0 && (o.dynamic == 1 || o.dynamic == 0);
-    s.rectFan = fanCp && !o.formfactor && noBlend && lightAboveEveryHorizon(scene, o.horizonEps + o.planeEps);
+    s.rectFan = fanCp && noBlend && lightAboveEveryHorizon(scene, o.horizonEps + o.planeEps);
     return s;
 }
 

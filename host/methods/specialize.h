@@ -23,7 +23,8 @@
 //              before the tilted-horizon clip) --, no pixel is beyond
 //              blend_dist from the light's centre (the pixel farthest away is
 //              an image corner), and the method is a fan around CP or corner
-//              0 without formfactor: LB_CUB_RECT_FAN, the straight-line
+//              0 (any weighting, normalize none or formfactor):
+//              LB_CUB_RECT_FAN, the straight-line
 //              lb_cub_rect_fan of common/cubature.h (no clip, no
 //              triangulation structure, no loops; PoCL vectorises it).
 #pragma once

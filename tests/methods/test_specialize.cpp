@@ -152,7 +152,7 @@ TEST(Specialize, CubatureRectFanRule)
     EXPECT_TRUE(fan(s, "dynamic=none"));
     EXPECT_TRUE(fan(s, "weighting=dotout,corner_inset=0.3,dyn_weight=2"));
     EXPECT_FALSE(fan(s, "triangulation=delaunay"));
-    EXPECT_FALSE(fan(s, "normalize=formfactor"));
+    EXPECT_TRUE(fan(s, "normalize=formfactor"));
     EXPECT_FALSE(fan(s, "dynamic=np"));
     EXPECT_FALSE(fan(s, "specialize=none"));
     // the image corners lie about 3.7 m from the light's centre at h = 1
@@ -225,18 +225,45 @@ TEST(Specialize, CubatureRectFanEqualsGeneral)
                                  scene(2.5, 5 * M_PI / 8, 45)};
     const char* specs[] = {"cubature", "cubature:weighting=sample", "cubature:weighting=dotout",
                            "cubature:dynamic=none", "cubature:corner_inset=0.3,dyn_weight=2",
-                           "cubature:plane_eps=0.05"};
+                           "cubature:plane_eps=0.05", "cubature:normalize=formfactor",
+                           "cubature:normalize=formfactor,weighting=dotout,dynamic=none,corner_inset=0.2"};
     // Without double on the device: float against float, 1e-5 (the general
     // float kernel's own error, 2.6e-6, with margin).
     Precision ref = rt->fp64() ? Precision::Double : Precision::Float;
     double rel = rt->fp64() ? 1e-6 : 1e-5;
-    double worst = 0;
+    // normalize=formfactor multiplies by the rectangle's Lambert irradiance,
+    // whose float edge sum is ill-conditioned where the light is seen at a
+    // grazing angle (its terms cancel): the general float kernel itself is
+    // up to 3.2e-5 off its double result here (host: 3.2e-5 general, 4.7e-5
+    // fan, both against double). So formfactor is held per pixel to 1e-4,
+    // and its worst pixel to twice the general float kernel's worst (+1e-6):
+    // the fan is no less accurate than the general code. Double: 1e-12 below.
+    double worst = 0, worstFf = 0, worstFfGeneral = 0;
     for (const auto& s : scenes)
-        for (const char* spec : specs)
+        for (const char* spec : specs) {
+            bool ff = std::string(spec).find("formfactor") != std::string::npos;
             for (const char* lanes : {"1", "8"}) {
-                worst = std::max(worst, cubatureDiff(*rt, asym, s, spec, Precision::Float, lanes, ref, rel));
+                double d = cubatureDiff(*rt, asym, s, spec, Precision::Float, lanes, ref, ff ? 1e-4 : rel);
+                (ff ? worstFf : worst) = std::max(ff ? worstFf : worst, d);
                 if (HasFailure()) return;
             }
+            if (ff && rt->fp64()) {
+                RenderOptions opt;
+                opt.reps = 1;
+                auto general = parseSpec(std::string(spec) + ",specialize=none");
+                auto gf = render(*rt, asym, s, general, Precision::Float, opt);
+                auto gd = render(*rt, asym, s, general, Precision::Double, opt);
+                double peak = 0;
+                for (double v : gd.image.px) peak = std::max(peak, std::fabs(v));
+                for (size_t i = 0; i < gd.image.px.size(); ++i)
+                    worstFfGeneral = std::max(worstFfGeneral, std::fabs(gf.image.px[i] - gd.image.px[i]) /
+                                                                  std::max(std::fabs(gd.image.px[i]), 1e-12 * peak));
+            }
+        }
+    if (rt->fp64()) EXPECT_LE(worstFf, 2 * worstFfGeneral + 1e-6);
+    std::cout << "formfactor (float), worst relative difference to the double general kernel: rectangle fan "
+              << worstFf << ", general kernel " << worstFfGeneral << "\n";
+
     // 1D table, and the exact lookup (one pixel per work-item only). Here
     // the float direction's rounding (~1e-7 rad) meets steep intensities:
     // the cos^3 lobe's relative slope 3 tan(gamma) grows without bound
