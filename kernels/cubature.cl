@@ -54,38 +54,29 @@ __kernel void render(__global const real* P, __global const float* lum, __global
                      __global int* stats, int want_stats, real plane_eps, real horizon_eps,
                      real corner_inset, real dyn_weight, real blend_dist)
 {
-    int col0 = 8 * (int)get_global_id(0);
-    int row = row0 + (int)get_global_id(1);
-    int res = (int)P[15];
-    if (col0 >= res || row >= res)
-        return;
+    int col0, row, res;
     float8 ou, ov, on;
-    lb_corner_offset_x8(P, (float8)(0, 1, 2, 3, 4, 5, 6, 7) + (real)col0, row, &ou, &ov, &on);
     real au, av, an;
-    lb_receiver_normal_local(P, &au, &av, &an);
+    if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
+        return;
     int8 nt;
     float8 e = lb_cub_rect_fan_x8(lum, ou, ov, on, P[12], P[13], au, av, an, LB_CUB_WEIGHT,
                                   (LB_CUB_DYNAMIC & LB_CUB_CP) != 0, LB_CUB_NORMALIZE, plane_eps, corner_inset,
-                                  dyn_weight, &nt);
+                             dyn_weight, &nt);
     int i = row * res + col0;
-    if (col0 + 8 <= res) {
-        vstore8(e, 0, out + i);
-        if (want_stats) { /* (triangles, flips = 0) pairs; 8-wide (16-wide vectors change the ABI on AVX2) */
-            vstore8((int8)(nt.s0, 0, nt.s1, 0, nt.s2, 0, nt.s3, 0), 0, stats + 2 * i);
-            vstore8((int8)(nt.s4, 0, nt.s5, 0, nt.s6, 0, nt.s7, 0), 0, stats + 2 * i + 8);
-        }
+    lb_store_x8(out, i, res - col0, e);
+    if (!want_stats)
+        return;
+    if (col0 + 8 <= res) { /* (triangles, flips = 0) pairs; 8-wide (16-wide vectors change the ABI on AVX2) */
+        vstore8((int8)(nt.s0, 0, nt.s1, 0, nt.s2, 0, nt.s3, 0), 0, stats + 2 * i);
+        vstore8((int8)(nt.s4, 0, nt.s5, 0, nt.s6, 0, nt.s7, 0), 0, stats + 2 * i + 8);
         return;
     }
-    float ev[8];
     int nv[8];
-    vstore8(e, 0, ev);
     vstore8(nt, 0, nv);
     for (int j = 0; j < 8 && col0 + j < res; ++j) {
-        out[i + j] = ev[j];
-        if (want_stats) {
-            stats[2 * (i + j)] = nv[j];
-            stats[2 * (i + j) + 1] = 0;
-        }
+        stats[2 * (i + j)] = nv[j];
+        stats[2 * (i + j) + 1] = 0;
     }
 }
 #elif defined(LB_CUB_RECT_FAN)
@@ -97,25 +88,19 @@ __kernel void render(__global const real* P, __global const float* lum, __global
                      __global int* stats, int want_stats, real plane_eps, real horizon_eps,
                      real corner_inset, real dyn_weight, real blend_dist)
 {
-    int col = get_global_id(0);
-    int row = row0 + (int)get_global_id(1);
-    int res = (int)P[15];
-    /* no early return: the store below is masked instead (mc.cl) */
-    bool inside = col < res && row < res;
+    int col, row, res;
     real ou, ov, on, au, av, an;
-    lb_corner_offset(P, (real)col, row, &ou, &ov, &on);
-    lb_receiver_normal_local(P, &au, &av, &an);
+    if (!lb_work_item_pixels(P, row0, &col, &row, &res, &ou, &ov, &on, &au, &av, &an))
+        return;
     int nt;
     real e = lb_cub_rect_fan(lum, ou, ov, on, P[12], P[13], au, av, an, LB_CUB_WEIGHT,
                              (LB_CUB_DYNAMIC & LB_CUB_CP) != 0, LB_CUB_NORMALIZE, plane_eps, corner_inset,
-                                  dyn_weight, &nt);
-    if (inside) {
-        int i = row * res + col;
-        out[i] = e;
-        if (want_stats) {
-            stats[2 * i] = nt;
-            stats[2 * i + 1] = 0;
-        }
+                             dyn_weight, &nt);
+    int i = row * res + col;
+    out[i] = e;
+    if (want_stats) {
+        stats[2 * i] = nt;
+        stats[2 * i + 1] = 0;
     }
 }
 #else

@@ -4,9 +4,53 @@
  *   -DLB_DYN_CP / -DLB_DYN_NP / -DLB_DYN_MRP  one dynamic sample (paper 4.2,
  *                   thesis 4.2) on the horizon-clipped light, with the
  *                   structured estimator at N = 1: E = Omega_L L_e(d) cos.
- * @variants: "-DLB_DYN_POINT" | "-DLB_DYN_CP" | "-DLB_DYN_NP" | "-DLB_DYN_MRP"
+ * Straight-line forms (common/dynamic_lanes.inc, issue 9; the host decides,
+ * methods/straight.h): LB_DYN_RECT with LB_DYN_POINT (any scene) or LB_DYN_CP
+ * (nothing clipped), one pixel per work-item, or with LB_LANES=8 and LB_LUT
+ * in float eight (the host launches ceil(N / 8) work-items per row).
+ * @variants: "-DLB_DYN_POINT" | "-DLB_DYN_CP" | "-DLB_DYN_NP" | "-DLB_DYN_MRP" | "-DLB_DYN_POINT -DLB_DYN_RECT" | "-DLB_DYN_CP -DLB_DYN_RECT -DLB_LUT" | "-DLB_DYN_POINT -DLB_DYN_RECT -DLB_LUT -DLB_LANES=8" | "-DLB_DYN_CP -DLB_DYN_RECT -DLB_LUT -DLB_LANES=8"
  */
 #include "common/lbmath.h"
+
+#ifdef LB_DYN_RECT
+#if defined(LB_DYN_POINT)
+#define LB_DYN_RECT_FN lb_point_rect
+#define LB_DYN_RECT_FN8 lb_point_rect_x8
+#elif defined(LB_DYN_CP)
+#define LB_DYN_RECT_FN lb_cp_rect
+#define LB_DYN_RECT_FN8 lb_cp_rect_x8
+#else
+#error "LB_DYN_RECT: point and cp only"
+#endif
+#endif
+
+#if defined(LB_DYN_RECT) && defined(LB_LANES) && LB_LANES == 8 && !defined(LB_DOUBLE)
+#include "common/lanes8.h"
+#include "common/lut_lanes.inc"
+#include "common/scene_lanes.inc"
+#include "common/cubature_lanes.inc"
+#include "common/dynamic_lanes.inc"
+#include "common/lanes_end.h"
+
+__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0, real skew)
+{
+    int col0, row, res;
+    float8 ou, ov, on;
+    real au, av, an;
+    if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
+        return;
+    lb_store_x8(out, row * res + col0, res - col0, LB_DYN_RECT_FN8(lum, ou, ov, on, P[12], P[13], au, av, an));
+}
+#elif defined(LB_DYN_RECT)
+__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0, real skew)
+{
+    int col, row, res;
+    real ou, ov, on, au, av, an;
+    if (!lb_work_item_pixels(P, row0, &col, &row, &res, &ou, &ov, &on, &au, &av, &an))
+        return;
+    out[row * res + col] = LB_DYN_RECT_FN(lum, ou, ov, on, P[12], P[13], au, av, an);
+}
+#else
 
 /* One work-item per pixel of rows row0 .. row0 + global height. skew: the NP
  * skew of lb_normal_point (only NP and MRP read it). */
@@ -47,3 +91,4 @@ __kernel void render(__global const real* P, __global const float* lum, __global
 #endif
     out[row * res + col] = e;
 }
+#endif

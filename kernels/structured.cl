@@ -1,9 +1,40 @@
 /* structured.cl -- structured sampling (paper Eq. 4, thesis 4.1): the corners
  * of the horizon-clipped light plus its barycentre (area centroid), with
  * E = (Omega_L / N) sum_i L_e(d_i) cos_i, L_e(d) = I(d) / (A |n_L . d|).
- * @variants: ""
+ * Straight-line form (common/dynamic_lanes.inc lb_structured_rect, issue 9;
+ * the host uses it when nothing is clipped, methods/straight.h): LB_STRUCT_RECT,
+ * one pixel per work-item, or with LB_LANES=8 and LB_LUT in float eight.
+ * @variants: "" | "-DLB_STRUCT_RECT" | "-DLB_STRUCT_RECT -DLB_LUT -DLB_LANES=8"
  */
 #include "common/lbmath.h"
+
+#if defined(LB_STRUCT_RECT) && defined(LB_LANES) && LB_LANES == 8 && !defined(LB_DOUBLE)
+#include "common/lanes8.h"
+#include "common/lut_lanes.inc"
+#include "common/scene_lanes.inc"
+#include "common/cubature_lanes.inc"
+#include "common/dynamic_lanes.inc"
+#include "common/lanes_end.h"
+
+__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0)
+{
+    int col0, row, res;
+    float8 ou, ov, on;
+    real au, av, an;
+    if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
+        return;
+    lb_store_x8(out, row * res + col0, res - col0, lb_structured_rect_x8(lum, ou, ov, on, P[12], P[13], au, av, an));
+}
+#elif defined(LB_STRUCT_RECT)
+__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0)
+{
+    int col, row, res;
+    real ou, ov, on, au, av, an;
+    if (!lb_work_item_pixels(P, row0, &col, &row, &res, &ou, &ov, &on, &au, &av, &an))
+        return;
+    out[row * res + col] = lb_structured_rect(lum, ou, ov, on, P[12], P[13], au, av, an);
+}
+#else
 
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0)
 {
@@ -27,3 +58,4 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     }
     out[row * res + col] = e;
 }
+#endif

@@ -1,15 +1,52 @@
-/* voronoi.cl -- Voronoi-cell cubature of thesis 5.1, one work-item per pixel:
- * corners + barycentre + closest point, weights from the precomputed table
+/* voronoi.cl -- Voronoi-cell cubature of thesis 5.1: corners + barycentre +
+ * closest point, weights from the precomputed table
  * (host/methods/voronoi_table.h), math in common/voronoi.h.
- * @variants: ""
+ *
+ * Structural variants (host/methods/family_voronoi.cpp decides them):
+ *   LB_VOR_RECT   the straight-line form (common/voronoi_lanes.inc); the
+ *                 general kernel (float3, loops) without it
+ *   LB_LANES=8    with LB_VOR_RECT and LB_LUT, float: eight pixels per
+ *                 work-item in float8 (the host launches ceil(N / 8) per row)
+ *   LB_LUT        trig-free intensity table (common/lut.h), `lum` is the LUT
+ * @variants: "" | "-DLB_VOR_RECT" | "-DLB_LUT -DLB_VOR_RECT" | "-DLB_LUT -DLB_VOR_RECT -DLB_LANES=8"
  */
 #include "common/lbmath.h"
 
 /* The registry's convention (host/methods/registry.h): P scene parameters;
  * lum packed luminaire; out N x N lux, rows row0 .. row0 + global height.
- * tab: res x res x 6 cell fractions for the scene's W x L light. */
+ * tab: tres x tres x 6 cell fractions for the scene's W x L light. */
+#if defined(LB_VOR_RECT) && defined(LB_LANES) && LB_LANES == 8 && !defined(LB_DOUBLE)
+#include "common/lanes8.h"
+#include "common/lut_lanes.inc"
+#include "common/scene_lanes.inc"
+#include "common/cubature_lanes.inc"
+#include "common/voronoi_lanes.inc"
+#include "common/lanes_end.h"
+
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
-                     __global const float* tab, int res, real plane_eps)
+                     __global const float* tab, int tres, real plane_eps)
+{
+    int col0, row, res;
+    float8 ou, ov, on;
+    real au, av, an;
+    if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
+        return;
+    float8 e = lb_voronoi_rect_x8(lum, tab, tres, ou, ov, on, P[12], P[13], au, av, an, plane_eps);
+    lb_store_x8(out, row * res + col0, res - col0, e);
+}
+#elif defined(LB_VOR_RECT)
+__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
+                     __global const float* tab, int tres, real plane_eps)
+{
+    int col, row, res;
+    real ou, ov, on, au, av, an;
+    if (!lb_work_item_pixels(P, row0, &col, &row, &res, &ou, &ov, &on, &au, &av, &an))
+        return;
+    out[row * res + col] = lb_voronoi_rect(lum, tab, tres, ou, ov, on, P[12], P[13], au, av, an, plane_eps);
+}
+#else
+__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
+                     __global const float* tab, int tres, real plane_eps)
 {
     int col = get_global_id(0);
     int row = row0 + (int)get_global_id(1);
@@ -18,5 +55,6 @@ __kernel void render(__global const real* P, __global const float* lum, __global
         return;
     lb_light L = lb_scene_light(P);
     out[row * n + col] =
-        lb_voronoi_irradiance(lum, tab, res, L, lb_pixel_position(P, row, col), lb_p3(P, 16), plane_eps);
+        lb_voronoi_irradiance(lum, tab, tres, L, lb_pixel_position(P, row, col), lb_p3(P, 16), plane_eps);
 }
+#endif

@@ -162,21 +162,27 @@ nlohmann::json run(ocl::Runtime& rt, const photometry::Table& table, const Scene
     add(fmt::format("mc:n={} (lut, general)", n), generalLut, general.defines());
     add(fmt::format("mc:n={}", n), fast, spec.defines());
     add("mc:n=8", mc8, spec.defines());
-    for (const char* name : {"point", "structured", "cp", "np", "mrp"}) {
-        if (opt.quick && std::string(name) != "point") continue;
-        const auto& fam = methods::family(name);
+    // Each family as `render` builds it: structural and scene defines, its
+    // `lum` buffer, its lanes (methods::Family).
+    for (const char* name : {"point", "structured", "cp", "np", "mrp", "voronoi", "voronoi:specialize=none"}) {
+        if (opt.quick && std::string(name) != "point" && std::string(name) != "voronoi") continue;
         auto s = methods::parseSpec(name);
+        const auto& fam = methods::family(s.name);
         std::string defs = fam.defines ? fam.defines(s) : std::string();
+        if (fam.sceneDefines) defs += fam.sceneDefines(s, scene, table);
+        int lanes = fam.lanes ? fam.lanes(s, scene, table, rt.info(), methods::Precision::Float) : 1;
+        if (lanes > 1) defs += fmt::format(" -DLB_LANES={}", lanes);
         cl::Kernel k = rt.kernel(fam.file, fam.kernelName, defs);
-        cl::Buffer P = b.reals(scene.params()), L = b.floats(exact);
+        cl::Buffer P = b.reals(scene.params()), L = b.floats(fam.lumBuffer ? fam.lumBuffer(s, table) : exact);
         cl::Buffer out(rt.context(), CL_MEM_WRITE_ONLY, sizeof(float) * scene.res * scene.res);
         k.setArg(0, P);
         k.setArg(1, L);
         k.setArg(2, out);
         k.setArg(3, cl_int(0));
         methods::LaunchContext ctx{rt, s, scene, table, methods::Precision::Float, k, {}, {}, {}};
+        ctx.lanes = lanes;
         if (fam.setArgs) fam.setArgs(ctx, 4);
-        add(name, b.time(k), defs);
+        add(name, b.time(k, lanes), defs);
     }
     // The cubature as `render` builds it (methods/specialize.h
     // analyseCubature): specialised, then the general kernel with the same

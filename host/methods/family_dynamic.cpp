@@ -1,10 +1,15 @@
 // point, cp, np, mrp: the single-sample baselines of kernels/dynamic.cl.
 #include "methods/registry.h"
+#include "methods/specialize.h"
+#include "methods/straight.h"
 
 namespace lb::methods {
 
 namespace {
-Family dynamicFamily(const std::string& name, const std::string& define, const std::string& summary, bool skew)
+// rect: the straight-line form's define ("" for none); needsNoClip: it holds
+// only where nothing is clipped (cp samples the horizon-clipped light).
+Family dynamicFamily(const std::string& name, const std::string& define, const std::string& summary, bool skew,
+                     const std::string& rect, bool needsNoClip)
 {
     Family f;
     f.name = name;
@@ -15,6 +20,9 @@ Family dynamicFamily(const std::string& name, const std::string& define, const s
                                        "NP: receiver normal skewed to this component towards the light plane "
                                        "when it misses the plane (thesis 4.2)"));
     f.defines = [define](const MethodSpec&) { return define; };
+    addStraightLineOptions(f, rect, [needsNoClip](const Scene& scene, const MethodSpec&) {
+        return !needsNoClip || lightAboveEveryHorizon(scene);
+    });
     f.setArgs = [skew](LaunchContext& c, int first) {
         ocl::setReal(c.kernel, first, skew ? c.spec.num("skew") : 0.1, c.dbl());
     };
@@ -24,10 +32,12 @@ Family dynamicFamily(const std::string& name, const std::string& define, const s
 
 void registerDynamic(Registry& r)
 {
-    r.add(dynamicFamily("point", "-DLB_DYN_POINT", "one photometric point light at the light's centroid", false));
-    r.add(dynamicFamily("cp", "-DLB_DYN_CP", "one sample at the closest point of the clipped light", false));
-    r.add(dynamicFamily("np", "-DLB_DYN_NP", "one sample at the (clamped) normal point", true));
-    r.add(dynamicFamily("mrp", "-DLB_DYN_MRP", "one sample at the most representative point", true));
+    r.add(dynamicFamily("point", "-DLB_DYN_POINT", "one photometric point light at the light's centroid", false,
+                        "-DLB_DYN_RECT", false));
+    r.add(dynamicFamily("cp", "-DLB_DYN_CP", "one sample at the closest point of the clipped light", false,
+                        "-DLB_DYN_RECT", true));
+    r.add(dynamicFamily("np", "-DLB_DYN_NP", "one sample at the (clamped) normal point", true, "", true));
+    r.add(dynamicFamily("mrp", "-DLB_DYN_MRP", "one sample at the most representative point", true, "", true));
 }
 
 } // namespace lb::methods

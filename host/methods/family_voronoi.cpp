@@ -2,6 +2,7 @@
 // precomputed Voronoi cell fractions (kernels/voronoi.cl, common/voronoi.h,
 // the table from voronoi_table.h).
 #include "methods/registry.h"
+#include "methods/straight.h"
 #include "methods/voronoi_table.h"
 
 namespace lb::methods {
@@ -19,6 +20,9 @@ void registerVoronoi(Registry& r)
                     "receivers closer than this (m) to the light's plane are moved to this distance (paper 5.3)"),
     };
     f.defines = [](const MethodSpec&) { return std::string(); };
+    // lookup, specialize, lanes; the straight-line form holds in every
+    // scene: the method never clips (common/voronoi_lanes.inc)
+    addStraightLineOptions(f, "-DLB_VOR_RECT", [](const Scene&, const MethodSpec&) { return true; });
     f.setArgs = [](LaunchContext& c, int first) {
         int res = static_cast<int>(c.spec.integer("table_res"));
         // The table is built for the scene's W x L light on every render (res^2

@@ -12,7 +12,8 @@
  * Macros: LB_V value, LB_I integer, LB_M comparison result (bool / int8: both
  * work with ?:, && and ||), LB_VFN(name), LB_TO_I / LB_TO_V conversions
  * (float -> int truncates, as (int)), LB_GATHER(p, i) = p[i] per lane, and
- * LB_VINTENSITY3(lum, x, y, z) the intensity lookup of the lane type.
+ * LB_VINTENSITY3(lum, x, y, z) the intensity lookup of the lane type,
+ * LB_NLANES the pixels per call and LB_LANE_INDEX their column offsets.
  * lanes_end.h undefines them again. */
 #define LB_V real
 #define LB_I int
@@ -22,3 +23,5 @@
 #define LB_TO_V(x) ((real)(x))
 #define LB_GATHER(p, i) ((real)(p)[(i)])
 #define LB_VINTENSITY3(lum, x, y, z) LB_INTENSITY3((lum), (x), (y), (z))
+#define LB_NLANES 1
+#define LB_LANE_INDEX R(0)

@@ -11,3 +11,5 @@
     ((float8)((p)[(i).s0], (p)[(i).s1], (p)[(i).s2], (p)[(i).s3], (p)[(i).s4], (p)[(i).s5], (p)[(i).s6],    \
               (p)[(i).s7]))
 #define LB_VINTENSITY3(lum, x, y, z) lb_lut_intensity3_x8((lum), (x), (y), (z))
+#define LB_NLANES 8
+#define LB_LANE_INDEX ((float8)(0, 1, 2, 3, 4, 5, 6, 7))

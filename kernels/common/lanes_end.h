@@ -7,3 +7,5 @@
 #undef LB_TO_V
 #undef LB_GATHER
 #undef LB_VINTENSITY3
+#undef LB_NLANES
+#undef LB_LANE_INDEX

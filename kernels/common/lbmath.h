@@ -9,3 +9,8 @@
 #include "dynamic.h"
 #include "cubature.h"
 #include "voronoi.h"
+/* The point-sample baselines' straight-line forms, one pixel per call (they
+ * use cubature_lanes.inc's sample and triangle helpers). */
+#include "lanes1.h"
+#include "dynamic_lanes.inc"
+#include "lanes_end.h"

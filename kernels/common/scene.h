@@ -70,3 +70,19 @@ LB_FN void lb_receiver_normal_local(__global const real* P, real* au, real* av, 
 #include "lanes1.h"
 #include "scene_lanes.inc"
 #include "lanes_end.h"
+
+#if defined(__OPENCL_C_VERSION__) && !LB_REAL_IS_DOUBLE
+/* Stores the eight pixels e of one row of an 8-lane kernel (lanes8.h) at
+ * out[i ..], only the first `left` of them at the row's end. */
+LB_FN void lb_store_x8(__global real* out, int i, int left, float8 e)
+{
+    if (left >= 8) {
+        vstore8(e, 0, out + i);
+        return;
+    }
+    float ev[8];
+    vstore8(e, 0, ev);
+    for (int j = 0; j < left; ++j)
+        out[i + j] = ev[j];
+}
+#endif

@@ -103,3 +103,8 @@ LB_FN real lb_voronoi_irradiance(__global const float* lum, __global const float
     }
     return lb_polygon_solid_angle(p, 4) * e;
 }
+
+/* The straight-line form for one pixel (lb_voronoi_rect): voronoi_lanes.inc. */
+#include "lanes1.h"
+#include "voronoi_lanes.inc"
+#include "lanes_end.h"

@@ -282,5 +282,83 @@ TEST(Specialize, CubatureRectFanEqualsGeneral)
     std::cout << "rectangle fan (double) against the general kernel: worst relative difference " << worstD << "\n";
 }
 
+
+// The straight-line forms of voronoi (any scene: the method never clips) and
+// of point (any scene), cp and structured (nothing clipped) against their
+// general kernels (methods/straight.h), as the cubature's fan above: double
+// within 1e-12; float within 1e-6 of the double general kernel, or twice the
+// general float kernel's own worst error where that is larger: next to the
+// light crossing the receiver plane (h = -0.2, 22000 lux) the general float
+// voronoi kernel itself is 3.6e-6 off its double result (the straight-line
+// form 3.9e-6). 45 x 45 pixels: the last 8-lane work-item of a row is partial.
+TEST(Specialize, StraightLineFormsEqualGeneral)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    auto asym = asymmetric();
+    auto front = frontLobe();
+    std::vector<Scene> unclipped = {scene(1.0, 3 * M_PI / 4, 45), scene(0.1, M_PI / 2, 45), scene(0.05, M_PI, 45),
+                                    scene(2.5, 5 * M_PI / 8, 45)};
+    Scene crossing = scene(-0.2, 5 * M_PI / 8, 45);
+    RenderOptions opt;
+    opt.reps = 1;
+    Precision ref = rt->fp64() ? Precision::Double : Precision::Float;
+    const double rel = rt->fp64() ? 1e-6 : 1e-5;
+    // worst relative difference of `spec` in precision p from the general kernel in pr
+    auto diff = [&](const photometry::Table& t, const Scene& s, const std::string& spec, Precision p, Precision pr,
+                    double bound) {
+        std::string sep = spec.find(':') == std::string::npos ? ":" : ",";
+        std::string general = spec.find("specialize") != std::string::npos ? spec : spec + sep + "specialize=none";
+        auto gen = render(*rt, t, s, parseSpec(general), pr, opt);
+        auto sp = render(*rt, t, s, parseSpec(spec), p, opt);
+        double peak = 0, worst = 0;
+        for (double v : gen.image.px) peak = std::max(peak, std::fabs(v));
+        EXPECT_GT(peak, 0) << spec << " " << s.describe();
+        for (size_t i = 0; i < gen.image.px.size(); ++i) {
+            double a = gen.image.px[i], b = sp.image.px[i];
+            double d = std::fabs(a - b) / std::max(std::fabs(a), 1e-12 * peak);
+            worst = std::max(worst, d);
+            EXPECT_LE(d, bound) << spec << " " << s.describe() << " pixel " << i << ": " << a << " vs " << b;
+            if (d > bound) break;
+        }
+        return worst;
+    };
+    struct Case {
+        std::string name, define;
+        bool anyScene;
+    };
+    double worst = 0, worstD = 0;
+    for (const Case& c : {Case{"voronoi", "-DLB_VOR_RECT", true}, Case{"point", "-DLB_DYN_RECT", true},
+                          Case{"cp", "-DLB_DYN_RECT", false}, Case{"structured", "-DLB_STRUCT_RECT", false}}) {
+        const Family& fam = family(c.name);
+        std::vector<Scene> scenes = unclipped;
+        if (c.anyScene) scenes.push_back(crossing);
+        // the rule: the straight-line form where it holds, and only there
+        EXPECT_NE(fam.sceneDefines(parseSpec(c.name), unclipped[0], asym).find(c.define), std::string::npos) << c.name;
+        EXPECT_EQ(fam.sceneDefines(parseSpec(c.name + ":specialize=none"), unclipped[0], asym).find(c.define),
+                  std::string::npos)
+            << c.name;
+        EXPECT_EQ(fam.sceneDefines(parseSpec(c.name), crossing, asym).find(c.define) != std::string::npos, c.anyScene)
+            << c.name;
+        for (const auto& s : scenes) {
+            double bound = rel;
+            if (rt->fp64())
+                bound = std::max(rel, 2 * diff(asym, s, c.name + ":specialize=none", Precision::Float, ref, 1.0));
+            for (const char* lanes : {"lanes=1", "lanes=8"})
+                worst = std::max(worst, diff(asym, s, c.name + ":" + lanes, Precision::Float, ref, bound));
+            if (rt->fp64()) worstD = std::max(worstD, diff(asym, s, c.name, Precision::Double, Precision::Double, 1e-12));
+            if (HasFailure()) return;
+        }
+        // 1D table: the cos^3 lobe's steep fall to 0 at 90 deg (see the cubature's bound), or
+        // twice the general float kernel's own error (point: pixels of 3e-3 lux at the cut-off)
+        double steep = 1e-5;
+        if (rt->fp64())
+            steep = std::max(steep, 2 * diff(front, unclipped[0], c.name + ":specialize=none", Precision::Float, ref, 1.0));
+        worst = std::max(worst, diff(front, unclipped[0], c.name + ":lanes=8", Precision::Float, ref, steep));
+    }
+    worst = std::max(worst, diff(asym, unclipped[1], "voronoi:lanes=8,table_res=9,plane_eps=0.05", Precision::Float,
+                                 ref, rel));
+    std::cout << "straight-line forms against the general kernels: float " << worst << ", double " << worstD << "\n";
+}
+
 } // namespace
 } // namespace lb::methods

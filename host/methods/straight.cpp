@@ -1,0 +1,46 @@
+#include "methods/straight.h"
+
+#include "methods/specialize.h"
+#include "photometry/lut.h"
+
+#include <fmt/format.h>
+
+namespace lb::methods {
+
+void addStraightLineOptions(Family& f, const std::string& define, StraightApplies applies)
+{
+    f.params.push_back(Param::choice("lookup", "lut", {"lut", "exact"},
+                                     "intensity lookup: trig-free table (photometry/lut.h, as mc) or the exact "
+                                     "bilinear one"));
+    const bool straight = !define.empty();
+    if (straight) {
+        f.params.push_back(Param::choice("specialize", "auto", {"auto", "none"},
+                                         "auto: the straight-line form where the scene allows it, 1D table for "
+                                         "rotational luminaires (methods/straight.h); none: the general kernel"));
+        f.params.push_back(Param::choice("lanes", "auto", {"auto", "1", "8"},
+                                         "pixels per work-item of the straight-line form (float, lut): 8 = float8 "
+                                         "code, auto = 8 on CPU devices (PoCL), 1 elsewhere"));
+    }
+    auto uses = [straight, applies](const MethodSpec& s, const Scene& scene) {
+        return straight && s.str("specialize") == "auto" && applies(scene, s);
+    };
+    f.sceneDefines = [uses, define](const MethodSpec& s, const Scene& scene, const photometry::Table& t) {
+        Specialization sp;
+        sp.lut = s.str("lookup") == "lut";
+        bool on = uses(s, scene);
+        sp.lut1d = sp.lut && on && photometry::isRotational(t);
+        return sp.defines() + (on ? " " + define : std::string());
+    };
+    f.lumBuffer = [](const MethodSpec& s, const photometry::Table& t) {
+        return s.str("lookup") == "lut" ? photometry::buildLut(t).packed : t.packed();
+    };
+    f.lanes = [uses](const MethodSpec& s, const Scene& scene, const photometry::Table&, const ocl::DeviceInfo& dev,
+                     Precision p) {
+        if (!uses(s, scene) || s.str("lookup") != "lut" || p == Precision::Double) return 1;
+        const std::string& l = s.str("lanes");
+        if (l != "auto") return std::stoi(l);
+        return dev.type == "CPU" ? 8 : 1;
+    };
+}
+
+} // namespace lb::methods

@@ -1,0 +1,32 @@
+// straight.h -- the lookup / specialize / lanes options shared by the
+// families whose kernels have a straight-line form (issue 9): point, cp,
+// structured and voronoi (the cubature has its own rule set, analyseCubature).
+//
+// A straight-line form is the method for an unclipped rectangle in the light's
+// frame, written once over the lane macros of kernels/common/lanes1.h, so it
+// runs one pixel per work-item or, in float8, eight (*_lanes.inc). The family
+// gets three parameters:
+//   lookup=lut|exact       trig-free table (default, as mc and cubature) or the
+//                          exact bilinear lookup of DESIGN section 3;
+//   specialize=auto|none   auto: the straight-line form where `applies` says
+//                          the scene allows it (and the 1D table for
+//                          rotational luminaires); none: the general kernel;
+//   lanes=auto|1|8         pixels per work-item of the straight-line form
+//                          (float, lut): auto = 8 on CPU devices, 1 elsewhere.
+// With an empty `define` the family has no straight-line form and gets only
+// `lookup` (np, mrp).
+#pragma once
+
+#include "methods/registry.h"
+
+#include <functional>
+#include <string>
+
+namespace lb::methods {
+
+// Whether the straight-line form holds for this scene and spec.
+using StraightApplies = std::function<bool(const Scene&, const MethodSpec&)>;
+
+void addStraightLineOptions(Family& f, const std::string& define, StraightApplies applies);
+
+} // namespace lb::methods
