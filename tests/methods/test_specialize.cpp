@@ -213,11 +213,14 @@ TEST(Specialize, CubatureRectFanEqualsGeneral)
     // The fan differs from the general code only by rounding: the polynomial
     // atan2 in float (<= 2.5e-7 relative per triangle, tests/math),
     // native_sqrt, the order of the sums, and the general code's 3D float
-    // vectors. Measured: the general float kernel itself is up to 2.6e-6 off
-    // its double result on these scenes, the fan (both lane widths) <= 5e-7.
-    // So the float fan is held to the double general kernel at 1e-6 (the
-    // issue's bound; measured 8e-7), and in double fan and general agree to
-    // 1e-12 (measured 4e-14).
+    // vectors. So the float fan is held to the double general kernel at
+    // 1e-6 (the bound), or at twice the general float kernel's own
+    // worst error on that scene where that is larger (as the straight-line
+    // forms below): how far float rounding goes depends on the device's
+    // native_sqrt and contractions. Measured on PoCL: fan <= 8e-7, the
+    // general float kernel itself up to 8.7e-6 off its double result; on
+    // NVIDIA (H100) the fan reached 1.1e-6 on one pixel. In double fan and
+    // general agree to 1e-12 (measured 4e-14).
     // 45 x 45 pixels: the last work-item of a row holds 5 pixels of 8.
     auto asym = asymmetric();
     auto front = frontLobe();
@@ -227,10 +230,24 @@ TEST(Specialize, CubatureRectFanEqualsGeneral)
                            "cubature:dynamic=none", "cubature:corner_inset=0.3,dyn_weight=2",
                            "cubature:plane_eps=0.05", "cubature:normalize=formfactor",
                            "cubature:normalize=formfactor,weighting=dotout,dynamic=none,corner_inset=0.2"};
-    // Without double on the device: float against float, 1e-5 (the general
-    // float kernel's own error, 2.6e-6, with margin).
+    // Without double on the device: float against float, 2e-5 (the general
+    // float kernel's own error, 8.7e-6, plus the fan's, with margin).
     Precision ref = rt->fp64() ? Precision::Double : Precision::Float;
-    double rel = rt->fp64() ? 1e-6 : 1e-5;
+    double rel = rt->fp64() ? 1e-6 : 2e-5;
+    // worst relative error of the general float kernel against its double result
+    auto generalFloatError = [&](const Scene& s, const std::string& spec) {
+        RenderOptions opt;
+        opt.reps = 1;
+        auto general = parseSpec(spec + (spec.find(':') == std::string::npos ? ":" : ",") + "specialize=none");
+        auto gf = render(*rt, asym, s, general, Precision::Float, opt);
+        auto gd = render(*rt, asym, s, general, Precision::Double, opt);
+        double peak = 0, w = 0;
+        for (double v : gd.image.px) peak = std::max(peak, std::fabs(v));
+        for (size_t i = 0; i < gd.image.px.size(); ++i)
+            w = std::max(w, std::fabs(gf.image.px[i] - gd.image.px[i]) /
+                                std::max(std::fabs(gd.image.px[i]), 1e-12 * peak));
+        return w;
+    };
     // normalize=formfactor multiplies by the rectangle's Lambert irradiance,
     // whose float edge sum is ill-conditioned where the light is seen at a
     // grazing angle (its terms cancel): the general float kernel itself is
@@ -238,29 +255,24 @@ TEST(Specialize, CubatureRectFanEqualsGeneral)
     // fan, both against double). So formfactor is held per pixel to 1e-4,
     // and its worst pixel to twice the general float kernel's worst (+1e-6):
     // the fan is no less accurate than the general code. Double: 1e-12 below.
-    double worst = 0, worstFf = 0, worstFfGeneral = 0;
+    double worst = 0, worstGeneral = 0, worstFf = 0, worstFfGeneral = 0;
     for (const auto& s : scenes)
         for (const char* spec : specs) {
             bool ff = std::string(spec).find("formfactor") != std::string::npos;
+            double g = rt->fp64() ? generalFloatError(s, spec) : 0;
+            (ff ? worstFfGeneral : worstGeneral) = std::max(ff ? worstFfGeneral : worstGeneral, g);
             for (const char* lanes : {"1", "8"}) {
-                double d = cubatureDiff(*rt, asym, s, spec, Precision::Float, lanes, ref, ff ? 1e-4 : rel);
+                double d = cubatureDiff(*rt, asym, s, spec, Precision::Float, lanes, ref,
+                                        ff ? 1e-4 : std::max(rel, 2 * g));
                 (ff ? worstFf : worst) = std::max(ff ? worstFf : worst, d);
                 if (HasFailure()) return;
             }
-            if (ff && rt->fp64()) {
-                RenderOptions opt;
-                opt.reps = 1;
-                auto general = parseSpec(std::string(spec) + ",specialize=none");
-                auto gf = render(*rt, asym, s, general, Precision::Float, opt);
-                auto gd = render(*rt, asym, s, general, Precision::Double, opt);
-                double peak = 0;
-                for (double v : gd.image.px) peak = std::max(peak, std::fabs(v));
-                for (size_t i = 0; i < gd.image.px.size(); ++i)
-                    worstFfGeneral = std::max(worstFfGeneral, std::fabs(gf.image.px[i] - gd.image.px[i]) /
-                                                                  std::max(std::fabs(gd.image.px[i]), 1e-12 * peak));
-            }
         }
-    if (rt->fp64()) EXPECT_LE(worstFf, 2 * worstFfGeneral + 1e-6);
+    if (rt->fp64()) {
+        EXPECT_LE(worstFf, 2 * worstFfGeneral + 1e-6);
+    }
+    std::cout << "rectangle fan (float) against the double general kernel: worst relative difference " << worst
+              << " (general float kernel: " << worstGeneral << ")\n";
     std::cout << "formfactor (float), worst relative difference to the double general kernel: rectangle fan "
               << worstFf << ", general kernel " << worstFfGeneral << "\n";
 
@@ -268,12 +280,12 @@ TEST(Specialize, CubatureRectFanEqualsGeneral)
     // the float direction's rounding (~1e-7 rad) meets steep intensities:
     // the cos^3 lobe's relative slope 3 tan(gamma) grows without bound
     // towards its zero at 90 deg, and the exact lookup's acos/atan2 in float
-    // sit on the coarse 15 deg C grid. Measured 1.1e-6 and 6e-6; bound 1e-5.
+    // sit on the coarse 15 deg C grid. Measured (PoCL) 6.0e-6 for the 1D table
+    // and 7.9e-7 for the exact lookup; bound 1e-5.
     double steep = 1e-5;
-    worst = std::max(worst, cubatureDiff(*rt, front, scenes[0], "cubature", Precision::Float, "8", ref, steep));
-    worst = std::max(worst,
-                     cubatureDiff(*rt, asym, scenes[1], "cubature:lookup=exact", Precision::Float, "8", ref, steep));
-    std::cout << "rectangle fan (float) against the general kernel: worst relative difference " << worst << "\n";
+    double worst1d = cubatureDiff(*rt, front, scenes[0], "cubature", Precision::Float, "8", ref, steep);
+    double worstExact = cubatureDiff(*rt, asym, scenes[1], "cubature:lookup=exact", Precision::Float, "8", ref, steep);
+    std::cout << "rectangle fan (float), 1D table " << worst1d << ", exact lookup " << worstExact << "\n";
     if (!rt->fp64()) return;
     double worstD = 0;
     for (const auto& s : scenes)
