@@ -62,6 +62,22 @@ TEST(BenchCli, TableScriptReadsCommittedRuns)
     EXPECT_NE(out.find("Median run: "), std::string::npos) << out;
     EXPECT_NE(out.find("| cubature / MC 8 time (target <= 1) |"), std::string::npos) << out;
     EXPECT_NE(out.find("| mc:n=8 |"), std::string::npos) << out;
+    // Groups separated by `--` come side by side: one column per group, and
+    // "-" where a group's run lacks a method row.
+    std::string b = dir + "/experiments/bench/";
+    cmd = "python3 " + dir + "/plots/bench_table.py " + b + "pocl-epyc-run1.json -- " + b + "nvidia-h100-run1.json " +
+          b + "nvidia-h100-run2.json 2>&1";
+    p.reset(popen(cmd.c_str(), "r"));
+    ASSERT_TRUE(p);
+    out.clear();
+    while (fgets(buf.data(), buf.size(), p.get())) out += buf.data();
+    EXPECT_NE(out.find("| quantity | pthread-haswell-AMD EPYC (512^2) | NVIDIA H100 80GB HBM3 (512^2) |"),
+              std::string::npos)
+        << out;
+    auto row = out.find("| cubature:lanes=1 | ");  // 8 lanes on the CPU only: no GPU row
+    ASSERT_NE(row, std::string::npos) << out;
+    std::string line = out.substr(row, out.find('\n', row) - row);
+    EXPECT_EQ(line.substr(line.size() - 10), " | - | - |") << line;
     std::string bad = "python3 " + dir + "/plots/bench_table.py " + dir + "/nothing.json > /dev/null 2>&1";
     EXPECT_NE(std::system(bad.c_str()), 0);
 }
