@@ -76,10 +76,10 @@ __kernel void render(__global const real* P, __global const float* lum, __global
         real r2 = wu * wu + wv * wv + on2;
         real cw = au * wu + av * wv + an0;
 #ifdef LB_NO_HORIZON
-        real ri = R(1) / LB_LUT_SQRT(r2);
+        real ri = LB_LUT_RSQRT(r2);
 #else
         cw = cw > R(0) ? cw : R(0);
-        real ri = r2 > R(0) ? R(1) / LB_LUT_SQRT(r2) : R(0);
+        real ri = r2 > R(0) ? LB_LUT_RSQRT(r2) : R(0);
 #endif
         sum += LB_INTENSITY3(lum, -wu, -wv, -on) * cw * (ri * ri * ri);
         /* A barrier per sample makes PoCL put its work-item loop inside this

@@ -36,8 +36,12 @@
  * within a few ulp, far below the table's own error. */
 #if defined(__OPENCL_C_VERSION__) && !LB_REAL_IS_DOUBLE
 #define LB_LUT_SQRT(x) native_sqrt(x)
+/* 1 / sqrt(x): one hardware instruction on GPUs (NVIDIA: rsqrt.approx, a few
+ * ulp), where R(1) / native_sqrt(x) costs an IEEE division as well. */
+#define LB_LUT_RSQRT(x) native_rsqrt(x)
 #else
 #define LB_LUT_SQRT(x) sqrt(x)
+#define LB_LUT_RSQRT(x) (R(1) / sqrt(x))
 #endif
 
 /* Pseudo-gamma q in [0, 2] of a direction (x, y, z) in the luminaire frame. */
