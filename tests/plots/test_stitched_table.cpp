@@ -71,5 +71,26 @@ TEST(Plots, StitchedTable)
     fs::remove_all(dir);
 }
 
+// The counts docs/thesis-sct-vs-mci.md quotes come from the committed results.
+TEST(Plots, StitchedTableReproducesTheCommittedRuns)
+{
+    std::string script = test::sourceDir() + "/plots/stitched_table.py";
+    std::string res = test::sourceDir() + "/experiments/results/";
+    struct Run {
+        const char* file;
+        const char *sct, *voronoi;
+    };
+    for (const Run& r : {Run{"thesis-sct-pocl-epyc.json.xz", "cubature: beats its equal-time MCI in 100 of 140",
+                             "voronoi: beats its equal-time MCI in 122 of 140"},
+                         Run{"thesis-sct-h100-512.json.xz", "cubature: beats its equal-time MCI in 54 of 140",
+                             "voronoi: beats its equal-time MCI in 114 of 140"}}) {
+        int code = -1;
+        std::string out = capture("python3 " + script + " " + res + r.file + " 2>&1", &code);
+        EXPECT_EQ(code, 0) << r.file << "\n" << out;
+        EXPECT_NE(out.find(r.sct), std::string::npos) << r.file << "\n" << out;
+        EXPECT_NE(out.find(r.voronoi), std::string::npos) << r.file << "\n" << out;
+    }
+}
+
 } // namespace
 } // namespace lb
