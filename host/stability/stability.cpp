@@ -362,6 +362,17 @@ void writeReport(const std::string& dir, const std::vector<CaseResult>& results,
                  const Options& opt)
 {
     fs::create_directories(fs::path(dir) / "png");
+    // A rerun into the same directory must not leave the pictures of an
+    // earlier run's worst methods behind: remove the names this function
+    // writes (*_ref.png, *_test.png, *_err.png), nothing else.
+    for (const auto& e : fs::directory_iterator(fs::path(dir) / "png")) {
+        std::string n = e.path().filename().string();
+        auto ends = [&](const std::string& s) {
+            return n.size() >= s.size() && n.compare(n.size() - s.size(), s.size(), s) == 0;
+        };
+        if (e.is_regular_file() && (ends("_ref.png") || ends("_test.png") || ends("_err.png")))
+            fs::remove(e.path());
+    }
     nlohmann::json j = toJson(results, rt, opt);
     {
         std::ofstream f(fs::path(dir) / "stability.json");

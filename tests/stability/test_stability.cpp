@@ -143,6 +143,10 @@ TEST(Stability, QuickCliRunPasses)
 {
     LB_REQUIRE_RUNTIME(rt);
     auto dir = std::filesystem::temp_directory_path() / fmt::format("lb-stability-{}", ::getpid());
+    // a picture of an earlier run (removed) and a file of the user's (kept)
+    std::filesystem::create_directories(dir / "png");
+    std::ofstream(dir / "png" / "old_case_np_float_err.png") << "x";
+    std::ofstream(dir / "png" / "notes.txt") << "x";
     std::string cmd = test::binary() + " stability --quick --res 16 --out " + dir.string() + " > " +
                       (dir.string() + ".log") + " 2>&1";
     int st = std::system(cmd.c_str());
@@ -152,6 +156,8 @@ TEST(Stability, QuickCliRunPasses)
     EXPECT_TRUE(std::filesystem::exists(dir / "stability.json"));
     EXPECT_TRUE(std::filesystem::exists(dir / "report.md"));
     EXPECT_FALSE(std::filesystem::is_empty(dir / "png"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "png" / "old_case_np_float_err.png"));
+    EXPECT_TRUE(std::filesystem::exists(dir / "png" / "notes.txt"));
     std::filesystem::remove_all(dir);
     std::filesystem::remove(dir.string() + ".log");
 }
