@@ -177,6 +177,24 @@ TEST(Specialize, CubatureRectFanRule)
     EXPECT_EQ(cubatureLanes(analyseCubature(s, t, opts("triangulation=delaunay")), opts(""), "CPU", false), 1);
 }
 
+// Worst per-pixel relative difference of `test` from `ref` (denominator at
+// least 1e-12 of ref's peak); each pixel is held within `bound` (the loop
+// stops at the first pixel beyond it). `what` names the comparison.
+double worstRelDiff(const std::vector<double>& ref, const std::vector<double>& test, double bound,
+                    const std::string& what)
+{
+    double peak = 0, worst = 0;
+    for (double v : ref) peak = std::max(peak, std::fabs(v));
+    EXPECT_GT(peak, 0) << what;
+    for (size_t i = 0; i < ref.size(); ++i) {
+        double d = std::fabs(ref[i] - test[i]) / std::max(std::fabs(ref[i]), 1e-12 * peak);
+        worst = std::max(worst, d);
+        EXPECT_LE(d, bound) << what << " pixel " << i << ": " << ref[i] << " vs " << test[i];
+        if (d > bound) break;
+    }
+    return worst;
+}
+
 // `spec` rendered by the rectangle fan with `lanes` (1 or 8) in precision p,
 // against the general kernel in precision `ref`; per pixel within `rel` of
 // the general value (floor 1e-12 of the peak). Returns the worst relative
@@ -191,17 +209,7 @@ double cubatureDiff(ocl::Runtime& rt, const photometry::Table& t, const Scene& s
     std::string sep = spec.find(':') == std::string::npos ? ":" : ",";
     auto gen = render(rt, t, s, parseSpec(spec + sep + "specialize=none"), ref, opt);
     auto sp = render(rt, t, s, parseSpec(spec + sep + "lanes=" + lanes), p, opt);
-    double peak = 0, worst = 0;
-    for (double v : gen.image.px) peak = std::max(peak, std::fabs(v));
-    EXPECT_GT(peak, 0);
-    for (size_t i = 0; i < gen.image.px.size(); ++i) {
-        double a = gen.image.px[i], b = sp.image.px[i];
-        double d = std::fabs(a - b) / std::max(std::fabs(a), 1e-12 * peak);
-        worst = std::max(worst, d);
-        EXPECT_LE(d, rel) << spec << " lanes=" << lanes << " " << s.describe() << " pixel " << i << ": " << a
-                          << " vs " << b;
-        if (d > rel) break;
-    }
+    double worst = worstRelDiff(gen.image.px, sp.image.px, rel, spec + " lanes=" + lanes + " " + s.describe());
     // The statistics (triangles per pixel) follow the general code's cases.
     EXPECT_EQ(gen.stats["triangles_per_pixel"], sp.stats["triangles_per_pixel"]) << spec << " " << s.describe();
     return worst;
@@ -241,12 +249,7 @@ TEST(Specialize, CubatureRectFanEqualsGeneral)
         auto general = parseSpec(spec + (spec.find(':') == std::string::npos ? ":" : ",") + "specialize=none");
         auto gf = render(*rt, asym, s, general, Precision::Float, opt);
         auto gd = render(*rt, asym, s, general, Precision::Double, opt);
-        double peak = 0, w = 0;
-        for (double v : gd.image.px) peak = std::max(peak, std::fabs(v));
-        for (size_t i = 0; i < gd.image.px.size(); ++i)
-            w = std::max(w, std::fabs(gf.image.px[i] - gd.image.px[i]) /
-                                std::max(std::fabs(gd.image.px[i]), 1e-12 * peak));
-        return w;
+        return worstRelDiff(gd.image.px, gf.image.px, HUGE_VAL, spec + " general float " + s.describe());
     };
     // normalize=formfactor multiplies by the rectangle's Lambert irradiance,
     // whose float edge sum is ill-conditioned where the light is seen at a
@@ -322,17 +325,7 @@ TEST(Specialize, StraightLineFormsEqualGeneral)
         std::string general = spec.find("specialize") != std::string::npos ? spec : spec + sep + "specialize=none";
         auto gen = render(*rt, t, s, parseSpec(general), pr, opt);
         auto sp = render(*rt, t, s, parseSpec(spec), p, opt);
-        double peak = 0, worst = 0;
-        for (double v : gen.image.px) peak = std::max(peak, std::fabs(v));
-        EXPECT_GT(peak, 0) << spec << " " << s.describe();
-        for (size_t i = 0; i < gen.image.px.size(); ++i) {
-            double a = gen.image.px[i], b = sp.image.px[i];
-            double d = std::fabs(a - b) / std::max(std::fabs(a), 1e-12 * peak);
-            worst = std::max(worst, d);
-            EXPECT_LE(d, bound) << spec << " " << s.describe() << " pixel " << i << ": " << a << " vs " << b;
-            if (d > bound) break;
-        }
-        return worst;
+        return worstRelDiff(gen.image.px, sp.image.px, bound, spec + " " + s.describe());
     };
     struct Case {
         std::string name, define;
