@@ -5,9 +5,11 @@
 // type, total lamp flux (lm), colour, CRI, watts; 10 direct ratios; Nc C
 // angles; Ng gamma angles; Mc x Ng intensities (cd/klm), plane by plane.
 //
-// Stored planes Mc by Isym: 0 all Nc; 1 one; 2 C0..C180 (Nc/2 + 1);
-// 3 C90..C270 (Nc/2 + 1, starting at the C = 90 entry of the angle list, the
-// reading of DIN EN 13032 / DIALux); 4 C0..C90 (Nc/4 + 1).
+// Stored planes Mc1..Mc2 by Isym (1-based angle-list indices, modulo Nc):
+// 0 all Nc; 1 one; 2 1..Nc/2+1 (C0..C180); 3 3Nc/4+1..3Nc/4+1+Nc/2, i.e.
+// C270, C285, ..., C345, C0, ..., C90 in that order (the EULUMDAT definition,
+// read so by Aardvark.Data.Photometry, which rendered the seeds' figures, and
+// by pyldt); 4 1..Nc/4+1 (C0..C90).
 #include "photometry/ldt.h"
 
 #include "photometry/symmetry.h"
@@ -98,12 +100,9 @@ Table readLdt(const TextFile& f)
         mc = nc / 2 + 1;
         break;
     case 3: {
-        need(nc % 2 == 0, "an even Nc for Isym 3");
+        need(nc % 4 == 0, "Nc divisible by 4 for Isym 3");
         mc = nc / 2 + 1;
-        auto it = std::find(cAll.begin(), cAll.end(), 90.0);
-        need(it != cAll.end(), "a C = 90 plane in the angle list for Isym 3");
-        first = static_cast<size_t>(it - cAll.begin());
-        need(first + mc <= cAll.size(), "Nc/2 + 1 planes from C = 90 on for Isym 3");
+        first = static_cast<size_t>(3 * nc / 4); // C270, then on through C0 to C90
         break;
     }
     case 4:
@@ -114,8 +113,14 @@ Table readLdt(const TextFile& f)
     }
     // (Isym 1 may list no angle at all; its one plane stands for every C.)
     std::vector<double> cStored = {0};
-    if (isym != 1) cStored.assign(cAll.begin() + first, cAll.begin() + first + mc);
-    const double lastC[] = {-1, 0, 180, 270, 90};
+    if (isym != 1) {
+        cStored.resize(mc);
+        for (size_t p = 0; p < mc; ++p) cStored[p] = cAll[(first + p) % cAll.size()];
+    }
+    const double firstC[] = {0, 0, 0, 270, 0}, lastC[] = {-1, 0, 180, 90, 90};
+    if (isym == 3 && cStored.front() != firstC[isym])
+        f.fail(isymLine, fmt::format("stored planes starting at C = {} for Isym {}", firstC[isym], isym),
+               fmt::format("C = {}", cStored.front()));
     if (isym >= 2 && cStored.back() != lastC[isym])
         f.fail(isymLine, fmt::format("stored planes ending at C = {} for Isym {}", lastC[isym], isym),
                fmt::format("C = {}", cStored.back()));
@@ -133,7 +138,12 @@ Table readLdt(const TextFile& f)
             planes[p][i] = v * scale;
         }
 
-    Table t = unfold(isym, cStored, gamma, planes, fmt::format("{}:{}", f.path, isymLine));
+    // unfold() takes the C90-C270 half for Isym 3: plane C stands for its mirror
+    // image 180 - C there (C270 -> 270, C0 -> 180, C90 -> 90).
+    std::vector<double> cUnfold = cStored;
+    if (isym == 3)
+        for (double& c : cUnfold) c = c <= 90 ? 180 - c : 540 - c;
+    Table t = unfold(isym, cUnfold, gamma, planes, fmt::format("{}:{}", f.path, isymLine));
     t.source = f.path;
     t.format = "ldt";
     t.isym = isym;

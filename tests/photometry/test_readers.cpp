@@ -5,6 +5,7 @@
 #include "photometry/load.h"
 #include "photometry/symmetry.h"
 #include "testutil.h"
+#include "util/error.h"
 
 #include <fmt/format.h>
 
@@ -78,8 +79,9 @@ TEST(Readers, LdtSymmetryUnfoldingPlaneByPlane)
         {1, 1, {{0, 0}, {360, 0}}},
         // Isym 2: planes 0..180 stored, I(C) = I(360 - C).
         {2, 5, {{0, 0}, {45, 1}, {90, 2}, {135, 3}, {180, 4}, {225, 3}, {270, 2}, {315, 1}, {360, 0}}},
-        // Isym 3: planes 90..270 stored (index 0 = C90), I(C) = I(180 - C).
-        {3, 5, {{0, 2}, {45, 1}, {90, 0}, {135, 1}, {180, 2}, {225, 3}, {270, 4}, {315, 3}, {360, 2}}},
+        // Isym 3: planes C270, C315, C0, C45, C90 stored in that order (index 0 =
+        // C270), I(C) = I(180 - C).
+        {3, 5, {{0, 2}, {45, 3}, {90, 4}, {135, 3}, {180, 2}, {225, 1}, {270, 0}, {315, 1}, {360, 2}}},
         // Isym 4: planes 0..90 stored.
         {4, 3, {{0, 0}, {45, 1}, {90, 2}, {135, 1}, {180, 0}, {225, 1}, {270, 2}, {315, 1}, {360, 0}}},
     };
@@ -90,6 +92,25 @@ TEST(Readers, LdtSymmetryUnfoldingPlaneByPlane)
             for (size_t ig = 0; ig < 3; ++ig) EXPECT_EQ(node(t, c, ig), 100.0 * p + ig) << "Isym " << cs.isym << " C " << c;
         EXPECT_EQ(t.isym, cs.isym);
     }
+}
+
+// Isym 3 with Nc = 4 (Dc = 90): the file stores C270, C0, C90 in that order
+// (EULUMDAT: planes 3Nc/4+1 .. 3Nc/4+1+Nc/2, modulo Nc). The C90 and C270
+// sides differ (1 against 201 cd at gamma 45), so reading the first stored
+// plane as C90 (a 180-degree turn) fails here. Values are exact: plane p
+// holds 100 p + ig cd/klm at 1000 lm, and the in-between angles are the
+// bilinear midpoints.
+TEST(Readers, LdtIsym3StoresC270ThroughC0ToC90)
+{
+    Table t = readLdtString(tinyLdt(3, 4, 3));
+    struct Node {
+        double gamma, c, cd;
+    };
+    for (Node n : {Node{45, 270, 1}, Node{45, 0, 101}, Node{45, 90, 201}, Node{45, 180, 101}, Node{0, 270, 0},
+                   Node{90, 90, 202}, Node{45, 135, 151}, Node{45, 315, 51}, Node{45, 225, 51}, Node{45, 45, 151}})
+        EXPECT_DOUBLE_EQ(t.intensity(n.c, n.gamma), n.cd) << "gamma " << n.gamma << " C " << n.c;
+    // Nc not divisible by 4 has no C270 plane to start from.
+    EXPECT_THROW(readLdtString(tinyLdt(3, 6, 4)), InputError);
 }
 
 TEST(Readers, LoadDispatchesByExtensionThenContent)
@@ -158,10 +179,10 @@ TEST(Readers, RealLdtPlaneByPlane)
         const char* name;
         int isym;
         size_t mc, ng;
-        double firstC, flux;
+        double flux;
     };
-    for (F f : {F{"PANOS_60813872.LDT", 3, 13, 73, 90, 1012}, F{"LINETIK-S_42184482.LDT", 3, 13, 37, 90, 0},
-                F{"SLOTLIGHT_42184612.LDT", 4, 7, 37, 0, 0}}) {
+    for (F f : {F{"PANOS_60813872.LDT", 3, 13, 73, 1012}, F{"LINETIK-S_42184482.LDT", 3, 13, 37, 0},
+                F{"SLOTLIGHT_42184612.LDT", 4, 7, 37, 0}}) {
         std::string path = dir + "/luminaires/zumtobel/" + f.name;
         Table t = load(path);
         ASSERT_EQ(t.isym, f.isym);
@@ -169,7 +190,10 @@ TEST(Readers, RealLdtPlaneByPlane)
         double scale = t.at(0, 0) / raw[0]; // flux / 1000, from any non-zero node
         for (size_t ic = 0; ic < t.nc(); ++ic) {
             double folded = foldC(f.isym, t.c[ic]);
-            size_t p = static_cast<size_t>(std::lround((folded - f.firstC) / 15.0));
+            // Isym 3 stores C270, C285, ..., C0, ..., C90: the folded angle
+            // (in 90..270) is the mirror image 180 - C of stored plane p.
+            double fromFirst = f.isym == 3 ? 270 - folded : folded;
+            size_t p = static_cast<size_t>(std::lround(fromFirst / 15.0));
             ASSERT_LT(p, f.mc) << f.name << " C " << t.c[ic];
             for (size_t ig = 0; ig < f.ng; ++ig)
                 EXPECT_NEAR(t.at(ic, ig), raw[p * f.ng + ig] * scale, 1e-12 * (1 + t.at(ic, ig)))
