@@ -4,24 +4,33 @@
  *   -DLB_DYN_CP / -DLB_DYN_NP / -DLB_DYN_MRP  one dynamic sample (paper 4.2,
  *                   thesis 4.2) on the horizon-clipped light, with the
  *                   structured estimator at N = 1: E = Omega_L L_e(d) cos.
- * Straight-line forms (common/dynamic_lanes.inc, issue 9; the host decides,
- * methods/straight.h): LB_DYN_RECT with LB_DYN_POINT (any scene) or LB_DYN_CP
- * (nothing clipped), one pixel per work-item, or with LB_LANES=8 and LB_LUT
- * in float eight (the host launches ceil(N / 8) work-items per row).
- * @variants: "-DLB_DYN_POINT" | "-DLB_DYN_CP" | "-DLB_DYN_NP" | "-DLB_DYN_MRP" | "-DLB_DYN_POINT -DLB_DYN_RECT" | "-DLB_DYN_CP -DLB_DYN_RECT -DLB_LUT" | "-DLB_DYN_POINT -DLB_DYN_RECT -DLB_LUT -DLB_LANES=8" | "-DLB_DYN_CP -DLB_DYN_RECT -DLB_LUT -DLB_LANES=8"
+ * Straight-line forms (common/dynamic_lanes.inc; the host decides,
+ * methods/straight.h): LB_DYN_RECT with LB_DYN_POINT (any scene) or
+ * LB_DYN_CP, LB_DYN_NP, LB_DYN_MRP (nothing clipped), one pixel per
+ * work-item, or with LB_LANES=8 and LB_LUT in float eight (the host launches
+ * ceil(N / 8) work-items per row).
+ * @variants: "-DLB_DYN_POINT" | "-DLB_DYN_CP" | "-DLB_DYN_NP" | "-DLB_DYN_MRP" | "-DLB_DYN_POINT -DLB_DYN_RECT" | "-DLB_DYN_CP -DLB_DYN_RECT -DLB_LUT" | "-DLB_DYN_POINT -DLB_DYN_RECT -DLB_LUT -DLB_LANES=8" | "-DLB_DYN_CP -DLB_DYN_RECT -DLB_LUT -DLB_LANES=8" | "-DLB_DYN_NP -DLB_DYN_RECT" | "-DLB_DYN_MRP -DLB_DYN_RECT -DLB_LUT" | "-DLB_DYN_NP -DLB_DYN_RECT -DLB_LUT -DLB_LANES=8" | "-DLB_DYN_MRP -DLB_DYN_RECT -DLB_LUT -DLB_LANES=8"
  */
 #include "common/lbmath.h"
 
+/* LB_DYN_RECT_CALL(fn): the straight-line form fn (or fn_x8) on the pixel's
+ * rectangle; np and mrp also take the skew. */
 #ifdef LB_DYN_RECT
 #if defined(LB_DYN_POINT)
-#define LB_DYN_RECT_FN lb_point_rect
-#define LB_DYN_RECT_FN8 lb_point_rect_x8
+#define LB_DYN_RECT_FN(s) lb_point_rect##s
 #elif defined(LB_DYN_CP)
-#define LB_DYN_RECT_FN lb_cp_rect
-#define LB_DYN_RECT_FN8 lb_cp_rect_x8
-#else
-#error "LB_DYN_RECT: point and cp only"
+#define LB_DYN_RECT_FN(s) lb_cp_rect##s
+#elif defined(LB_DYN_NP)
+#define LB_DYN_RECT_FN(s) lb_np_rect##s
+#define LB_DYN_SKEW , skew
+#elif defined(LB_DYN_MRP)
+#define LB_DYN_RECT_FN(s) lb_mrp_rect##s
+#define LB_DYN_SKEW , skew
 #endif
+#ifndef LB_DYN_SKEW
+#define LB_DYN_SKEW
+#endif
+#define LB_DYN_RECT_CALL(s) LB_DYN_RECT_FN(s)(lum, ou, ov, on, P[12], P[13], au, av, an LB_DYN_SKEW)
 #endif
 
 #if defined(LB_DYN_RECT) && defined(LB_LANES) && LB_LANES == 8 && !defined(LB_DOUBLE)
@@ -39,7 +48,7 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     real au, av, an;
     if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
         return;
-    lb_store_x8(out, row * res + col0, res - col0, LB_DYN_RECT_FN8(lum, ou, ov, on, P[12], P[13], au, av, an));
+    lb_store_x8(out, row * res + col0, res - col0, LB_DYN_RECT_CALL(_x8));
 }
 #elif defined(LB_DYN_RECT)
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0, real skew)
@@ -48,7 +57,7 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     real ou, ov, on, au, av, an;
     if (!lb_work_item_pixels(P, row0, &col, &row, &res, &ou, &ov, &on, &au, &av, &an))
         return;
-    out[row * res + col] = LB_DYN_RECT_FN(lum, ou, ov, on, P[12], P[13], au, av, an);
+    out[row * res + col] = LB_DYN_RECT_CALL();
 }
 #else
 

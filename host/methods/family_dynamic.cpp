@@ -23,9 +23,8 @@ Family dynamicFamily(const std::string& name, const std::string& define, const s
     addStraightLineOptions(f, rect, [needsNoClip](const Scene& scene, const MethodSpec&) {
         return !needsNoClip || lightAboveEveryHorizon(scene);
     });
-    f.setArgs = [skew](LaunchContext& c, int first) {
-        ocl::setReal(c.kernel, first, skew ? c.spec.num("skew") : 0.1, c.dbl());
-    };
+    f.args = {"skew"};
+    f.setArgs = [skew](LaunchContext& c) { c.realArg("skew", skew ? c.spec.num("skew") : 0.1); };
     return f;
 }
 } // namespace
@@ -36,8 +35,10 @@ void registerDynamic(Registry& r)
                         "-DLB_DYN_RECT", false));
     r.add(dynamicFamily("cp", "-DLB_DYN_CP", "one sample at the closest point of the clipped light", false,
                         "-DLB_DYN_RECT", true));
-    r.add(dynamicFamily("np", "-DLB_DYN_NP", "one sample at the (clamped) normal point", true, "", true));
-    r.add(dynamicFamily("mrp", "-DLB_DYN_MRP", "one sample at the most representative point", true, "", true));
+    r.add(dynamicFamily("np", "-DLB_DYN_NP", "one sample at the (clamped) normal point", true, "-DLB_DYN_RECT",
+                        true));
+    r.add(dynamicFamily("mrp", "-DLB_DYN_MRP", "one sample at the most representative point", true,
+                        "-DLB_DYN_RECT", true));
 }
 
 } // namespace lb::methods

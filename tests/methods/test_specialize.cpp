@@ -299,7 +299,7 @@ TEST(Specialize, CubatureRectFanEqualsGeneral)
 
 
 // The straight-line forms of voronoi (any scene: the method never clips) and
-// of point (any scene), cp and structured (nothing clipped) against their
+// of point (any scene), cp, np, mrp and structured (nothing clipped) against their
 // general kernels (methods/straight.h), as the cubature's fan above: double
 // within 1e-12; float within 1e-6 of the double general kernel, or twice the
 // general float kernel's own worst error where that is larger: next to the
@@ -333,7 +333,8 @@ TEST(Specialize, StraightLineFormsEqualGeneral)
     };
     double worst = 0, worstD = 0;
     for (const Case& c : {Case{"voronoi", "-DLB_VOR_RECT", true}, Case{"point", "-DLB_DYN_RECT", true},
-                          Case{"cp", "-DLB_DYN_RECT", false}, Case{"structured", "-DLB_STRUCT_RECT", false}}) {
+                          Case{"cp", "-DLB_DYN_RECT", false}, Case{"np", "-DLB_DYN_RECT", false},
+                          Case{"mrp", "-DLB_DYN_RECT", false}, Case{"structured", "-DLB_STRUCT_RECT", false}}) {
         const Family& fam = family(c.name);
         std::vector<Scene> scenes = unclipped;
         if (c.anyScene) scenes.push_back(crossing);
@@ -362,6 +363,13 @@ TEST(Specialize, StraightLineFormsEqualGeneral)
     }
     worst = std::max(worst, diff(asym, unclipped[1], "voronoi:lanes=8,table_res=9,plane_eps=0.05", Precision::Float,
                                  ref, rel));
+    // np and mrp with a larger skew (the normal tilts for more pixels)
+    for (const char* spec : {"np:lanes=8,skew=0.9", "mrp:lanes=8,skew=0.9"})
+        for (const auto& s : unclipped) worst = std::max(worst, diff(asym, s, spec, Precision::Float, ref, rel));
+    if (rt->fp64())
+        for (const char* spec : {"np:skew=0.9", "mrp:skew=0.9"})
+            for (const auto& s : unclipped)
+                worstD = std::max(worstD, diff(asym, s, spec, Precision::Double, Precision::Double, 1e-12));
     std::cout << "straight-line forms against the general kernels: float " << worst << ", double " << worstD << "\n";
 }
 
