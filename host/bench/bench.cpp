@@ -3,6 +3,7 @@
 #include "experiments/results.h"
 #include "methods/cubature_options.h"
 #include "methods/registry.h"
+#include "methods/render.h"
 #include "methods/samples.h"
 #include "methods/specialize.h"
 #include "photometry/lut.h"
@@ -10,41 +11,48 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <map>
 #include <sstream>
 
 namespace lb::bench {
 
 namespace {
 
-// One kernel with its buffers, timed over the whole image.
+// Kernels timed over the whole image: every family through methods::Prepared
+// (the renderer's own build and bind), and the naive MC kernel, which is no
+// family, bound here.
 struct Bench {
     ocl::Runtime& rt;
+    const photometry::Table& table;
     const Scene& scene;
     const Options& opt;
 
-    cl::Buffer floats(const std::vector<float>& v)
-    {
-        return cl::Buffer(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, v.size() * sizeof(float),
-                          const_cast<float*>(v.data()));
-    }
-    cl::Buffer reals(const std::vector<double>& v)
-    {
-        std::vector<float> f(v.begin(), v.end());
-        return floats(f);
-    }
-    // `lanes` pixels of a row per work-item (methods::Family::lanes).
-    double time(cl::Kernel& k, int lanes = 1)
-    {
-        size_t cols = (scene.res + lanes - 1) / lanes;
-        return rt.time([&] { return rt.launch2D(k, cols, scene.res, opt.lx, opt.ly); }, opt.reps, 1).median_ms;
-    }
+    struct Timed {
+        double ms = 0;
+        std::string defines;
+        int lanes = 1;
+    };
 
-    // naive.cl or mc.cl: render(P, lum, out, row0, st, n).
-    double mc(const std::string& file, const std::string& defines, const std::vector<float>& lum, int n)
+    Timed spec(const std::string& text)
     {
-        cl::Kernel k = rt.kernel(file, "render", defines);
+        methods::MethodSpec s = methods::parseSpec(text);
+        methods::Prepared p(rt, table, scene, s, methods::Precision::Float);
+        p.setLocal(opt.lx, opt.ly);
+        return {p.time(opt.reps).median_ms, p.options(), p.lanes()};
+    }
+    double mc(int n) { return spec(fmt::format("mc:n={}", n)).ms; }
+
+    // naive.cl: render(P, lum, out, row0, st, n), the exact packed table.
+    double naive(int n)
+    {
+        cl::Kernel k = rt.kernel("naive.cl", "render", "");
+        auto floats = [&](const std::vector<float>& v) {
+            return cl::Buffer(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, v.size() * sizeof(float),
+                              const_cast<float*>(v.data()));
+        };
         auto st = methods::samplePoints("poisson", n, 0);
-        cl::Buffer P = reals(scene.params()), L = floats(lum), S = reals(st);
+        cl::Buffer P = floats(std::vector<float>(scene.params().begin(), scene.params().end()));
+        cl::Buffer L = floats(table.packed()), S = floats(std::vector<float>(st.begin(), st.end()));
         cl::Buffer out(rt.context(), CL_MEM_WRITE_ONLY, sizeof(float) * scene.res * scene.res);
         k.setArg(0, P);
         k.setArg(1, L);
@@ -52,34 +60,26 @@ struct Bench {
         k.setArg(3, cl_int(0));
         k.setArg(4, S);
         k.setArg(5, cl_int(n));
-        return time(k);
-    }
-
-    // cubature.cl: render(P, lum, out, row0, stats, want_stats, plane_eps, horizon_eps,
-    // corner_inset, dyn_weight, blend_dist),
-    // without the per-pixel statistics (want_stats = 0).
-    double cubature(const std::string& defines, const std::vector<float>& lum, int lanes = 1)
-    {
-        cl::Kernel k = rt.kernel("cubature.cl", "render",
-                                 lanes > 1 ? defines + fmt::format(" -DLB_LANES={}", lanes) : defines);
-        methods::CubatureOptions co;
-        cl::Buffer P = reals(scene.params()), L = floats(lum);
-        cl::Buffer out(rt.context(), CL_MEM_WRITE_ONLY, sizeof(float) * scene.res * scene.res);
-        cl::Buffer stats(rt.context(), CL_MEM_WRITE_ONLY, 2 * sizeof(cl_int));
-        k.setArg(0, P);
-        k.setArg(1, L);
-        k.setArg(2, out);
-        k.setArg(3, cl_int(0));
-        k.setArg(4, stats);
-        k.setArg(5, cl_int(0));
-        ocl::setReal(k, 6, co.planeEps, false);
-        ocl::setReal(k, 7, co.horizonEps, false);
-        ocl::setReal(k, 8, co.cornerInset, false);
-        ocl::setReal(k, 9, co.dynWeight, false);
-        ocl::setReal(k, 10, co.blendDist, false);
-        return time(k, lanes);
+        return rt.time([&] { return rt.launch2D(k, scene.res, scene.res, opt.lx, opt.ly); }, opt.reps, 1).median_ms;
     }
 };
+
+// The specs one run times: per family of the registry (the expensive
+// reference aside) its default, its specialize=none form where it has one,
+// and its Family::benchSpecs. --quick keeps the defaults.
+std::vector<std::string> benchSpecs(bool quick)
+{
+    std::vector<std::string> v;
+    for (const auto& f : methods::registry().all()) {
+        if (f.expensive) continue;
+        v.push_back(f.name);
+        if (quick) continue;
+        for (const auto& p : f.params)
+            if (p.name == "specialize") v.push_back(f.name + ":specialize=none");
+        v.insert(v.end(), f.benchSpecs.begin(), f.benchSpecs.end());
+    }
+    return v;
+}
 
 } // namespace
 
@@ -87,13 +87,10 @@ nlohmann::json run(ocl::Runtime& rt, const photometry::Table& table, const Scene
 {
     Scene scene = scene0;
     scene.res = opt.res;
-    Bench b{rt, scene, opt};
+    Bench b{rt, table, scene, opt};
     const double px = double(scene.res) * scene.res;
-    const auto exact = table.packed();
     const auto lut = photometry::buildLut(table);
     const auto spec = methods::analyse(scene, table, true, true);
-    const auto general = methods::analyse(scene, table, true, false);
-    const auto specExact = methods::analyse(scene, table, false, true);
 
     nlohmann::json doc;
     doc["device"] = rt.info().name;
@@ -114,12 +111,12 @@ nlohmann::json run(ocl::Runtime& rt, const photometry::Table& table, const Scene
     int n = opt.samples;
     std::vector<double> naives, fasts;
     for (int r = 0; r < opt.rounds; ++r) {
-        naives.push_back(b.mc("naive.cl", "", exact, n));
-        fasts.push_back(b.mc("mc.cl", spec.defines(), lut.packed, n));
+        naives.push_back(b.naive(n));
+        fasts.push_back(b.mc(n));
     }
     double naive = ocl::summarize(naives).median_ms, fast = ocl::summarize(fasts).median_ms;
-    double fastExact = b.mc("mc.cl", specExact.defines(), exact, n);
-    double generalLut = b.mc("mc.cl", general.defines(), lut.packed, n);
+    double fastExact = b.spec(fmt::format("mc:n={},lookup=exact", n)).ms;
+    double generalLut = b.spec(fmt::format("mc:n={},specialize=none", n)).ms;
     auto sps = [&](double ms) { return px * n / (ms * 1e-3); };
     double ratio = naive / fast;
     doc["mc"] = {{"n", n},
@@ -142,7 +139,7 @@ nlohmann::json run(ocl::Runtime& rt, const photometry::Table& table, const Scene
     double sx = 0, sy = 0, sxx = 0, sxy = 0;
     double mc8 = 0;
     for (int k : ns) {
-        double t = b.mc("mc.cl", spec.defines(), lut.packed, k);
+        double t = b.mc(k);
         if (k == 8) mc8 = t;
         pts.push_back({k, t});
         sx += k, sy += t, sxx += double(k) * k, sxy += k * t;
@@ -152,81 +149,63 @@ nlohmann::json run(ocl::Runtime& rt, const photometry::Table& table, const Scene
     double t0 = (sy - slope * sx) / m;
     doc["mc_fit"] = {{"points", pts}, {"t0_ms", t0}, {"ms_per_sample", slope}};
 
-    // 3. Every method's time per pixel.
+    // 3. Every method's time per pixel, each as render() builds it.
     nlohmann::json methods = nlohmann::json::array();
-    auto add = [&](const std::string& name, double ms, const std::string& defines) {
-        methods.push_back({{"method", name}, {"time_ms", ms}, {"ns_per_pixel", ms * 1e6 / px}, {"defines", defines}});
+    std::map<std::string, double> ms;
+    auto add = [&](const std::string& name, double t, const std::string& defines) {
+        ms[name] = t;
+        methods.push_back({{"method", name}, {"time_ms", t}, {"ns_per_pixel", t * 1e6 / px}, {"defines", defines}});
     };
     add(fmt::format("naive mc:n={}", n), naive, "");
-    add(fmt::format("mc:n={} (exact lookup)", n), fastExact, specExact.defines());
-    add(fmt::format("mc:n={} (lut, general)", n), generalLut, general.defines());
-    add(fmt::format("mc:n={}", n), fast, spec.defines());
-    add("mc:n=8", mc8, spec.defines());
-    // Each family as `render` builds it: structural and scene defines, its
-    // `lum` buffer, its lanes (methods::Family).
-    for (const char* name : {"point", "structured", "cp", "np", "mrp", "voronoi", "voronoi:specialize=none"}) {
-        if (opt.quick && std::string(name) != "point" && std::string(name) != "voronoi") continue;
-        auto s = methods::parseSpec(name);
-        const auto& fam = methods::family(s.name);
-        std::string defs = fam.defines ? fam.defines(s) : std::string();
-        if (fam.sceneDefines) defs += fam.sceneDefines(s, scene, table);
-        int lanes = fam.lanes ? fam.lanes(s, scene, table, rt.info(), methods::Precision::Float) : 1;
-        if (lanes > 1) defs += fmt::format(" -DLB_LANES={}", lanes);
-        cl::Kernel k = rt.kernel(fam.file, fam.kernelName, defs);
-        cl::Buffer P = b.reals(scene.params()), L = b.floats(fam.lumBuffer ? fam.lumBuffer(s, table) : exact);
-        cl::Buffer out(rt.context(), CL_MEM_WRITE_ONLY, sizeof(float) * scene.res * scene.res);
-        k.setArg(0, P);
-        k.setArg(1, L);
-        k.setArg(2, out);
-        k.setArg(3, cl_int(0));
-        methods::LaunchContext ctx{rt, s, scene, table, methods::Precision::Float, k, {}, {}, {}};
-        ctx.lanes = lanes;
-        if (fam.setArgs) fam.setArgs(ctx, 4);
-        add(name, b.time(k, lanes), defs);
+    int cubLanes = 1;
+    for (const auto& s : benchSpecs(opt.quick)) {
+        if (ms.count(s)) continue;
+        Bench::Timed t = s == "mc:n=8" ? Bench::Timed{mc8, spec.defines(), 1} : b.spec(s);
+        add(s, t.ms, t.defines + (t.lanes > 1 ? fmt::format(" -DLB_LANES={}", t.lanes) : ""));
+        if (s == "cubature") cubLanes = t.lanes;
     }
-    // The cubature as `render` builds it (methods/specialize.h
-    // analyseCubature): specialised, then the general kernel with the same
-    // LUT, then the exact lookup.
-    auto cubDefines = [&](const methods::CubatureOptions& o) {
-        return o.defines() + methods::analyseCubature(scene, table, o).defines();
-    };
-    methods::CubatureOptions co, coGeneral, coExact, co1;
-    coGeneral.specialize = false;
-    coExact.specialize = false;
-    coExact.lut = false;
-    co1.lanes = 1;
-    const auto cubSpec = methods::analyseCubature(scene, table, co);
-    const int lanes = methods::cubatureLanes(cubSpec, co, rt.info().type, false);
-    double cub = b.cubature(cubDefines(co), lut.packed, lanes);
-    double cubGeneral = b.cubature(cubDefines(coGeneral), lut.packed);
-    double cubExact = b.cubature(cubDefines(coExact), exact);
-    add("cubature (exact lookup, general)", cubExact, cubDefines(coExact));
-    add("cubature (lut, general)", cubGeneral, cubDefines(coGeneral));
-    if (cubSpec.rectFan && lanes > 1) add("cubature:lanes=1", b.cubature(cubDefines(co1), lut.packed), cubDefines(co1));
-    add("cubature", cub, cubDefines(co) + (lanes > 1 ? fmt::format(" -DLB_LANES={}", lanes) : ""));
-    doc["cubature_specialization"] = cubSpec.json();
-    doc["cubature_lanes"] = lanes;
-    if (!opt.quick) {
-        methods::CubatureOptions cd;
-        cd.triangulation = 1;
-        add("cubature:triangulation=delaunay", b.cubature(cubDefines(cd), lut.packed), cubDefines(cd));
-    }
+    const double cub = ms.at("cubature");
+    methods::CubatureOptions co;
+    doc["cubature_specialization"] = methods::analyseCubature(scene, table, co).json();
+    doc["cubature_lanes"] = cubLanes;
     doc["methods"] = methods;
 
     // 4. Cubature against MC 8, and its equal-time sample count.
     // From the fit, then one secant correction on the measured t(N) (the fit
     // is only near linear, and the machine's load drifts).
     int neq = std::max(1, int(std::lround((cub - t0) / slope)));
-    double verify = b.mc("mc.cl", spec.defines(), lut.packed, neq);
+    double verify = b.mc(neq);
     int fitN = neq;
     if (verify > 0 && std::fabs(verify - cub) > 0.1 * cub) {
         neq = std::max(1, int(std::lround(neq * cub / verify)));
-        verify = b.mc("mc.cl", spec.defines(), lut.packed, neq);
+        verify = b.mc(neq);
     }
     double cr = cub / mc8;
     doc["cubature"] = {{"time_ms", cub},   {"mc8_ms", mc8},        {"ratio", cr},        {"target", 1.0},
                        {"ok", cr <= 1.0},  {"equal_time_n", neq},  {"verify_ms", verify},
                        {"fit_n", fitN}};
+
+    // 5. The fair-equal-time goals, as ratios of this run's times: every
+    // variant in its fastest form before its verdict.
+    struct Goal {
+        const char* name;
+        const char* num;
+        const char* den;
+        double target;
+    };
+    nlohmann::json goals = nlohmann::json::array();
+    for (Goal g : {Goal{"delaunay cp+barycentre / fan", "cubature:triangulation=delaunay,dynamic=cp+barycentre",
+                        "cubature", 1.5},
+                   Goal{"delaunay cp+np+mrp+barycentre / fan",
+                        "cubature:triangulation=delaunay,dynamic=cp+np+mrp+barycentre", "cubature", 2.5},
+                   Goal{"np / cp", "np", "cp", 2.0}, Goal{"mrp / cp", "mrp", "cp", 2.0},
+                   Goal{"cubature / mc 8", "cubature", "mc:n=8", 1.0}}) {
+        if (!ms.count(g.num) || !ms.count(g.den)) continue;
+        double r = ms[g.num] / ms[g.den];
+        goals.push_back({{"name", g.name}, {"numerator", g.num}, {"denominator", g.den}, {"ratio", r},
+                         {"target", g.target}, {"ok", r <= g.target}});
+    }
+    doc["goals"] = goals;
     return doc;
 }
 
@@ -254,6 +233,10 @@ std::string format(const nlohmann::json& d)
     o << fmt::format("cubature / MC 8 = {:.2f} (target <= 1: {}); equal-time MC N = {} (t = {:.3f} ms vs {:.3f} ms)\n",
                      c["ratio"].get<double>(), c["ok"].get<bool>() ? "met" : "MISSED", c["equal_time_n"].get<int>(),
                      c["verify_ms"].get<double>(), c["time_ms"].get<double>());
+    if (d.contains("goals"))
+        for (const auto& g : d["goals"])
+            o << fmt::format("{:<36} {:>6.2f} (target <= {:g}: {})\n", g["name"].get<std::string>(),
+                             g["ratio"].get<double>(), g["target"].get<double>(), g["ok"].get<bool>() ? "met" : "MISSED");
     return o.str();
 }
 

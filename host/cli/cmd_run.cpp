@@ -17,7 +17,7 @@ void addRunCommand(CLI::App& app)
 {
     struct Opts {
         std::string exp, out, luminaires, shard = "1/1";
-        int res = 0, reps = 0, device = -1;
+        int res = 0, reps = 0, timeRes = 0, device = -1;
         bool noReport = false, quiet = false;
     };
     auto o = std::make_shared<Opts>();
@@ -31,6 +31,9 @@ void addRunCommand(CLI::App& app)
     cmd->add_option("--shard", o->shard, "Run shard K of N: the scenes with index % N == K-1")->capture_default_str();
     cmd->add_option("--res", o->res, "Override the experiment's resolution");
     cmd->add_option("--reps", o->reps, "Override the experiment's timed runs per cell");
+    cmd->add_option("--time-res", o->timeRes,
+                    "Override the experiment's timing resolution: every method is timed at N x N pixels "
+                    "(default 512, DESIGN 6), whatever the error image's --res");
     cmd->add_option("--device", o->device, "OpenCL device index (lumibench devices)");
     cmd->add_flag("--no-report", o->noReport, "Do not write report.md and plots (e.g. for shards)");
     cmd->add_flag("--quiet", o->quiet, "No progress lines on stderr");
@@ -39,6 +42,9 @@ void addRunCommand(CLI::App& app)
         ov.luminaireDir = o->luminaires;
         ov.res = o->res;
         ov.reps = o->reps;
+        ov.timeRes = o->timeRes;
+        if (o->timeRes < 0 || o->timeRes > 16384)
+            throw InputError(fmt::format("--time-res must be in [1, 16384], got {}", o->timeRes));
         if (o->res < 0 || o->res > 16384) throw InputError(fmt::format("--res must be in [1, 16384], got {}", o->res));
         if (o->reps < 0) throw InputError("--reps must be >= 1");
         experiments::RunOptions ro;

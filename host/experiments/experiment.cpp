@@ -88,7 +88,7 @@ struct Reader {
 const std::set<std::string> kKeys = {"name",      "description", "luminaire_dir", "luminaires", "heights",
                                      "rotations", "methods",     "equal_time",    "mci_curve",  "mc",
                                      "equal_time_fit", "reference", "res",        "precision",  "size",
-                                     "extent",    "reps",        "equal_time_tolerance", "save_images"};
+                                     "extent",    "reps",        "equal_time_tolerance", "save_images", "time_res"};
 
 // Every .ldt / .ies file of a directory, sorted; of a .ldt and a .ies with the
 // same stem only the .ldt (the suite ships both forms of each luminaire).
@@ -144,7 +144,7 @@ Experiment loadExperiment(const std::string& path, const Overrides& ov)
         if (!kKeys.count(it.key()))
             r.fail(it.key(), "unknown key (known: name, description, luminaire_dir, luminaires, heights, rotations, "
                              "methods, equal_time, mci_curve, mc, equal_time_fit, reference, res, precision, size, "
-                             "extent, reps, equal_time_tolerance, save_images)");
+                             "extent, reps, equal_time_tolerance, save_images, time_res)");
 
     Experiment e;
     e.path = path;
@@ -238,6 +238,8 @@ Experiment loadExperiment(const std::string& path, const Overrides& ov)
     if (r.has("extent")) e.extent = r.number("extent", 1e-6, 1e6);
     if (r.has("reps")) e.reps = static_cast<int>(r.integer("reps", 1, 1000));
     if (ov.reps > 0) e.reps = ov.reps;
+    if (r.has("time_res")) e.timeRes = static_cast<int>(r.integer("time_res", 0, 16384));
+    if (ov.timeRes > 0) e.timeRes = ov.timeRes;
     if (r.has("equal_time_tolerance")) e.equalTimeTolerance = r.number("equal_time_tolerance", 0.001, 10);
     if (r.has("save_images")) {
         if (!j["save_images"].is_boolean()) r.fail("save_images", "expected true or false");

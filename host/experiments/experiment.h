@@ -11,7 +11,9 @@
 //    "equal_time_fit": [8, 32, 128],         // N to fit t(N) on when mci_curve is empty
 //    "reference": "reference",               // the reference SPEC
 //    "res": 64, "precision": ["float"], "size": [1, 1], "extent": 5,
-//    "reps": 5, "equal_time_tolerance": 0.15, "save_images": true}
+//    "reps": 5, "equal_time_tolerance": 0.10, "save_images": true,
+//    "time_res": 512}                        // every method is timed at time_res^2 pixels,
+//                                            // whatever res the error image has (DESIGN 6)
 //
 // A scene is (luminaire, height, rotation, precision); its cells are the
 // methods, the MCI curve points and the equal-time partners, in that order.
@@ -45,7 +47,8 @@ struct Experiment {
     std::vector<std::string> precisions{"float"};
     double width = 1, length = 1, extent = 5;
     int reps = 5;
-    double equalTimeTolerance = 0.15;
+    int timeRes = 512;  // methods are timed at time_res^2 pixels (DESIGN 6); 0 = at the image's res
+    double equalTimeTolerance = 0.10;
     bool saveImages = false;
     nlohmann::json raw;  // the file as read
 };
@@ -55,6 +58,7 @@ struct Overrides {
     std::string luminaireDir;  // --luminaires DIR: every .ldt/.ies file in DIR
     int res = 0;               // --res N
     int reps = 0;              // --reps K
+    int timeRes = 0;           // --time-res N
 };
 
 // Reads and checks an experiment file. Throws lb::InputError naming the file

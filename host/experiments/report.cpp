@@ -103,9 +103,14 @@ void writeReport(const std::string& dir, const std::string& plotNote)
     }
     std::stable_partition(cols.begin(), cols.end(), [](const std::string& s) { return s.rfind("MCI=", 0) != 0; });
     int res = doc.records.empty() ? 0 : doc.records.front().res;
-    o << fmt::format("\n{} records, {} scenes, {} x {} pixels; {} of {} equal-time MCI partners within the "
-                     "tolerance of the matched method's median time.\n",
-                     doc.records.size(), scenes.size(), res, res, eqOk, eqAll);
+    int timeRes = doc.records.empty() ? 0 : doc.records.front().time_ms.res;
+    double tol = doc.context.value("equal_time_tolerance", NAN);
+    o << fmt::format("\n{} records, {} scenes, {} x {} pixels{}; {} of {} equal-time MCI partners ({:.0f} %) within "
+                     "{} of the matched method's median time.\n",
+                     doc.records.size(), scenes.size(), res, res,
+                     timeRes > 0 ? fmt::format(", timed at {} x {}", timeRes, timeRes) : std::string(), eqOk, eqAll,
+                     eqAll ? 100.0 * eqOk / eqAll : 0.0,
+                     std::isfinite(tol) ? fmt::format("+-{:g} %", 100 * tol) : std::string("the tolerance"));
     o << "Times are OpenCL profiling-event medians (DESIGN section 6); errors against the reference (section 5).\n";
 
     // Main table: mean NMSE over the rotations per luminaire and height.

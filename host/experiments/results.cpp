@@ -103,7 +103,8 @@ void to_json(json& j, const Record& r)
     j["precision"] = r.precision;
     j["device"] = r.device;
     j["driver"] = r.driver;
-    j["time_ms"] = {{"median", num(r.time_ms.median)}, {"min", num(r.time_ms.min)}, {"reps", r.time_ms.reps}};
+    j["time_ms"] = {{"median", num(r.time_ms.median)}, {"min", num(r.time_ms.min)}, {"max", num(r.time_ms.max)},
+                    {"reps", r.time_ms.reps}, {"res", r.time_ms.res}};
     j.update(json(r.error));  // nmse, nrmse, relmse, ueb, leb, nonfinite, pixels, mean_ref, mean_test
     if (r.equal_time_to) j["equal_time_to"] = *r.equal_time_to;
     if (r.n) j["n"] = *r.n;
@@ -129,6 +130,9 @@ void from_json(const json& j, Record& r)
     r.time_ms.median = numField(t, "median");
     r.time_ms.min = numField(t, "min");
     r.time_ms.reps = field<int>(t, "reps");
+    // max and res came later: older files read as 0
+    r.time_ms.max = t.contains("max") ? numField(t, "max") : 0;
+    r.time_ms.res = t.contains("res") ? field<int>(t, "res") : 0;
     r.error.nmse = numField(j, "nmse");
     r.error.nrmse = numField(j, "nrmse");
     r.error.relmse = numField(j, "relmse");

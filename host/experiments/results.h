@@ -5,7 +5,7 @@
 //    "records": [{"method": "cubature", "params": {...}, "luminaire": "...",
 //                 "height": 0.1, "rotation": 1.5707963267948966, "res": 512,
 //                 "precision": "float", "device": ..., "driver": ...,
-//                 "time_ms": {"median": ..., "min": ..., "reps": 5},
+//                 "time_ms": {"median": ..., "min": ..., "max": ..., "reps": 5, "res": 512},
 //                 "nmse": ..., "nrmse": ..., "relmse": ..., "ueb": ..., "leb": ...,
 //                 "nonfinite": 0, "pixels": ..., "mean_ref": ..., "mean_test": ...,
 //                 "equal_time_to": "cubature:...", "n": 40}, ...]}
@@ -32,8 +32,9 @@ namespace lb::results {
 
 // Kernel time from OpenCL profiling events (DESIGN section 6), milliseconds.
 struct TimeMs {
-    double median = 0, min = 0;
+    double median = 0, min = 0, max = 0;
     int reps = 0;
+    int res = 0;  // pixels per side of the timed launches (0: not recorded, older files)
 };
 
 struct Record {

@@ -119,6 +119,7 @@ struct SceneRun {
     {
         methods::RenderOptions ro;
         ro.reps = e.reps;
+        ro.timeRes = e.timeRes;
         return methods::render(rt, table, scene, spec, prec, ro);
     }
 
@@ -128,7 +129,7 @@ struct SceneRun {
         results::Record r = base();
         r.method = spec.name;
         r.params = spec.paramsJson();
-        r.time_ms = {rr.timing.median_ms, rr.timing.min_ms, rr.timing.reps};
+        r.time_ms = {rr.timing.median_ms, rr.timing.min_ms, rr.timing.max_ms, rr.timing.reps, rr.timeRes};
         r.error = metrics::compare(ref, rr.image);
         r.extra["spec"] = cell.role == "equal_time" ? "mc:n=" + std::to_string(spec.integer("n")) : cell.spec;
         r.extra["role"] = cell.role;
@@ -173,6 +174,8 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
          {"luminaire_dir", e.luminaireDir},
          {"res", e.res},
          {"reps", e.reps},
+         {"time_res", e.timeRes},
+         {"equal_time_tolerance", e.equalTimeTolerance},
          {"shard", fmt::format("{}/{}", opt.shardK, opt.shardN)}});
 
     // Resume: the cells already written. Method and curve cells match by cell

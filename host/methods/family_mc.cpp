@@ -28,12 +28,14 @@ void registerMc(Registry& r)
     f.lumBuffer = [](const MethodSpec& s, const photometry::Table& t) {
         return s.str("lookup") == "lut" ? photometry::buildLut(t).packed : t.packed();
     };
-    f.setArgs = [](LaunchContext& c, int first) {
+    f.args = {"st", "n"};
+    f.setArgs = [](LaunchContext& c) {
         int n = static_cast<int>(c.spec.integer("n"));
         auto st = samplePoints(c.spec.str("pattern"), n, static_cast<std::uint64_t>(c.spec.integer("seed")));
-        c.kernel.setArg(first, c.realBuffer(st));
-        c.kernel.setArg(first + 1, n);
+        c.arg("st", c.realBuffer(st));
+        c.arg("n", cl_int(n));
     };
+    f.benchSpecs = {"mc:n=8", "mc:n=32", "mc:n=32,lookup=exact"};
     r.add(f);
 }
 

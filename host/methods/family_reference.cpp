@@ -21,18 +21,20 @@ void registerReference(Registry& r)
     f.defines = [](const MethodSpec&) { return std::string(); };
     f.expensive = true;
     f.bandRows = 16;
-    f.setArgs = [](LaunchContext& c, int first) {
+    f.args = {"errout", "splits_out", "rel_tol", "max_splits"};
+    f.setArgs = [](LaunchContext& c) {
         size_t n = static_cast<size_t>(c.res()) * c.res();
-        c.kernel.setArg(first, c.outputReals(n));      // err
-        c.kernel.setArg(first + 1, c.outputInts(n));   // splits
-        ocl::setReal(c.kernel, first + 2, c.spec.num("tol"), c.dbl());
-        c.kernel.setArg(first + 3, static_cast<cl_int>(c.spec.integer("max_splits")));
+        c.named["err"] = c.outputReals(n);
+        c.named["splits"] = c.outputInts(n);
+        c.arg("errout", c.named["err"]);
+        c.arg("splits_out", c.named["splits"]);
+        c.realArg("rel_tol", c.spec.num("tol"));
+        c.arg("max_splits", static_cast<cl_int>(c.spec.integer("max_splits")));
     };
     f.finish = [](LaunchContext& c) {
         size_t n = static_cast<size_t>(c.res()) * c.res();
-        // buffers[] in the order setArgs made them, after render()'s own.
-        cl::Buffer& errB = c.buffers[c.buffers.size() - 2];
-        cl::Buffer& splitB = c.buffers[c.buffers.size() - 1];
+        cl::Buffer& errB = c.named.at("err");
+        cl::Buffer& splitB = c.named.at("splits");
         Image err(c.res(), c.res());
         err.px = c.readReals(errB, n);
         std::vector<cl_int> splits(n);

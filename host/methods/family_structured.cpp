@@ -15,7 +15,7 @@ void registerStructured(Registry& r)
     // the straight-line form samples the whole rectangle: only where nothing is clipped
     addStraightLineOptions(f, "-DLB_STRUCT_RECT",
                            [](const Scene& scene, const MethodSpec&) { return lightAboveEveryHorizon(scene); });
-    f.setArgs = [](LaunchContext&, int) {};
+    f.setArgs = [](LaunchContext&) {};
     r.add(f);
 }
 

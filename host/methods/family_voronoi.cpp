@@ -23,16 +23,17 @@ void registerVoronoi(Registry& r)
     // lookup, specialize, lanes; the straight-line form holds in every
     // scene: the method never clips (common/voronoi_lanes.inc)
     addStraightLineOptions(f, "-DLB_VOR_RECT", [](const Scene&, const MethodSpec&) { return true; });
-    f.setArgs = [](LaunchContext& c, int first) {
+    f.args = {"tab", "tres", "plane_eps"};
+    f.setArgs = [](LaunchContext& c) {
         int res = static_cast<int>(c.spec.integer("table_res"));
         // The table is built for the scene's W x L light on every render (res^2
         // nodes of a closed-form Voronoi clip; ~1 ms at 33^2), untimed.
         std::vector<float> tab = voronoiTable(res, c.scene.width, c.scene.length);
         cl::Buffer b(c.rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, tab.size() * sizeof(float), tab.data());
         c.buffers.push_back(b);
-        c.kernel.setArg(first, b);
-        c.kernel.setArg(first + 1, cl_int(res));
-        ocl::setReal(c.kernel, first + 2, c.spec.num("plane_eps"), c.dbl());
+        c.arg("tab", b);
+        c.arg("tres", cl_int(res));
+        c.realArg("plane_eps", c.spec.num("plane_eps"));
     };
     r.add(f);
 }

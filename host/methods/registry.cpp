@@ -102,6 +102,15 @@ cl::Buffer LaunchContext::outputInts(size_t n)
     return b;
 }
 
+cl_uint LaunchContext::argIndex(const std::string& name) const
+{
+    for (size_t i = 0; i < family.args.size(); ++i)
+        if (family.args[i] == name) return kCommonArgs + static_cast<cl_uint>(i);
+    throw Error(fmt::format("method {}: kernel argument '{}' is not declared in Family::args", family.name, name));
+}
+
+void LaunchContext::realArg(const std::string& name, double value) { ocl::setReal(kernel, argIndex(name), value, dbl()); }
+
 std::vector<double> LaunchContext::readReals(cl::Buffer& b, size_t n)
 {
     std::vector<double> out(n);

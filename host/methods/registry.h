@@ -6,7 +6,11 @@
 // that fills out[row * res + col] for rows row0 .. row0 + get_global_size(1),
 // then host/methods/family_cubature.cpp defining
 //   void registerCubature(Registry& r) { r.add(Family{...}); }
-// and add its one line to builtinFamilies() in registry.cpp.
+// with Family::args naming <your arguments> in order (setArgs binds them by
+// name; a test holds the list to the kernel's CL_KERNEL_ARG_NAME), and add its
+// one line to builtinFamilies() in registry.cpp. render(), `run`, `tune`,
+// `stability` and `bench` all launch it through prepare() (methods/render.h),
+// so the new family is rendered, timed and benchmarked without more code.
 #pragma once
 
 #include "cl/runtime.h"
@@ -29,8 +33,14 @@ enum class Precision { Float, Double };
 std::string precisionName(Precision p);
 Precision parsePrecision(const std::string& s);  // "float" | "double", else InputError
 
+struct Family;
+
+// The arguments every family's kernel starts with: P, lum, out, row0.
+inline constexpr cl_uint kCommonArgs = 4;
+
 // What a family sees while it sets up and finishes one render.
 struct LaunchContext {
+    const Family& family;
     ocl::Runtime& rt;
     const MethodSpec& spec;
     const Scene& scene;
@@ -52,6 +62,15 @@ struct LaunchContext {
     cl::Buffer outputInts(size_t n);
     // Reads back n reals as doubles.
     std::vector<double> readReals(cl::Buffer& b, size_t n);
+    // Binds the family's argument `name` (one of Family::args); Error when the
+    // family declares no such argument.
+    template <class T>
+    void arg(const std::string& name, const T& value)
+    {
+        kernel.setArg(argIndex(name), value);
+    }
+    void realArg(const std::string& name, double value);  // float or double as the program was built
+    cl_uint argIndex(const std::string& name) const;
 };
 
 struct Family {
@@ -75,10 +94,20 @@ struct Family {
     // ceil(N / n) work-items per row.
     std::function<int(const MethodSpec&, const Scene&, const photometry::Table&, const ocl::DeviceInfo&, Precision)>
         lanes;
-    // Sets the kernel's arguments from index `first` on (after P, lum, out, row0).
-    std::function<void(LaunchContext&, int first)> setArgs;
-    // After the timed runs: read extra buffers, fill stats / extraImages.
+    // The kernel's arguments after P, lum, out, row0, by name, in order.
+    std::vector<std::string> args;
+    // Binds them (LaunchContext::arg by name).
+    std::function<void(LaunchContext&)> setArgs;
+    // Optional: the int argument (one of args) that switches per-pixel
+    // statistics on. Timed launches run with it 0, exactly the kernel a
+    // renderer runs; one more, untimed launch with 1 feeds `finish`.
+    std::string statsSwitch;
+    // After the timed runs (and the statistics launch): read extra buffers,
+    // fill stats / extraImages.
     std::function<void(LaunchContext&)> finish;
+    // Specs `lumibench bench` times besides the family's default (and its
+    // specialize=none form): the structural variants worth a verdict.
+    std::vector<std::string> benchSpecs;
     // Expensive (the reference): one untimed-warm-up-free run in bands of
     // bandRows rows with progress on stderr, cached on disk.
     bool expensive = false;

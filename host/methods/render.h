@@ -8,12 +8,58 @@
 #include <nlohmann/json.hpp>
 
 #include <map>
+#include <memory>
 #include <string>
 
 namespace lb::methods {
 
+// One method built and bound for one scene: the program with its structural,
+// scene and lane defines, the buffers and every argument set by name. The one
+// path from a SPEC to launches: render(), the experiment runner, tune,
+// stability and bench all go through it, so what is timed is what renders.
+class Prepared {
+public:
+    Prepared(ocl::Runtime& rt, const photometry::Table& table, const Scene& scene, const MethodSpec& spec,
+             Precision precision);
+    Prepared(const Prepared&) = delete;
+    Prepared& operator=(const Prepared&) = delete;
+
+    const Family& family() const { return fam_; }
+    const std::string& options() const { return options_; }  // the program's -D options
+    int lanes() const { return ctx_->lanes; }
+    double buildSeconds() const { return buildSeconds_; }
+    const Scene& scene() const { return scene_; }
+
+    // Rows row0 .. row0 + rows of the image (statistics as last switched),
+    // work-groups of lx x ly (setLocal; default 8 x 8).
+    cl::Event launch(int row0, int rows);
+    void setLocal(size_t lx, size_t ly) { lx_ = lx, ly_ = ly; }
+    // One warm-up, then `reps` launches of the whole image with statistics
+    // off: exactly the kernel a renderer runs (profiling-event times).
+    ocl::Timing time(int reps);
+    // One untimed launch with the family's statistics switched on (when it
+    // has any), then Family::finish: the stats and extra images.
+    void collect();
+    Image image();  // the output buffer as it stands
+
+    nlohmann::json stats() { return std::move(ctx_->stats); }
+    std::map<std::string, Image> extraImages() { return std::move(ctx_->extraImages); }
+
+private:
+    void statsSwitch(bool on);
+    const Family& fam_;
+    MethodSpec spec_;
+    Scene scene_;
+    std::string options_;
+    double buildSeconds_ = 0;
+    size_t lx_ = 8, ly_ = 8;
+    cl::Buffer out_;
+    std::unique_ptr<LaunchContext> ctx_;
+};
+
 struct RenderOptions {
     int reps = 5;           // timed runs after one warm-up (expensive methods: one run)
+    int timeRes = 0;        // time at res x res pixels (DESIGN 6); 0 = the image's own res
     bool useCache = true;   // expensive methods: reuse / store results on disk
     bool progress = false;  // expensive methods: progress on stderr
     std::string cacheDir;   // "" = $LUMIBENCH_CACHE, else ~/.cache/lumibench
@@ -23,6 +69,7 @@ struct RenderResult {
     Image image;                               // E in lux, row 0 at the top
     std::map<std::string, Image> extraImages;  // reference: "err", the per-pixel error estimate
     ocl::Timing timing;                        // device time of the kernel (profiling events)
+    int timeRes = 0;                           // the pixels per side the timing was taken at
     double buildSeconds = 0;                   // program build, excluded from timing
     long nonfinite = 0;                        // pixels that are NaN or infinite
     nlohmann::json stats = nlohmann::json::object();  // per-method counters

@@ -1,4 +1,5 @@
 // The OpenCL layer: device listing, build errors, program cache, timing.
+#include "methods/registry.h"
 #include "testutil.h"
 #include "util/error.h"
 
@@ -76,15 +77,37 @@ TEST(Runtime, ProfilingEventsGivePositiveTimes)
     EXPECT_LE(t.min_ms, t.median_ms);
 }
 
+// The argument names of kernel `name` of a built program (CL_KERNEL_ARG_NAME),
+// or nothing where the program has no such kernel.
+std::vector<std::string> kernelArgNames(cl::Program& prog, const std::string& name)
+{
+    std::vector<cl::Kernel> ks;
+    prog.createKernels(&ks);
+    for (auto& k : ks) {
+        if (k.getInfo<CL_KERNEL_FUNCTION_NAME>() != name) continue;
+        std::vector<std::string> names;
+        for (cl_uint i = 0; i < k.getInfo<CL_KERNEL_NUM_ARGS>(); ++i) {
+            std::string n = k.getArgInfo<CL_KERNEL_ARG_NAME>(i);
+            names.push_back(n.c_str());  // drop a trailing NUL some drivers count
+        }
+        return names;
+    }
+    return {};
+}
+
 // Every kernel file declares its structural variants in a comment line
 //   @variants: "" | "-DFOO" | "-DFOO -DBAR"
 // and must build with each of them (and with -DLB_DOUBLE added where the
-// device has fp64, unless the variant already names it).
+// device has fp64, unless the variant already names it). In every variant,
+// the kernel of each method family using the file takes exactly the
+// arguments the family declares (P, lum, out, row0, then Family::args, by
+// name): the host binds by those names, so a reordered or renamed kernel
+// argument fails here instead of binding a value to the wrong slot.
 TEST(Runtime, EveryKernelFileBuildsWithEveryVariant)
 {
     LB_REQUIRE_RUNTIME(rt);
     namespace fs = std::filesystem;
-    int built = 0;
+    int built = 0, checked = 0;
     for (auto& e : fs::directory_iterator(ocl::kernelDir())) {
         if (e.path().extension() != ".cl") continue;
         std::ifstream f(e.path());
@@ -101,12 +124,25 @@ TEST(Runtime, EveryKernelFileBuildsWithEveryVariant)
             std::vector<std::string> all = {opts};
             if (rt->fp64() && opts.find("LB_DOUBLE") == std::string::npos) all.push_back(opts + " -DLB_DOUBLE");
             for (auto& o : all) {
-                EXPECT_NO_THROW(rt->program(e.path().filename().string(), o)) << e.path() << " " << o;
+                // -cl-kernel-arg-info: OpenCL reports argument names only then
+                const std::string file = e.path().filename().string();
+                cl::Program* prog = nullptr;
+                EXPECT_NO_THROW(prog = &rt->program(file, o + " -cl-kernel-arg-info")) << e.path() << " " << o;
                 ++built;
+                if (!prog) continue;
+                for (const auto& fam : methods::registry().all()) {
+                    if (fam.file != file) continue;
+                    std::vector<std::string> want = {"P", "lum", "out", "row0"};
+                    want.insert(want.end(), fam.args.begin(), fam.args.end());
+                    EXPECT_EQ(kernelArgNames(*prog, fam.kernelName), want)
+                        << "method " << fam.name << ": " << file << " " << o;
+                    ++checked;
+                }
             }
         }
     }
     EXPECT_GE(built, 2);
+    EXPECT_GE(checked, static_cast<int>(methods::registry().all().size()));  // every family, at least once
 }
 
 } // namespace

@@ -33,7 +33,7 @@ Record cell(const std::string& method, double height, double nmse)
     r.precision = "float";
     r.device = "cpu-pocl";
     r.driver = "5.0";
-    r.time_ms = {1.25, 1.125, 5};
+    r.time_ms = {1.25, 1.125, 1.5, 5, 512};  // median, min, max, reps, timing res
     r.error.nmse = nmse;
     r.error.nrmse = 0.5;
     r.error.relmse = 0.03125;
@@ -104,6 +104,8 @@ TEST_F(Results, RecordRoundTripKeepsEveryField)
     EXPECT_EQ(b.time_ms.median, 1.25);
     EXPECT_EQ(b.time_ms.min, 1.125);
     EXPECT_EQ(b.time_ms.reps, 5);
+    EXPECT_EQ(b.time_ms.max, 1.5);
+    EXPECT_EQ(b.time_ms.res, 512);
     EXPECT_EQ(b.error.nmse, 565.1048);
     EXPECT_TRUE(std::isnan(b.error.relmse));
     EXPECT_EQ(b.error.ueb, 160.25);

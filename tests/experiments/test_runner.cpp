@@ -54,6 +54,7 @@ json tinyExperiment()
             {"mci_curve", {1, 8, 32, 128}},
             {"reference", "reference:tol=1e-4"},
             {"res", 16},
+            {"time_res", 24},  // timed apart from the 16 x 16 error images (DESIGN 6), small for CI
             {"reps", 5},
             {"save_images", false}};
 }

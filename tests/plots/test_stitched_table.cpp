@@ -64,7 +64,9 @@ TEST(Plots, StitchedTable)
     EXPECT_NE(out.find("| L | 1.1 | 0.625 | 2 (3) |"), std::string::npos) << out;
     // cubature beats MCI (NMSE 1 < 2, 0.5 < 2) in both scenes; one pair missed
     EXPECT_NE(out.find("beats its equal-time MCI in 2 of 2 scenes"), std::string::npos) << out;
-    EXPECT_NE(out.find("pairs outside the tolerance: 1"), std::string::npos) << out;
+    EXPECT_NE(out.find("pairs outside the tolerance: 1 (50 % within)"), std::string::npos) << out;
+    // stitched: cubature 0.625 against MCI 2 in the one (luminaire, height) row
+    EXPECT_NE(out.find("in 2 of 2 scenes and 1 of 1 stitched rows"), std::string::npos) << out;
     std::ofstream(dir / "bad.json") << "{\"x\": 1}";
     capture("python3 " + script + " " + (dir / "bad.json").string() + " 2>&1", &code);
     EXPECT_NE(code, 0);
