@@ -8,17 +8,19 @@
  *   LB_CUB_NORMALIZE  0 none | 1 formfactor (thesis Eq. 5.11)
  *   LB_CUB_DYNAMIC    bit set of dynamic points: 1 cp, 2 np, 4 mrp, 8 barycentre (0: corners only)
  *   LB_CUB_RECT_FAN   nothing clipped, nothing blended, fan around CP or corner 0:
- *                     the straight-line lb_cub_rect_fan (issue 9;
- *                     host/methods/specialize.h decides it per scene)
- *   LB_LANES=8        with LB_CUB_RECT_FAN and LB_LUT, float: eight pixels per
- *                     work-item in float8 (host/methods: lanes; CPUs by default)
+ *                     the straight-line lb_cub_rect_fan (host/methods/specialize.h
+ *                     decides it per scene)
+ *   LB_CUB_RECT_DEL   nothing clipped, nothing blended, Delaunay over corners + CP +
+ *                     barycentre: the straight-line lb_cub_rect_del
+ *   LB_LANES=8        with LB_CUB_RECT_FAN or _DEL and LB_LUT, float: eight pixels
+ *                     per work-item in float8 (host/methods: lanes; CPUs by default)
  *   LB_LUT            trig-free intensity table (common/lut.h), `lum` is the LUT
  * Continuous tunables (kernel arguments): plane_eps, horizon_eps (metres),
  * corner_inset, dyn_weight (common/cubature.h lb_cubature_irradiance_ex; 0, 1 = plain),
  * blend_dist (m): beyond it the result blends into a 3 x 3 grid MC (lb_blend_weight;
  * fully MC, without the cubature, from 1.5 blend_dist on).
  *
- * @variants: "" | "-DLB_CUB_TRI=1" | "-DLB_CUB_TRI=1 -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=15" | "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_DYNAMIC=0" | "-DLB_LUT" | "-DLB_LUT -DLB_CUB_RECT_FAN" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0 -DLB_CUB_NORMALIZE=1"
+ * @variants: "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_NORMALIZE=1" | "" | "-DLB_CUB_TRI=1" | "-DLB_CUB_TRI=1 -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=15" | "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_DYNAMIC=0" | "-DLB_LUT" | "-DLB_LUT -DLB_CUB_RECT_FAN" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0 -DLB_CUB_NORMALIZE=1"
  */
 #include "common/lbmath.h"
 
@@ -40,7 +42,21 @@
  * irradiance in lux, row-major, row 0 at the top; rows row0 .. row0 + global
  * height. stats: 2 ints per pixel of the whole image (triangles, flips),
  * written when want_stats != 0 (pass any small buffer otherwise). */
-#if defined(LB_CUB_RECT_FAN) && defined(LB_LANES) && LB_LANES == 8 && !defined(LB_DOUBLE)
+/* The straight-line forms: fan around CP, or Delaunay over corners + CP +
+ * barycentre; (e, triangles, flips) of one pixel or eight. */
+#if defined(LB_CUB_RECT_DEL)
+#define LB_CUB_RECT_CALL(s, nt, nf)                                                                           \
+    lb_cub_rect_del##s(lum, ou, ov, on, P[12], P[13], au, av, an, LB_CUB_WEIGHT, LB_CUB_NORMALIZE, plane_eps,  \
+                       corner_inset, dyn_weight, &nt, &nf)
+#elif defined(LB_CUB_RECT_FAN)
+#define LB_CUB_RECT_CALL(s, nt, nf)                                                                           \
+    lb_cub_rect_fan##s(lum, ou, ov, on, P[12], P[13], au, av, an, LB_CUB_WEIGHT,                                \
+                       (LB_CUB_DYNAMIC & LB_CUB_CP) != 0, LB_CUB_NORMALIZE, plane_eps, corner_inset, dyn_weight, \
+                       &nt);                                                                                   \
+    nf = 0
+#endif
+
+#if defined(LB_CUB_RECT_CALL) && defined(LB_LANES) && LB_LANES == 8 && !defined(LB_DOUBLE)
 /* Eight pixels of a row per work-item in float8 (common/lanes8.h): the host
  * launches ceil(N / 8) work-items per row. Float only: a double build ignores
  * LB_LANES (the host asks for 8 lanes only in float). */
@@ -59,31 +75,26 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     real au, av, an;
     if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
         return;
-    int8 nt;
-    float8 e = lb_cub_rect_fan_x8(lum, ou, ov, on, P[12], P[13], au, av, an, LB_CUB_WEIGHT,
-                                  (LB_CUB_DYNAMIC & LB_CUB_CP) != 0, LB_CUB_NORMALIZE, plane_eps, corner_inset,
-                             dyn_weight, &nt);
+    int8 nt, nf;
+    float8 e = LB_CUB_RECT_CALL(_x8, nt, nf);
     int i = row * res + col0;
     lb_store_x8(out, i, res - col0, e);
     if (!want_stats)
         return;
-    if (col0 + 8 <= res) { /* (triangles, flips = 0) pairs; 8-wide (16-wide vectors change the ABI on AVX2) */
-        vstore8((int8)(nt.s0, 0, nt.s1, 0, nt.s2, 0, nt.s3, 0), 0, stats + 2 * i);
-        vstore8((int8)(nt.s4, 0, nt.s5, 0, nt.s6, 0, nt.s7, 0), 0, stats + 2 * i + 8);
-        return;
-    }
-    int nv[8];
+    int nv[8], fv[8];
     vstore8(nt, 0, nv);
-    for (int j = 0; j < 8 && col0 + j < res; ++j) {
+    vstore8(nf, 0, fv);
+    for (int j = 0; j < 8 && col0 + j < res; ++j) { /* (triangles, flips) pairs */
         stats[2 * (i + j)] = nv[j];
-        stats[2 * (i + j) + 1] = 0;
+        stats[2 * (i + j) + 1] = fv[j];
     }
 }
-#elif defined(LB_CUB_RECT_FAN)
+#elif defined(LB_CUB_RECT_CALL)
 /* The scene needs no clip and no blend, and the method is a fan around CP
- * (or corner 0): common/cubature_lanes.inc lb_cub_rect_fan, one pixel per
- * work-item (GPUs, double, the exact lookup). horizon_eps and blend_dist are
- * unused: the host chose this variant because neither changes any pixel. */
+ * (or corner 0) or Delaunay over corners + CP + barycentre:
+ * common/cubature_lanes.inc, one pixel per work-item (GPUs, double, the exact
+ * lookup). horizon_eps and blend_dist are unused: the host chose this
+ * variant because neither changes any pixel. */
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
                      __global int* stats, int want_stats, real plane_eps, real horizon_eps,
                      real corner_inset, real dyn_weight, real blend_dist)
@@ -92,15 +103,13 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     real ou, ov, on, au, av, an;
     if (!lb_work_item_pixels(P, row0, &col, &row, &res, &ou, &ov, &on, &au, &av, &an))
         return;
-    int nt;
-    real e = lb_cub_rect_fan(lum, ou, ov, on, P[12], P[13], au, av, an, LB_CUB_WEIGHT,
-                             (LB_CUB_DYNAMIC & LB_CUB_CP) != 0, LB_CUB_NORMALIZE, plane_eps, corner_inset,
-                             dyn_weight, &nt);
+    int nt, nf;
+    real e = LB_CUB_RECT_CALL(, nt, nf);
     int i = row * res + col;
     out[i] = e;
     if (want_stats) {
         stats[2 * i] = nt;
-        stats[2 * i + 1] = 0;
+        stats[2 * i + 1] = nf;
     }
 }
 #else

@@ -51,7 +51,8 @@ struct Bench {
                               const_cast<float*>(v.data()));
         };
         auto st = methods::samplePoints("poisson", n, 0);
-        cl::Buffer P = floats(std::vector<float>(scene.params().begin(), scene.params().end()));
+        const std::vector<double> params = scene.params();
+        cl::Buffer P = floats(std::vector<float>(params.begin(), params.end()));
         cl::Buffer L = floats(table.packed()), S = floats(std::vector<float>(st.begin(), st.end()));
         cl::Buffer out(rt.context(), CL_MEM_WRITE_ONLY, sizeof(float) * scene.res * scene.res);
         k.setArg(0, P);
@@ -222,9 +223,9 @@ std::string format(const nlohmann::json& d)
     o << fmt::format("MC n={}: naive {:.3g} samples/s, fast {:.3g} samples/s, ratio {:.1f} (target >= 10: {})\n",
                      mc["n"].get<int>(), mc["naive_sps"].get<double>(), mc["fast_sps"].get<double>(),
                      mc["ratio"].get<double>(), mc["ok"].get<bool>() ? "met" : "MISSED");
-    o << fmt::format("{:<36} {:>10} {:>12}\n", "method", "ms", "ns/pixel");
+    o << fmt::format("{:<62} {:>10} {:>12}\n", "method", "ms", "ns/pixel");
     for (const auto& m : d["methods"])
-        o << fmt::format("{:<36} {:>10.3f} {:>12.2f}\n", m["method"].get<std::string>(), m["time_ms"].get<double>(),
+        o << fmt::format("{:<62} {:>10.3f} {:>12.2f}\n", m["method"].get<std::string>(), m["time_ms"].get<double>(),
                          m["ns_per_pixel"].get<double>());
     const auto& f = d["mc_fit"];
     o << fmt::format("MC t(N) = {:.3f} ms + {:.4f} ms/sample\n", f["t0_ms"].get<double>(),

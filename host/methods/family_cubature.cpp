@@ -60,10 +60,10 @@ void registerCubature(Registry& r)
         Param::choice("lookup", "lut", {"lut", "exact"},
                       "intensity lookup: trig-free table (photometry/lut.h, as mc) or the exact bilinear one"),
         Param::choice("specialize", "auto", {"auto", "none"},
-                      "auto: smallest kernel for the scene (methods/specialize.h: the straight-line fan of an "
-                      "unclipped rectangle, 1D table); none: the general one"),
+                      "auto: smallest kernel for the scene (methods/specialize.h: the straight-line fan, or "
+                      "Delaunay over cp+barycentre, of an unclipped rectangle; 1D table); none: the general one"),
         Param::choice("lanes", "auto", {"auto", "1", "8"},
-                      "pixels per work-item of the straight-line rectangle fan (float, lut): 8 = float8 code, "
+                      "pixels per work-item of the straight-line forms (float, lut): 8 = float8 code, "
                       "auto = 8 on CPU devices (PoCL), 1 elsewhere"),
     };
     f.validate = [](const MethodSpec& s) {

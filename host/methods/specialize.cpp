@@ -15,12 +15,14 @@ std::string Specialization::defines() const
     if (noHorizon) d += " -DLB_NO_HORIZON";
     if (noBack) d += " -DLB_NO_BACK";
     if (rectFan) d += " -DLB_CUB_RECT_FAN";
+    if (rectDel) d += " -DLB_CUB_RECT_DEL";
     return d;
 }
 
 nlohmann::json Specialization::json() const
 {
-    return {{"lut", lut}, {"lut1d", lut && lut1d}, {"no_horizon", noHorizon}, {"no_back", noBack}, {"rect_fan", rectFan}};
+    return {{"lut", lut}, {"lut1d", lut && lut1d}, {"no_horizon", noHorizon}, {"no_back", noBack}, {"rect_fan", rectFan},
+            {"rect_del", rectDel}};
 }
 
 bool lightAboveEveryHorizon(const Scene& scene, double margin)
@@ -61,7 +63,10 @@ Specialization analyseCubature(const Scene& scene, const photometry::Table& tabl
     // kernel's float rounding of the distance.
     bool noBlend = farthestPixel(scene) * (1 + 1e-6) < o.blendDist;
     bool fanCp = o.triangulation == 0 && (o.dynamic == 1 || o.dynamic == 0);
-    s.rectFan = fanCp && noBlend && lightAboveEveryHorizon(scene, o.horizonEps + o.planeEps);
+    bool delCpBary = o.triangulation == 1 && o.dynamic == (1 | 8);  // LB_CUB_CP | LB_CUB_BARY
+    bool unclipped = noBlend && lightAboveEveryHorizon(scene, o.horizonEps + o.planeEps);
+    s.rectFan = fanCp && unclipped;
+    s.rectDel = delCpBary && unclipped;
     return s;
 }
 
@@ -82,7 +87,7 @@ namespace lb::methods {
 
 int cubatureLanes(const Specialization& s, const CubatureOptions& o, const std::string& deviceType, bool dbl)
 {
-    if (!s.rectFan || !s.lut || dbl) return 1;
+    if (!(s.rectFan || s.rectDel) || !s.lut || dbl) return 1;
     if (o.lanes > 0) return o.lanes;
     return deviceType == "CPU" ? 8 : 1;
 }

@@ -27,6 +27,10 @@
 //              LB_CUB_RECT_FAN, the straight-line
 //              lb_cub_rect_fan of common/cubature.h (no clip, no
 //              triangulation structure, no loops; PoCL vectorises it).
+//   rectDel    (cubature) as rectFan, for triangulation=delaunay with
+//              dynamic=cp+barycentre: LB_CUB_RECT_DEL, lb_cub_rect_del of
+//              common/cubature_lanes.inc (the two edges that can flip decided
+//              by the same in-circle test, no loops).
 #pragma once
 
 #include "methods/cubature_options.h"
@@ -46,6 +50,7 @@ struct Specialization {
     bool noHorizon = false;  // LB_NO_HORIZON
     bool noBack = false;     // LB_NO_BACK
     bool rectFan = false;    // LB_CUB_RECT_FAN (cubature only)
+    bool rectDel = false;    // LB_CUB_RECT_DEL (cubature only)
 
     std::string defines() const;  // " -DLB_LUT ..." (leading space when not empty)
     nlohmann::json json() const;
@@ -60,7 +65,8 @@ Specialization analyse(const Scene& scene, const photometry::Table& table, bool 
 Specialization analyseCubature(const Scene& scene, const photometry::Table& table, const CubatureOptions& o);
 
 // Pixels per work-item for the cubature: o.lanes (0 = 8 on a CPU device, 1
-// elsewhere) where the rectangle fan runs in float with the LUT, else 1.
+// elsewhere) where a straight-line form (rectFan, rectDel) runs in float with
+// the LUT, else 1.
 int cubatureLanes(const Specialization& s, const CubatureOptions& o, const std::string& deviceType, bool dbl);
 
 // Whether every light corner is more than `margin` (m) above the receiver of

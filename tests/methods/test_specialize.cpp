@@ -175,6 +175,19 @@ TEST(Specialize, CubatureRectFanRule)
     EXPECT_EQ(cubatureLanes(a, opts("lanes=8"), "GPU", false), 8);
     EXPECT_EQ(cubatureLanes(analyseCubature(s, t, opts("lookup=exact")), opts("lookup=exact"), "CPU", false), 1);
     EXPECT_EQ(cubatureLanes(analyseCubature(s, t, opts("triangulation=delaunay")), opts(""), "CPU", false), 1);
+    // Delaunay over corners + CP + barycentre: the same scene conditions
+    auto del = [&](const Scene& sc, const std::string& kv) { return analyseCubature(sc, t, opts(kv)).rectDel; };
+    const std::string cb = "triangulation=delaunay,dynamic=cp+barycentre";
+    EXPECT_TRUE(del(s, cb));
+    EXPECT_EQ(analyseCubature(s, t, opts(cb)).defines(), " -DLB_LUT -DLB_CUB_RECT_DEL");
+    EXPECT_FALSE(fan(s, cb));
+    EXPECT_FALSE(del(s, ""));
+    EXPECT_FALSE(del(s, "triangulation=delaunay"));
+    EXPECT_FALSE(del(s, "triangulation=delaunay,dynamic=cp+np+mrp+barycentre"));
+    EXPECT_FALSE(del(s, cb + ",specialize=none"));
+    EXPECT_FALSE(del(s, cb + ",blend_dist=3"));
+    EXPECT_FALSE(del(v, cb + ",horizon_eps=0.1"));
+    EXPECT_EQ(cubatureLanes(analyseCubature(s, t, opts(cb)), opts(cb), "CPU", false), 8);
 }
 
 // Worst per-pixel relative difference of `test` from `ref` (denominator at
@@ -205,13 +218,18 @@ double cubatureDiff(ocl::Runtime& rt, const photometry::Table& t, const Scene& s
     RenderOptions opt;
     opt.reps = 1;
     auto o = CubatureOptions::parse(parseSpec(spec).values);
-    EXPECT_TRUE(analyseCubature(s, t, o).rectFan) << spec << " " << s.describe();
+    auto a = analyseCubature(s, t, o);
+    EXPECT_TRUE(a.rectFan || a.rectDel) << spec << " " << s.describe();
     std::string sep = spec.find(':') == std::string::npos ? ":" : ",";
     auto gen = render(rt, t, s, parseSpec(spec + sep + "specialize=none"), ref, opt);
     auto sp = render(rt, t, s, parseSpec(spec + sep + "lanes=" + lanes), p, opt);
     double worst = worstRelDiff(gen.image.px, sp.image.px, rel, spec + " lanes=" + lanes + " " + s.describe());
-    // The statistics (triangles per pixel) follow the general code's cases.
+    // The statistics (triangles and flips per pixel) follow the general code's
+    // cases, in the same precision (float and double may decide a flip at a
+    // near-cocircular quadrilateral differently).
+    if (p != ref) gen = render(rt, t, s, parseSpec(spec + sep + "specialize=none"), p, opt);
     EXPECT_EQ(gen.stats["triangles_per_pixel"], sp.stats["triangles_per_pixel"]) << spec << " " << s.describe();
+    EXPECT_EQ(gen.stats["flips_per_pixel"], sp.stats["flips_per_pixel"]) << spec << " " << s.describe();
     return worst;
 }
 
@@ -371,6 +389,59 @@ TEST(Specialize, StraightLineFormsEqualGeneral)
             for (const auto& s : unclipped)
                 worstD = std::max(worstD, diff(asym, s, spec, Precision::Double, Precision::Double, 1e-12));
     std::cout << "straight-line forms against the general kernels: float " << worst << ", double " << worstD << "\n";
+}
+
+// The straight-line Delaunay over corners + CP + barycentre against the
+// general kernel (Lawson flips over the triangulation structure), with the
+// bounds of the rectangle fan above: double 1e-12; float 1e-6 of the double
+// general kernel or twice the general float kernel's own error, formfactor
+// 1e-4. The scenes put pixels exactly on the light's diagonals and centre
+// (R = pi, odd resolution: B on a fan edge, B on CP), on its edges and
+// corners (CP on the hull), and a 2 x 0.5 m light (unequal quadrants); the
+// flip statistics must match as well, so every flip decision is the general
+// code's.
+TEST(Specialize, CubatureRectDelaunayEqualsGeneral)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    auto asym = asymmetric();
+    Scene wide = scene(0.3, 3 * M_PI / 4, 45);
+    wide.width = 2;
+    wide.length = 0.5;
+    Scene flat = scene(0.2, M_PI, 45);
+    flat.extent = 1.5;  // pixels every 1/30 m: many under the light, on its diagonals
+    std::vector<Scene> scenes = {scene(1.0, 3 * M_PI / 4, 45), scene(0.1, M_PI / 2, 45), scene(0.05, M_PI, 45),
+                                 scene(2.5, 5 * M_PI / 8, 45), wide, flat};
+    const std::string d = "cubature:triangulation=delaunay,dynamic=cp+barycentre";
+    const std::vector<std::string> specs = {d, d + ",weighting=sample", d + ",weighting=dotout",
+                                            d + ",corner_inset=0.3,dyn_weight=2", d + ",plane_eps=0.05",
+                                            d + ",normalize=formfactor"};
+    Precision ref = rt->fp64() ? Precision::Double : Precision::Float;
+    double rel = rt->fp64() ? 1e-6 : 2e-5;
+    RenderOptions opt;
+    opt.reps = 1;
+    double worst = 0, worstD = 0, worstGeneral = 0;
+    for (const auto& s : scenes)
+        for (const auto& spec : specs) {
+            bool ff = spec.find("formfactor") != std::string::npos;
+            double g = 0;
+            if (rt->fp64()) {
+                auto general = parseSpec(spec + ",specialize=none");
+                auto gf = render(*rt, asym, s, general, Precision::Float, opt);
+                auto gd = render(*rt, asym, s, general, Precision::Double, opt);
+                g = worstRelDiff(gd.image.px, gf.image.px, HUGE_VAL, spec + " general float " + s.describe());
+            }
+            worstGeneral = std::max(worstGeneral, g);
+            for (const char* lanes : {"1", "8"})
+                worst = std::max(worst, cubatureDiff(*rt, asym, s, spec, Precision::Float, lanes, ref,
+                                                     std::max(ff ? 1e-4 : rel, 2 * g)));
+            if (rt->fp64())
+                worstD = std::max(worstD, cubatureDiff(*rt, asym, s, spec, Precision::Double, "1", Precision::Double,
+                                                       1e-12));
+            if (HasFailure()) return;
+        }
+    std::cout << "Delaunay cp + barycentre, straight-line against the general kernel: float " << worst
+              << " (general float kernel against its double result: " << worstGeneral << "), double " << worstD
+              << "\n";
 }
 
 } // namespace
