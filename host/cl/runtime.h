@@ -76,6 +76,12 @@ public:
 
     // One warm-up, then `reps` timed launches (median, min, max kept).
     Timing time(const std::function<cl::Event()>& launch, int reps = 5, int warmup = 1);
+    // Several kernels timed in alternation: `warmup` launches of each, then
+    // `reps` rounds launching each in turn. Timing::samples_ms keeps the
+    // rounds in order, so ratios can be taken round by round and a shared
+    // machine's drift hits every kernel alike.
+    std::vector<Timing> timeInterleaved(const std::vector<std::function<cl::Event()>>& launches, int reps = 5,
+                                        int warmup = 1);
 
 private:
     DeviceInfo info_;

@@ -17,6 +17,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <set>
 
 namespace lb::experiments {
@@ -40,6 +41,22 @@ long solveN(std::vector<std::pair<long, double>> pts, double targetMs)
     auto [n1, t1] = pts[i];
     if (!(t1 > t0)) return clampN(targetMs <= t1 ? double(n1) : double(n1) * targetMs / t1);  // flat by noise
     return clampN(double(n0) + (targetMs - t0) * double(n1 - n0) / (t1 - t0));
+}
+
+// t at n on the piecewise-linear curve through pts (sorted by N inside),
+// extrapolated proportionally beyond its ends.
+double interpolateMs(std::vector<std::pair<long, double>> pts, long n)
+{
+    std::sort(pts.begin(), pts.end());
+    if (pts.empty()) return NAN;
+    if (n <= pts.front().first) return pts.front().second * double(n) / double(pts.front().first);
+    for (size_t i = 1; i < pts.size(); ++i)
+        if (n <= pts[i].first) {
+            auto [n0, t0] = pts[i - 1];
+            auto [n1, t1] = pts[i];
+            return t0 + (t1 - t0) * double(n - n0) / double(n1 - n0);
+        }
+    return pts.back().second * double(n) / double(pts.back().first);
 }
 
 namespace {
@@ -290,32 +307,71 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
                     return methods::parseSpec(e.mc + (e.mc.find(':') == std::string::npos ? ":" : ",") + "n=" +
                                               std::to_string(n));
                 };
-                long n1 = solveN(pts, tM);
-                auto s1 = mcAt(n1);
-                auto r1 = sr.render(s1);
-                double off1 = std::abs(r1.timing.median_ms / tM - 1);
-                pts.emplace_back(n1, r1.timing.median_ms);
-                if (off1 > e.equalTimeTolerance) {  // refine once with the new point
-                    long n2 = solveN(pts, tM);
-                    if (n2 != n1) {
-                        auto s2 = mcAt(n2);
-                        auto r2 = sr.render(s2);
-                        pts.emplace_back(n2, r2.timing.median_ms);
-                        if (std::abs(r2.timing.median_ms / tM - 1) < off1) {
-                            n1 = n2;
-                            s1 = s2;
-                            r1 = std::move(r2);
+                // N on the measured t(N), then it and its neighbour on the
+                // method's side timed against the method in alternating
+                // rounds (DESIGN 6: ratios within one run), the ratio the
+                // median of the rounds' ratios. While the closest is off by
+                // more than the tolerance (three tries at most), aim again at
+                // the curve's time there over the measured ratio.
+                Scene ts = sr.scene;
+                if (e.timeRes > 0) ts.res = e.timeRes;
+                methods::Prepared pm(rt, table, ts, c.parsed, sr.prec);
+                std::map<long, std::unique_ptr<methods::Prepared>> prepared;  // MC by N, built once
+                json candJson = json::array();
+                long bestN = 0;
+                double ratio = NAN;
+                std::vector<ocl::Timing> bestT;  // (method, MC at bestN) of bestN's rounds
+                double aimMs = tM;               // curve time to aim at
+                for (int attempt = 0; attempt < 3; ++attempt) {
+                    long n1 = solveN(pts, aimMs);
+                    long n2 = interpolateMs(pts, n1) > aimMs ? n1 - 1 : n1 + 1;
+                    std::vector<long> cand;
+                    for (long n : {n1, n2})
+                        if (n >= 1 && std::none_of(candJson.begin(), candJson.end(),
+                                                   [n](const json& j) { return j["n"] == n; }))
+                            cand.push_back(n);
+                    if (cand.empty()) break;
+                    std::vector<std::function<cl::Event()>> launches = {[&] { return pm.launch(0, ts.res); }};
+                    for (long n : cand) {
+                        auto& p = prepared[n];
+                        if (!p) p = std::make_unique<methods::Prepared>(rt, table, ts, mcAt(n), sr.prec);
+                        methods::Prepared* pp = p.get();
+                        launches.push_back([pp, &ts] { return pp->launch(0, ts.res); });
+                    }
+                    std::vector<ocl::Timing> tt = rt.timeInterleaved(launches, std::max(1, e.reps), 1);
+                    for (size_t k = 0; k < cand.size(); ++k) {
+                        std::vector<double> rr;
+                        for (size_t i = 0; i < tt[0].samples_ms.size(); ++i)
+                            rr.push_back(tt[k + 1].samples_ms[i] / tt[0].samples_ms[i]);
+                        double q = ocl::summarize(rr).median_ms;  // median of the rounds' ratios
+                        candJson.push_back({{"n", cand[k]}, {"ratio", q}, {"ms", tt[k + 1].median_ms}});
+                        if (bestN == 0 || std::fabs(std::log(q)) < std::fabs(std::log(ratio))) {
+                            bestN = cand[k];
+                            ratio = q;
+                            bestT = {tt[0], tt[k + 1]};
                         }
                     }
+                    if (std::abs(ratio - 1) <= e.equalTimeTolerance) break;
+                    // aim again: the curve's time at bestN over the measured ratio
+                    aimMs = interpolateMs(pts, bestN) / ratio;
                 }
+                long n1 = bestN;
+                auto s1 = mcAt(n1);
+                // the error image at the experiment's res (its time is the paired one above)
+                methods::RenderOptions imageOnly;
+                imageOnly.reps = 1;
+                auto r1 = methods::render(rt, table, sr.scene, s1, sr.prec, imageOnly);
+                r1.timing = bestT[1];
+                r1.timeRes = ts.res;
                 json fitJson = json::array();
                 for (auto [n, t] : pts) fitJson.push_back({n, t});
                 results::Record r = sr.record(s1, r1, c, "mci_eq_" + fileSafe(c.spec));
                 r.equal_time_to = target;
                 r.n = n1;
-                double ratio = r1.timing.median_ms / tM;
+                r.extra["equal_time_candidates"] = candJson;
+                r.extra["equal_time_cell_ms"] = tM;  // the method's own cell, timed apart
                 r.extra["equal_time_label"] = c.spec;
-                r.extra["equal_time_target_ms"] = tM;
+                r.extra["equal_time_target_ms"] = bestT[0].median_ms;  // the method, in the paired rounds
                 r.extra["equal_time_ratio"] = ratio;
                 r.extra["equal_time_ok"] = std::abs(ratio - 1) <= e.equalTimeTolerance;
                 r.extra["equal_time_fit"] = fitJson;
@@ -323,7 +379,7 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
                     ++sum.equalTimeOff;
                     std::cerr << fmt::format("lumibench: warning: {}: MCI at equal time to {}: N = {}, {:.4g} ms vs "
                                              "{:.4g} ms (ratio {:.3f}, outside +-{:.0f}%)\n",
-                                             sid.label(), c.spec, n1, r1.timing.median_ms, tM, ratio,
+                                             sid.label(), c.spec, n1, r1.timing.median_ms, bestT[0].median_ms, ratio,
                                              100 * e.equalTimeTolerance);
                 }
                 results::appendRecord(resultsPath, context, r);

@@ -14,15 +14,22 @@
 // experiment wrote it, or "mc:n=<N>" for the curve), `role` ("method",
 // "mci_curve" or "equal_time"), `scene` (the scene label) and `build_s`.
 // Equal-time records also carry `equal_time_target_ms` (the matched method's
-// median), `equal_time_ratio` (their median / target), `equal_time_ok`
-// (|ratio - 1| <= tolerance) and `equal_time_fit` ([[N, median ms], ...]).
+// median in the paired rounds below), `equal_time_cell_ms` (its own cell's
+// median), `equal_time_ratio` (the median over the rounds of MC's time over
+// the method's), `equal_time_ok` (|ratio - 1| <= tolerance),
+// `equal_time_candidates` ([{n, ratio, ms}]) and `equal_time_fit`
+// ([[N, median ms], ...]).
 //
 // Equal time (DESIGN section 6): t(N) of MC is measured on the scene's
 // MCI-curve points (or, without a curve, on renders at "equal_time_fit"),
-// N_eq solves t(N) = t_M on their piecewise-linear interpolation (solveN);
-// MC is rendered at N_eq and, when its median is off by more than the
-// tolerance, the measurement joins the points and N is solved and rendered
-// once more; the closer of the two is kept.
+// N solves t(N) = t_M on their piecewise-linear interpolation (solveN); that
+// N and its neighbour towards t_M are then timed against the method in
+// alternating rounds (ocl::Runtime::timeInterleaved, every kernel at the
+// experiment's time_res), so that the drift of a shared machine hits both
+// sides of each ratio alike; the candidate whose median round ratio is
+// closest to 1 is N_eq. While it is off by more than the tolerance, N is
+// solved again for the curve's time at N_eq over that ratio and the new pair
+// timed (three tries at most). Its error image is one more, untimed render.
 #pragma once
 
 #include "experiments/experiment.h"
@@ -56,5 +63,7 @@ RunSummary run(const Experiment& e, const RunOptions& opt);
 // linear in N over 1..1024 on every device (PoCL: t(128) / t(8) = 31), so a
 // local interpolation beats one global line.
 long solveN(std::vector<std::pair<long, double>> points, double targetMs);
+// t at N on the same interpolation (proportional beyond its ends).
+double interpolateMs(std::vector<std::pair<long, double>> points, long n);
 
 } // namespace lb::experiments

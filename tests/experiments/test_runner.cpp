@@ -279,8 +279,16 @@ TEST_F(ExperimentRun, RecordsAreSaneAndAnInterruptedRunResumes)
             ASSERT_TRUE(r.n.has_value());
             EXPECT_GE(*r.n, 1);
             EXPECT_EQ(r.params["n"], *r.n);
-            EXPECT_DOUBLE_EQ(r.extra["equal_time_ratio"].get<double>(),
-                             r.time_ms.median / r.extra["equal_time_target_ms"].get<double>());
+            // N_eq is the timed candidate whose paired ratio is closest to 1
+            const double ratio = r.extra["equal_time_ratio"].get<double>();
+            bool found = false;
+            for (const auto& c : r.extra["equal_time_candidates"]) {
+                EXPECT_GE(std::fabs(std::log(c["ratio"].get<double>())), std::fabs(std::log(ratio)) - 1e-12);
+                if (c["n"] == *r.n) found = c["ratio"].get<double>() == ratio;
+            }
+            EXPECT_TRUE(found) << r.key();
+            EXPECT_GT(r.extra["equal_time_target_ms"].get<double>(), 0);
+            EXPECT_EQ(r.time_ms.res, 24);  // the experiment's time_res, not the 16 x 16 image
             eqOk += r.extra["equal_time_ok"].get<bool>();
         }
     }
