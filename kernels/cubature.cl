@@ -7,11 +7,14 @@
  *   LB_CUB_WEIGHT     0 sample (paper Eq. 9) | 1 average (Eq. 10) | 2 dotout
  *   LB_CUB_NORMALIZE  0 none | 1 formfactor (thesis Eq. 5.11)
  *   LB_CUB_DYNAMIC    bit set of dynamic points: 1 cp, 2 np, 4 mrp, 8 barycentre (0: corners only)
- *   LB_CUB_RECT_FAN   nothing clipped, nothing blended, fan around CP or corner 0:
+ *   LB_CUB_RECT_FAN   nothing clipped, fan around CP or corner 0:
  *                     the straight-line lb_cub_rect_fan (host/methods/specialize.h
  *                     decides it per scene)
- *   LB_CUB_RECT_DEL   nothing clipped, nothing blended, Delaunay over corners + CP +
- *                     barycentre: the straight-line lb_cub_rect_del
+ *   LB_CUB_RECT_DEL   nothing clipped, Delaunay over corners + CP + barycentre: the
+ *                     straight-line lb_cub_rect_del
+ *   LB_CUB_BLEND      with a straight-line form: some pixel lies beyond blend_dist, so
+ *                     the far-field blend into the 3 x 3 grid MC is applied
+ *                     (lb_cub_rect_blend); without it no pixel blends
  *   LB_LANES=8        with LB_CUB_RECT_FAN or _DEL and LB_LUT, float: eight pixels
  *                     per work-item in float8 (host/methods: lanes; CPUs by default)
  *   LB_LUT            trig-free intensity table (common/lut.h), `lum` is the LUT
@@ -20,7 +23,7 @@
  * blend_dist (m): beyond it the result blends into a 3 x 3 grid MC (lb_blend_weight;
  * fully MC, without the cubature, from 1.5 blend_dist on).
  *
- * @variants: "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_NORMALIZE=1" | "" | "-DLB_CUB_TRI=1" | "-DLB_CUB_TRI=1 -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=15" | "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_DYNAMIC=0" | "-DLB_LUT" | "-DLB_LUT -DLB_CUB_RECT_FAN" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0 -DLB_CUB_NORMALIZE=1"
+ * @variants: "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL" | "-DLB_CUB_RECT_FAN -DLB_CUB_BLEND" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_CUB_BLEND -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_NORMALIZE=1" | "" | "-DLB_CUB_TRI=1" | "-DLB_CUB_TRI=1 -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=15" | "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_DYNAMIC=0" | "-DLB_LUT" | "-DLB_LUT -DLB_CUB_RECT_FAN" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0 -DLB_CUB_NORMALIZE=1"
  */
 #include "common/lbmath.h"
 
@@ -77,6 +80,12 @@ __kernel void render(__global const real* P, __global const float* lum, __global
         return;
     int8 nt, nf;
     float8 e = LB_CUB_RECT_CALL(_x8, nt, nf);
+#ifdef LB_CUB_BLEND
+    float8 t;
+    e = lb_cub_rect_blend_x8(lum, e, ou, ov, on, P[12], P[13], au, av, an, blend_dist, &t);
+    nt = t >= 1.0f ? 0 : nt; /* no cubature where the grid MC alone counts */
+    nf = t >= 1.0f ? 0 : nf;
+#endif
     int i = row * res + col0;
     lb_store_x8(out, i, res - col0, e);
     if (!want_stats)
@@ -90,11 +99,10 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     }
 }
 #elif defined(LB_CUB_RECT_CALL)
-/* The scene needs no clip and no blend, and the method is a fan around CP
- * (or corner 0) or Delaunay over corners + CP + barycentre:
- * common/cubature_lanes.inc, one pixel per work-item (GPUs, double, the exact
- * lookup). horizon_eps and blend_dist are unused: the host chose this
- * variant because neither changes any pixel. */
+/* The scene needs no clip, and the method is a fan around CP (or corner 0)
+ * or Delaunay over corners + CP + barycentre: common/cubature_lanes.inc, one
+ * pixel per work-item (GPUs, double, the exact lookup). horizon_eps is
+ * unused: the host chose this variant because it clips nothing. */
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
                      __global int* stats, int want_stats, real plane_eps, real horizon_eps,
                      real corner_inset, real dyn_weight, real blend_dist)
@@ -105,6 +113,12 @@ __kernel void render(__global const real* P, __global const float* lum, __global
         return;
     int nt, nf;
     real e = LB_CUB_RECT_CALL(, nt, nf);
+#ifdef LB_CUB_BLEND
+    real t;
+    e = lb_cub_rect_blend(lum, e, ou, ov, on, P[12], P[13], au, av, an, blend_dist, &t);
+    nt = t >= R(1) ? 0 : nt;
+    nf = t >= R(1) ? 0 : nf;
+#endif
     int i = row * res + col;
     out[i] = e;
     if (want_stats) {

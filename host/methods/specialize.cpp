@@ -16,13 +16,14 @@ std::string Specialization::defines() const
     if (noBack) d += " -DLB_NO_BACK";
     if (rectFan) d += " -DLB_CUB_RECT_FAN";
     if (rectDel) d += " -DLB_CUB_RECT_DEL";
+    if ((rectFan || rectDel) && blend) d += " -DLB_CUB_BLEND";
     return d;
 }
 
 nlohmann::json Specialization::json() const
 {
     return {{"lut", lut}, {"lut1d", lut && lut1d}, {"no_horizon", noHorizon}, {"no_back", noBack}, {"rect_fan", rectFan},
-            {"rect_del", rectDel}};
+            {"rect_del", rectDel}, {"blend", blend}};
 }
 
 bool lightAboveEveryHorizon(const Scene& scene, double margin)
@@ -64,9 +65,10 @@ Specialization analyseCubature(const Scene& scene, const photometry::Table& tabl
     bool noBlend = farthestPixel(scene) * (1 + 1e-6) < o.blendDist;
     bool fanCp = o.triangulation == 0 && (o.dynamic == 1 || o.dynamic == 0);
     bool delCpBary = o.triangulation == 1 && o.dynamic == (1 | 8);  // LB_CUB_CP | LB_CUB_BARY
-    bool unclipped = noBlend && lightAboveEveryHorizon(scene, o.horizonEps + o.planeEps);
+    bool unclipped = lightAboveEveryHorizon(scene, o.horizonEps + o.planeEps);
     s.rectFan = fanCp && unclipped;
     s.rectDel = delCpBary && unclipped;
+    s.blend = !noBlend;
     return s;
 }
 

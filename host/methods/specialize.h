@@ -20,10 +20,12 @@
 //   rectFan    (cubature) nothing is clipped -- every light corner lies more
 //              than horizon_eps + plane_eps above the receiver plane of every
 //              pixel (the plane shift moves a receiver by up to plane_eps
-//              before the tilted-horizon clip) --, no pixel is beyond
-//              blend_dist from the light's centre (the pixel farthest away is
-//              an image corner), and the method is a fan around CP or corner
-//              0 (any weighting, normalize none or formfactor):
+//              before the tilted-horizon clip) --, and the method is a fan
+//              around CP or corner 0 (any weighting, normalize none or
+//              formfactor); `blend` (LB_CUB_BLEND) where some pixel lies
+//              beyond blend_dist from the light's centre (the pixel farthest
+//              away is an image corner), the far-field blend in the same
+//              straight-line code:
 //              LB_CUB_RECT_FAN, the straight-line
 //              lb_cub_rect_fan of common/cubature.h (no clip, no
 //              triangulation structure, no loops; PoCL vectorises it).
@@ -51,6 +53,7 @@ struct Specialization {
     bool noBack = false;     // LB_NO_BACK
     bool rectFan = false;    // LB_CUB_RECT_FAN (cubature only)
     bool rectDel = false;    // LB_CUB_RECT_DEL (cubature only)
+    bool blend = false;      // LB_CUB_BLEND: some pixel blends (with rectFan / rectDel)
 
     std::string defines() const;  // " -DLB_LUT ..." (leading space when not empty)
     nlohmann::json json() const;

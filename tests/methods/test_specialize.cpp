@@ -155,9 +155,12 @@ TEST(Specialize, CubatureRectFanRule)
     EXPECT_TRUE(fan(s, "normalize=formfactor"));
     EXPECT_FALSE(fan(s, "dynamic=np"));
     EXPECT_FALSE(fan(s, "specialize=none"));
-    // the image corners lie about 3.7 m from the light's centre at h = 1
-    EXPECT_FALSE(fan(s, "blend_dist=3"));
+    // the image corners lie about 3.7 m from the light's centre at h = 1: the
+    // blend is part of the straight-line code where some pixel reaches it
+    EXPECT_TRUE(fan(s, "blend_dist=3"));
+    EXPECT_EQ(analyseCubature(s, t, opts("blend_dist=3")).defines(), " -DLB_LUT -DLB_CUB_RECT_FAN -DLB_CUB_BLEND");
     EXPECT_TRUE(fan(s, "blend_dist=4"));
+    EXPECT_FALSE(analyseCubature(s, t, opts("blend_dist=4")).blend);
     // R = pi/2, h = 0.1: the lower edge is 0.1 m above the receiver; the clip
     // at horizon_eps + plane_eps decides
     Scene v = scene(0.1, M_PI / 2);
@@ -185,7 +188,7 @@ TEST(Specialize, CubatureRectFanRule)
     EXPECT_FALSE(del(s, "triangulation=delaunay"));
     EXPECT_FALSE(del(s, "triangulation=delaunay,dynamic=cp+np+mrp+barycentre"));
     EXPECT_FALSE(del(s, cb + ",specialize=none"));
-    EXPECT_FALSE(del(s, cb + ",blend_dist=3"));
+    EXPECT_TRUE(del(s, cb + ",blend_dist=3"));
     EXPECT_FALSE(del(v, cb + ",horizon_eps=0.1"));
     EXPECT_EQ(cubatureLanes(analyseCubature(s, t, opts(cb)), opts(cb), "CPU", false), 8);
 }
@@ -255,7 +258,8 @@ TEST(Specialize, CubatureRectFanEqualsGeneral)
     const char* specs[] = {"cubature", "cubature:weighting=sample", "cubature:weighting=dotout",
                            "cubature:dynamic=none", "cubature:corner_inset=0.3,dyn_weight=2",
                            "cubature:plane_eps=0.05", "cubature:normalize=formfactor",
-                           "cubature:normalize=formfactor,weighting=dotout,dynamic=none,corner_inset=0.2"};
+                           "cubature:normalize=formfactor,weighting=dotout,dynamic=none,corner_inset=0.2",
+                           "cubature:blend_dist=1.5", "cubature:blend_dist=0.6,weighting=sample,corner_inset=0.3"};
     // Without double on the device: float against float, 2e-5 (the general
     // float kernel's own error, 8.7e-6, plus the fan's, with margin).
     Precision ref = rt->fp64() ? Precision::Double : Precision::Float;
@@ -414,7 +418,8 @@ TEST(Specialize, CubatureRectDelaunayEqualsGeneral)
     const std::string d = "cubature:triangulation=delaunay,dynamic=cp+barycentre";
     const std::vector<std::string> specs = {d, d + ",weighting=sample", d + ",weighting=dotout",
                                             d + ",corner_inset=0.3,dyn_weight=2", d + ",plane_eps=0.05",
-                                            d + ",normalize=formfactor"};
+                                            d + ",normalize=formfactor", d + ",blend_dist=1.5",
+                                            d + ",blend_dist=0.6,weighting=sample"};
     Precision ref = rt->fp64() ? Precision::Double : Precision::Float;
     double rel = rt->fp64() ? 1e-6 : 2e-5;
     RenderOptions opt;
