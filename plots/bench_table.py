@@ -88,6 +88,18 @@ def main():
          f"{num(d['cubature']['time_ms'])} ms)" for d in ds])
     row("MC t(N) fit",
         [f"{num(d['mc_fit']['t0_ms'])} ms + {num(d['mc_fit']['ms_per_sample'])} ms per sample" for d in ds])
+    # the fair-equal-time goals (runs that have them; "-" elsewhere)
+    goals = []
+    for d in ds:
+        for g in d.get("goals", []):
+            if g["name"] not in [x["name"] for x in goals]:
+                goals.append(g)
+    for g in goals:
+        cells = []
+        for d in ds:
+            m = next((x for x in d.get("goals", []) if x["name"] == g["name"]), None)
+            cells.append(f"**{m['ratio']:.2f}** ({'met' if m['ok'] else 'missed'})" if m else "-")
+        row(f"{g['name']} (target <= {g['target']:g})", cells)
 
     names = []
     for d in ds:

@@ -311,8 +311,9 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
                 // method's side timed against the method in alternating
                 // rounds (DESIGN 6: ratios within one run), the ratio the
                 // median of the rounds' ratios. While the closest is off by
-                // more than the tolerance (three tries at most), aim again at
-                // the curve's time there over the measured ratio.
+                // more than the tolerance and not bracketed by a measured
+                // neighbour (three tries at most), aim again by the secant
+                // through the paired ratios.
                 Scene ts = sr.scene;
                 if (e.timeRes > 0) ts.res = e.timeRes;
                 methods::Prepared pm(rt, table, ts, c.parsed, sr.prec);
@@ -321,14 +322,20 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
                 long bestN = 0;
                 double ratio = NAN;
                 std::vector<ocl::Timing> bestT;  // (method, MC at bestN) of bestN's rounds
-                double aimMs = tM;               // curve time to aim at
+                std::map<long, double> measured;  // N -> median round ratio
+                long next = solveN(pts, tM);      // first aim: the curve
                 for (int attempt = 0; attempt < 3; ++attempt) {
-                    long n1 = solveN(pts, aimMs);
-                    long n2 = interpolateMs(pts, n1) > aimMs ? n1 - 1 : n1 + 1;
+                    // the aimed N and its neighbour towards the target on the
+                    // curve; later tries: the aimed N and both neighbours
+                    long n1 = std::max(1L, next);
+                    std::vector<long> tries = {n1};
+                    if (attempt == 0)
+                        tries.push_back(interpolateMs(pts, n1) > tM ? n1 - 1 : n1 + 1);
+                    else
+                        tries.insert(tries.end(), {n1 - 1, n1 + 1});
                     std::vector<long> cand;
-                    for (long n : {n1, n2})
-                        if (n >= 1 && std::none_of(candJson.begin(), candJson.end(),
-                                                   [n](const json& j) { return j["n"] == n; }))
+                    for (long n : tries)
+                        if (n >= 1 && !measured.count(n) && std::find(cand.begin(), cand.end(), n) == cand.end())
                             cand.push_back(n);
                     if (cand.empty()) break;
                     std::vector<std::function<cl::Event()>> launches = {[&] { return pm.launch(0, ts.res); }};
@@ -344,6 +351,7 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
                         for (size_t i = 0; i < tt[0].samples_ms.size(); ++i)
                             rr.push_back(tt[k + 1].samples_ms[i] / tt[0].samples_ms[i]);
                         double q = ocl::summarize(rr).median_ms;  // median of the rounds' ratios
+                        measured[cand[k]] = q;
                         candJson.push_back({{"n", cand[k]}, {"ratio", q}, {"ms", tt[k + 1].median_ms}});
                         if (bestN == 0 || std::fabs(std::log(q)) < std::fabs(std::log(ratio))) {
                             bestN = cand[k];
@@ -352,9 +360,28 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
                         }
                     }
                     if (std::abs(ratio - 1) <= e.equalTimeTolerance) break;
-                    // aim again: the curve's time at bestN over the measured ratio
-                    aimMs = interpolateMs(pts, bestN) / ratio;
+                    // aim again on the paired ratios themselves: the secant
+                    // through the measured points nearest below and above 1
+                    // (or the two nearest to 1 when all lie on one side)
+                    std::vector<std::pair<long, double>> m(measured.begin(), measured.end());
+                    std::sort(m.begin(), m.end(), [](auto x, auto y) {
+                        return std::fabs(std::log(x.second)) < std::fabs(std::log(y.second));
+                    });
+                    auto lo = std::find_if(m.begin(), m.end(), [](auto x) { return x.second < 1; });
+                    auto hi = std::find_if(m.begin(), m.end(), [](auto x) { return x.second >= 1; });
+                    std::pair<long, double> p0 = m[0], p1 = m.size() > 1 ? m[1] : m[0];
+                    if (lo != m.end() && hi != m.end()) p0 = *lo, p1 = *hi;
+                    if (lo != m.end() && hi != m.end() && std::abs(p0.first - p1.first) == 1) break;  // bracketed
+                    double slope = p1.first != p0.first ? (p1.second - p0.second) / double(p1.first - p0.first) : 0;
+                    next = slope > 0 ? std::lround(double(p0.first) + (1 - p0.second) / slope)
+                                     : std::lround(double(p0.first) / p0.second);  // t proportional to N
+                    next = std::clamp(next, 1L, 1L << 20);
                 }
+                // Bracketed: the neighbour of N_eq on the other side of 1 was
+                // measured too (or N_eq = 1 is too slow already), so no integer
+                // N matches the method more closely on this device.
+                bool bracketed = ratio >= 1 ? (bestN == 1 || (measured.count(bestN - 1) && measured[bestN - 1] < 1))
+                                            : (measured.count(bestN + 1) && measured[bestN + 1] >= 1);
                 long n1 = bestN;
                 auto s1 = mcAt(n1);
                 // the error image at the experiment's res (its time is the paired one above)
@@ -374,6 +401,7 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
                 r.extra["equal_time_target_ms"] = bestT[0].median_ms;  // the method, in the paired rounds
                 r.extra["equal_time_ratio"] = ratio;
                 r.extra["equal_time_ok"] = std::abs(ratio - 1) <= e.equalTimeTolerance;
+                r.extra["equal_time_bracketed"] = bracketed;
                 r.extra["equal_time_fit"] = fitJson;
                 if (std::abs(ratio - 1) > e.equalTimeTolerance) {
                     ++sum.equalTimeOff;

@@ -17,6 +17,7 @@
 // median in the paired rounds below), `equal_time_cell_ms` (its own cell's
 // median), `equal_time_ratio` (the median over the rounds of MC's time over
 // the method's), `equal_time_ok` (|ratio - 1| <= tolerance),
+// `equal_time_bracketed` (N_eq is the closest integer: see below),
 // `equal_time_candidates` ([{n, ratio, ms}]) and `equal_time_fit`
 // ([[N, median ms], ...]).
 //
@@ -28,8 +29,11 @@
 // experiment's time_res), so that the drift of a shared machine hits both
 // sides of each ratio alike; the candidate whose median round ratio is
 // closest to 1 is N_eq. While it is off by more than the tolerance, N is
-// solved again for the curve's time at N_eq over that ratio and the new pair
-// timed (three tries at most). Its error image is one more, untimed render.
+// aimed again by the secant through the paired ratios and timed with its
+// neighbours (three tries at most), unless the measured N below and above the
+// method's time are adjacent integers already: then no integer N can match
+// more closely on this device, and the record says `equal_time_bracketed`.
+// Its error image is one more, untimed render.
 #pragma once
 
 #include "experiments/experiment.h"
