@@ -90,13 +90,17 @@ def main():
         eq = [r for r in recs if r.get("role") == "equal_time" and r["equal_time_label"] == lab]
         wins = sum(1 for r in eq if (r["scene"], lab) in by_scene and by_scene[(r["scene"], lab)]["nmse"] < r["nmse"])
         missed = sum(1 for r in eq if not r.get("equal_time_ok", True))
+        # bracketed: N_eq's measured neighbour lies on the other side (no integer N is closer)
+        closest = sum(1 for r in eq if r.get("equal_time_ok", True) or r.get("equal_time_bracketed", False))
         ns = sorted(r["n"] for r in eq)
         rows_won = sum(1 for lum, h in keys
                        if groups.get((lum, h, lab)) and groups.get((lum, h, "mci@" + lab))
                        and stitched(groups[(lum, h, lab)]) < stitched(groups[(lum, h, "mci@" + lab)]))
         print(f"- {lab}: beats its equal-time MCI in {wins} of {len(eq)} scenes and {rows_won} of {len(keys)} "
               f"stitched rows; MCI N {ns[0]}..{ns[-1]} (median {ns[len(ns) // 2]}); pairs outside the tolerance: "
-              f"{missed} ({100 * (len(eq) - missed) / len(eq):.0f} % within)")
+              f"{missed} ({100 * (len(eq) - missed) / len(eq):.0f} % within"
+              + (f", {100 * closest / len(eq):.0f} % within or bracketed)"
+                 if any("equal_time_bracketed" in r for r in eq) else ")"))
 
 
 if __name__ == "__main__":
