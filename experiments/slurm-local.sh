@@ -66,9 +66,21 @@ CONF
     exit 1
     ;;
 stop)
-    for p in slurmd slurmctld; do
-        [ -f "$dir/$p.pid" ] && kill "$(cat "$dir/$p.pid")" 2>/dev/null || true
+    # Signal the daemons, then wait (up to 10 s) until they have exited: slurmctld
+    # writes its state files on the way out, so a caller that removes $dir right
+    # after `stop` must not race with it.
+    pids=()
+    for f in "$dir/slurmd.pid" "$dir/slurmctld.pid" "$dir/munge/munged.pid"; do
+        if [ -f "$f" ]; then
+            pid=$(cat "$f")
+            kill "$pid" 2>/dev/null && pids+=("$pid")
+        fi
     done
-    [ -f "$dir/munge/munged.pid" ] && kill "$(cat "$dir/munge/munged.pid")" 2>/dev/null || true
+    for _ in $(seq 100); do
+        alive=0
+        for pid in "${pids[@]}"; do kill -0 "$pid" 2>/dev/null && alive=1; done
+        [ "$alive" = 0 ] && break
+        sleep 0.1
+    done
     ;;
 esac

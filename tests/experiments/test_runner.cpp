@@ -246,7 +246,8 @@ protected:
     void TearDown() override
     {
         unsetenv("LUMIBENCH_CACHE");
-        if (!dir.empty() && !HasFailure()) fs::remove_all(dir);
+        std::error_code ec;  // a left-over file is no test failure
+        if (!dir.empty() && !HasFailure()) fs::remove_all(dir, ec);
     }
     int run(const std::string& args)
     {
