@@ -236,6 +236,18 @@ double cubatureDiff(ocl::Runtime& rt, const photometry::Table& t, const Scene& s
     return worst;
 }
 
+// Worst relative error of the general (specialize=none) float kernel of
+// `spec` against its own double result: the float bound's reference.
+double generalFloatError(ocl::Runtime& rt, const photometry::Table& t, const Scene& s, const std::string& spec)
+{
+    RenderOptions opt;
+    opt.reps = 1;
+    auto general = parseSpec(spec + (spec.find(':') == std::string::npos ? ":" : ",") + "specialize=none");
+    auto gf = render(rt, t, s, general, Precision::Float, opt);
+    auto gd = render(rt, t, s, general, Precision::Double, opt);
+    return worstRelDiff(gd.image.px, gf.image.px, HUGE_VAL, spec + " general float " + s.describe());
+}
+
 TEST(Specialize, CubatureRectFanEqualsGeneral)
 {
     LB_REQUIRE_RUNTIME(rt);
@@ -264,15 +276,6 @@ TEST(Specialize, CubatureRectFanEqualsGeneral)
     // float kernel's own error, 8.7e-6, plus the fan's, with margin).
     Precision ref = rt->fp64() ? Precision::Double : Precision::Float;
     double rel = rt->fp64() ? 1e-6 : 2e-5;
-    // worst relative error of the general float kernel against its double result
-    auto generalFloatError = [&](const Scene& s, const std::string& spec) {
-        RenderOptions opt;
-        opt.reps = 1;
-        auto general = parseSpec(spec + (spec.find(':') == std::string::npos ? ":" : ",") + "specialize=none");
-        auto gf = render(*rt, asym, s, general, Precision::Float, opt);
-        auto gd = render(*rt, asym, s, general, Precision::Double, opt);
-        return worstRelDiff(gd.image.px, gf.image.px, HUGE_VAL, spec + " general float " + s.describe());
-    };
     // normalize=formfactor multiplies by the rectangle's Lambert irradiance,
     // whose float edge sum is ill-conditioned where the light is seen at a
     // grazing angle (its terms cancel): the general float kernel itself is
@@ -284,7 +287,7 @@ TEST(Specialize, CubatureRectFanEqualsGeneral)
     for (const auto& s : scenes)
         for (const char* spec : specs) {
             bool ff = std::string(spec).find("formfactor") != std::string::npos;
-            double g = rt->fp64() ? generalFloatError(s, spec) : 0;
+            double g = rt->fp64() ? generalFloatError(*rt, asym, s, spec) : 0;
             (ff ? worstFfGeneral : worstGeneral) = std::max(ff ? worstFfGeneral : worstGeneral, g);
             for (const char* lanes : {"1", "8"}) {
                 double d = cubatureDiff(*rt, asym, s, spec, Precision::Float, lanes, ref,
@@ -422,19 +425,11 @@ TEST(Specialize, CubatureRectDelaunayEqualsGeneral)
                                             d + ",blend_dist=0.6,weighting=sample"};
     Precision ref = rt->fp64() ? Precision::Double : Precision::Float;
     double rel = rt->fp64() ? 1e-6 : 2e-5;
-    RenderOptions opt;
-    opt.reps = 1;
     double worst = 0, worstD = 0, worstGeneral = 0;
     for (const auto& s : scenes)
         for (const auto& spec : specs) {
             bool ff = spec.find("formfactor") != std::string::npos;
-            double g = 0;
-            if (rt->fp64()) {
-                auto general = parseSpec(spec + ",specialize=none");
-                auto gf = render(*rt, asym, s, general, Precision::Float, opt);
-                auto gd = render(*rt, asym, s, general, Precision::Double, opt);
-                g = worstRelDiff(gd.image.px, gf.image.px, HUGE_VAL, spec + " general float " + s.describe());
-            }
+            double g = rt->fp64() ? generalFloatError(*rt, asym, s, spec) : 0;
             worstGeneral = std::max(worstGeneral, g);
             for (const char* lanes : {"1", "8"})
                 worst = std::max(worst, cubatureDiff(*rt, asym, s, spec, Precision::Float, lanes, ref,
