@@ -151,7 +151,11 @@ TEST(Specialize, CubatureRectFanRule)
     EXPECT_EQ(analyseCubature(s, t, opts("")).defines(), " -DLB_LUT -DLB_CUB_RECT_FAN");
     EXPECT_TRUE(fan(s, "dynamic=none"));
     EXPECT_TRUE(fan(s, "weighting=dotout,corner_inset=0.3,dyn_weight=2"));
-    EXPECT_FALSE(fan(s, "triangulation=delaunay"));
+    // Delaunay over corners + CP never flips there: the fan around CP
+    EXPECT_TRUE(fan(s, "triangulation=delaunay"));
+    EXPECT_TRUE(fan(s, "triangulation=delaunay,dynamic=cp"));
+    EXPECT_FALSE(fan(s, "triangulation=delaunay,dynamic=none"));
+    EXPECT_FALSE(fan(scene(-0.1, M_PI / 2), "triangulation=delaunay"));
     EXPECT_TRUE(fan(s, "normalize=formfactor"));
     EXPECT_FALSE(fan(s, "dynamic=np"));
     EXPECT_FALSE(fan(s, "specialize=none"));
@@ -177,7 +181,7 @@ TEST(Specialize, CubatureRectFanRule)
     EXPECT_EQ(cubatureLanes(a, opts("lanes=1"), "CPU", false), 1);
     EXPECT_EQ(cubatureLanes(a, opts("lanes=8"), "GPU", false), 8);
     EXPECT_EQ(cubatureLanes(analyseCubature(s, t, opts("lookup=exact")), opts("lookup=exact"), "CPU", false), 1);
-    EXPECT_EQ(cubatureLanes(analyseCubature(s, t, opts("triangulation=delaunay")), opts(""), "CPU", false), 1);
+    EXPECT_EQ(cubatureLanes(analyseCubature(s, t, opts("triangulation=delaunay,dynamic=np")), opts(""), "CPU", false), 1);
     // Delaunay over corners + CP + barycentre: the same scene conditions
     auto del = [&](const Scene& sc, const std::string& kv) { return analyseCubature(sc, t, opts(kv)).rectDel; };
     const std::string cb = "triangulation=delaunay,dynamic=cp+barycentre";
@@ -271,7 +275,9 @@ TEST(Specialize, CubatureRectFanEqualsGeneral)
                            "cubature:dynamic=none", "cubature:corner_inset=0.3,dyn_weight=2",
                            "cubature:plane_eps=0.05", "cubature:normalize=formfactor",
                            "cubature:normalize=formfactor,weighting=dotout,dynamic=none,corner_inset=0.2",
-                           "cubature:blend_dist=1.5", "cubature:blend_dist=0.6,weighting=sample,corner_inset=0.3"};
+                           "cubature:blend_dist=1.5", "cubature:blend_dist=0.6,weighting=sample,corner_inset=0.3",
+                           "cubature:triangulation=delaunay",
+                           "cubature:triangulation=delaunay,weighting=dotout,normalize=formfactor,dyn_weight=2"};
     // Without double on the device: float against float, 2e-5 (the general
     // float kernel's own error, 8.7e-6, plus the fan's, with margin).
     Precision ref = rt->fp64() ? Precision::Double : Precision::Float;
