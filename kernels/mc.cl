@@ -4,7 +4,7 @@
  * st[2i], st[2i+1] in [0,1]^2 are the points' (s, t) along (u, v); the host
  * makes the sets (host/methods/samples.h).
  *
- * Written for speed (issue 9; the straightforward version is kernels/naive.cl):
+ * Written for speed (the straightforward version is kernels/naive.cl):
  * everything is done in the light's orthonormal frame (u, v, n_L), where a
  * sample's offset from the pixel is (ou + W s, ov + L t, on) with ou, ov, on
  * fixed per pixel, so a sample costs two fmas for its position, two for r^2

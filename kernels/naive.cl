@@ -1,5 +1,5 @@
 /* naive.cl -- the deliberately straightforward MC kernel that `lumibench bench`
- * compares mc.cl against (issue 9). Same arguments and result as mc.cl's
+ * compares mc.cl against. Same arguments and result as mc.cl's
  * render (up to rounding), written the obvious way: float3 arithmetic in
  * world space, normalisation, acos + atan2 and two binary searches of the
  * exact table per sample. Not a method: only the benchmark and its test use it.

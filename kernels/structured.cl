@@ -1,7 +1,7 @@
 /* structured.cl -- structured sampling (paper Eq. 4, thesis 4.1): the corners
  * of the horizon-clipped light plus its barycentre (area centroid), with
  * E = (Omega_L / N) sum_i L_e(d_i) cos_i, L_e(d) = I(d) / (A |n_L . d|).
- * Straight-line form (common/dynamic_lanes.inc lb_structured_rect, issue 9;
+ * Straight-line form (common/dynamic_lanes.inc lb_structured_rect;
  * the host uses it when nothing is clipped, methods/straight.h): LB_STRUCT_RECT,
  * one pixel per work-item, or with LB_LANES=8 and LB_LUT in float eight.
  * @variants: "" | "-DLB_STRUCT_RECT" | "-DLB_STRUCT_RECT -DLB_LUT -DLB_LANES=8"

@@ -1,4 +1,4 @@
-// bench.h -- `lumibench bench` (issue 9): MC samples per second against a
+// bench.h -- `lumibench bench`: MC samples per second against a
 // deliberately naive kernel (kernels/naive.cl), time per pixel of every
 // method, cubature against MC with 8 samples, and cubature's equal-time MC
 // sample count, all in one run on one device. Timing: OpenCL profiling events,

@@ -1,4 +1,4 @@
-// results.h -- the results JSON document of an experiment run (issue 6):
+// results.h -- the results JSON document of an experiment run:
 //
 //   {"context": {"device": ..., "driver": ..., "commit": ..., "date": ...,
 //                "host": ..., "lumibench_version": ..., ...},

@@ -348,8 +348,8 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
                     std::vector<ocl::Timing> tt = rt.timeInterleaved(launches, std::max(1, e.reps), 1);
                     for (size_t k = 0; k < cand.size(); ++k) {
                         std::vector<double> rr;
-                        for (size_t i = 0; i < tt[0].samples_ms.size(); ++i)
-                            rr.push_back(tt[k + 1].samples_ms[i] / tt[0].samples_ms[i]);
+                        for (size_t r = 0; r < tt[0].samples_ms.size(); ++r)
+                            rr.push_back(tt[k + 1].samples_ms[r] / tt[0].samples_ms[r]);
                         double q = ocl::summarize(rr).median_ms;  // median of the rounds' ratios
                         measured[cand[k]] = q;
                         candJson.push_back({{"n", cand[k]}, {"ratio", q}, {"ms", tt[k + 1].median_ms}});

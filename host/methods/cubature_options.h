@@ -25,7 +25,7 @@ struct CubatureOptions {
     // crosses the receiver's horizon, so the option only matters elsewhere.
     double horizonEps = 0.0;
     // corner_inset (fraction, 0 = at the corners) and dyn_weight (1 = plain):
-    // sample placement tunables of lb_cubature_irradiance_ex (issue 7).
+    // sample placement tunables of lb_cubature_irradiance_ex.
     double cornerInset = 0.0;
     double dynWeight = 1.0;
     // blend_dist (m): far-field blend into a 3 x 3 grid MC (thesis 6.6);

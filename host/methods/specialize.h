@@ -1,4 +1,4 @@
-// specialize.h -- "leave out what a given scene does not need" (issue 9): the
+// specialize.h -- "leave out what a given scene does not need": the
 // host analyses one scene and luminaire and picks the smallest kernel variant.
 //
 // Rules (each one only drops work whose result is known to be 0 or the

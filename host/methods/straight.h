@@ -1,5 +1,5 @@
 // straight.h -- the lookup / specialize / lanes options shared by the
-// families whose kernels have a straight-line form (issue 9): point, cp,
+// families whose kernels have a straight-line form: point, cp,
 // structured and voronoi (the cubature has its own rule set, analyseCubature).
 //
 // A straight-line form is the method for an unclipped rectangle in the light's

@@ -1,4 +1,4 @@
-// stability.h -- issue 8: every registered method, in float and double, on a
+// stability.h -- every registered method, in float and double, on a
 // catalogue of extreme scenes (`lumibench stability`).
 //
 // The catalogue (catalogue()) is a table of cases: a scene, a luminaire and

@@ -1,5 +1,5 @@
-// tune.h -- nlopt tuning of a method's continuous parameters against NMSE
-// (issue 7): `lumibench tune EXP --out DIR`.
+// tune.h -- nlopt tuning of a method's continuous parameters against NMSE:
+// `lumibench tune EXP --out DIR`.
 //
 // A tune experiment (experiments/tune-*.json):
 //

@@ -492,7 +492,7 @@ LB_FN real lb_cubature_setup(lb_cub* T, lb_light L, real3 x, real3 nx, int trian
 
 /* Cubature irradiance (lux) at x: lb_cubature_setup, then the photometric
  * lookups. normalize: 0 none, 1 formfactor (thesis Eq. 5.11). *ntri and
- * *nflips receive the statistics. Two placement tunables (issue 7, searched
+ * *nflips receive the statistics. Two placement tunables (searched
  * by `lumibench tune`; 0 and 1 are the plain method, bit for bit):
  *   corner_inset  the hull samples (the clipped light's corners) look the
  *                 radiance up at p + corner_inset (c - p), c the mean of
@@ -555,7 +555,7 @@ LB_FN real lb_cubature_irradiance(__global const float* lum, lb_light L, real3 x
 }
 
 /* Far-field blend (thesis 6.6 proposes blending the cubature into MCI with
- * distance; issue 7's blend_dist). lb_grid_mc_irradiance: the area form of
+ * distance; the blend_dist tunable). lb_grid_mc_irradiance: the area form of
  * DESIGN section 1 on the midpoints of a k x k grid over the light,
  * E = (1/k^2) sum I(d_i) max(0, n_x . w_i) / r_i^2 -- a fixed, deterministic
  * point set (an MCI-k^2 with stratified midpoints), accurate once the light
@@ -586,7 +586,7 @@ LB_FN real lb_blend_weight(real dist, real blend_dist)
     return clamp((dist - blend_dist) / (R(0.5) * blend_dist), R(0), R(1));
 }
 
-/* The straight-line cubature of an unclipped rectangle (issue 9):
+/* The straight-line cubature of an unclipped rectangle:
  * cubature_lanes.inc, here one pixel per call (lb_cub_rect_fan); the 8-lane
  * form is included by kernels/cubature.cl. */
 #include "lanes1.h"

@@ -1,4 +1,4 @@
-/* lut.h -- trig-free intensity lookup (issue 9). Compiles as OpenCL C and C++.
+/* lut.h -- trig-free intensity lookup. Compiles as OpenCL C and C++.
  *
  * The exact lookup (photometry.h) needs acos/atan2 and two binary searches per
  * sample. Here the luminaire is resampled once (host/photometry/lut.h) on a

@@ -1,4 +1,4 @@
-// Issue 8: the stability catalogue, its metrics, the degenerate-light
+// The stability catalogue, its metrics, the degenerate-light
 // validation and the regressions of the fixes it found.
 #include "methods/render.h"
 #include "stability/stability.h"

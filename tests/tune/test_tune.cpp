@@ -53,7 +53,7 @@ TEST(Tune, BadExperimentNamesKey)
     fs::remove(p);
 }
 
-// The CI criterion of issue 7: tuning improves the validation NMSE over the
+// The CI criterion of the tuner: tuning improves the validation NMSE over the
 // defaults on tune-smoke (a few seconds on 2 cores with the references
 // cached, ~1 s more for the plot's matplotlib start-up).
 TEST(Tune, SmokeImprovesValidation)
