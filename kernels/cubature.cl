@@ -7,11 +7,16 @@
  *   LB_CUB_WEIGHT     0 sample (paper Eq. 9) | 1 average (Eq. 10) | 2 dotout
  *   LB_CUB_NORMALIZE  0 none | 1 formfactor (thesis Eq. 5.11)
  *   LB_CUB_DYNAMIC    bit set of dynamic points: 1 cp, 2 np, 4 mrp, 8 barycentre (0: corners only)
- *   LB_CUB_RECT_FAN   nothing clipped, fan around CP or corner 0:
+ *   LB_CUB_RECT_FAN   nothing clipped, fan around CP or corner 0 (or Delaunay over corners + CP,
+ *                     which never flips there):
  *                     the straight-line lb_cub_rect_fan (host/methods/specialize.h
  *                     decides it per scene)
  *   LB_CUB_RECT_DEL   nothing clipped, Delaunay over corners + CP + barycentre: the
  *                     straight-line lb_cub_rect_del
+ *   LB_CUB_RECT_CLIP  with LB_CUB_RECT_FAN or _DEL: the horizon cuts the light, along
+ *                     its u edges (receiver normal perpendicular to u, as in every
+ *                     normalized scene): the forms run on the rectangle it leaves
+ *                     (lb_cub_rect_clip)
  *   LB_CUB_BLEND      with a straight-line form: some pixel lies beyond blend_dist, so
  *                     the far-field blend into the 3 x 3 grid MC is applied
  *                     (lb_cub_rect_blend); without it no pixel blends
@@ -23,7 +28,7 @@
  * blend_dist (m): beyond it the result blends into a 3 x 3 grid MC (lb_blend_weight;
  * fully MC, without the cubature, from 1.5 blend_dist on).
  *
- * @variants: "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL" | "-DLB_CUB_RECT_FAN -DLB_CUB_BLEND" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_CUB_BLEND -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_NORMALIZE=1" | "" | "-DLB_CUB_TRI=1" | "-DLB_CUB_TRI=1 -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=15" | "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_DYNAMIC=0" | "-DLB_LUT" | "-DLB_LUT -DLB_CUB_RECT_FAN" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0 -DLB_CUB_NORMALIZE=1"
+ * @variants: "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL" | "-DLB_CUB_RECT_FAN -DLB_CUB_BLEND" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_CUB_BLEND -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_NORMALIZE=1" | "" | "-DLB_CUB_TRI=1" | "-DLB_CUB_TRI=1 -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=15" | "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_DYNAMIC=0" | "-DLB_LUT" | "-DLB_LUT -DLB_CUB_RECT_FAN" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_RECT_FAN -DLB_CUB_RECT_CLIP -DLB_CUB_BLEND" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_CUB_RECT_CLIP -DLB_LANES=8"
  */
 #include "common/lbmath.h"
 
@@ -47,16 +52,23 @@
  * written when want_stats != 0 (pass any small buffer otherwise). */
 /* The straight-line forms: fan around CP, or Delaunay over corners + CP +
  * barycentre; (e, triangles, flips) of one pixel or eight. */
+/* On the rectangle [ou, ou + W] x [v0c, v0c + lc] at height hc: the light, or
+ * with LB_CUB_RECT_CLIP what the horizon leaves of it (lb_cub_rect_clip). */
 #if defined(LB_CUB_RECT_DEL)
-#define LB_CUB_RECT_CALL(s, nt, nf)                                                                           \
-    lb_cub_rect_del##s(lum, ou, ov, on, P[12], P[13], au, av, an, LB_CUB_WEIGHT, LB_CUB_NORMALIZE, plane_eps,  \
-                       corner_inset, dyn_weight, &nt, &nf)
+#define LB_CUB_RECT_CALL(s, nt, nf)                                                                             \
+    lb_cub_rect_del##s(lum, ou, v0c, hc, P[12], lc, R(1) / (P[12] * P[13]), au, av, an, LB_CUB_WEIGHT,          \
+                       LB_CUB_NORMALIZE, plane_eps, corner_inset, dyn_weight, &nt, &nf)
 #elif defined(LB_CUB_RECT_FAN)
-#define LB_CUB_RECT_CALL(s, nt, nf)                                                                           \
-    lb_cub_rect_fan##s(lum, ou, ov, on, P[12], P[13], au, av, an, LB_CUB_WEIGHT,                                \
+#define LB_CUB_RECT_CALL(s, nt, nf)                                                                             \
+    lb_cub_rect_fan##s(lum, ou, v0c, hc, P[12], lc, R(1) / (P[12] * P[13]), au, av, an, LB_CUB_WEIGHT,          \
                        (LB_CUB_DYNAMIC & LB_CUB_CP) != 0, LB_CUB_NORMALIZE, plane_eps, corner_inset, dyn_weight, \
-                       &nt);                                                                                   \
+                       &nt);                                                                                     \
     nf = 0
+#endif
+#ifdef LB_CUB_RECT_CLIP
+#define LB_CUB_RECT_CLIP_CALL(s) lb_cub_rect_clip##s(ov, hc, P[13], av, an, horizon_eps, &v0c, &lc)
+#else
+#define LB_CUB_RECT_CLIP_CALL(s) (void)0
 #endif
 
 #if defined(LB_CUB_RECT_CALL) && defined(LB_LANES) && LB_LANES == 8 && !defined(LB_DOUBLE)
@@ -79,6 +91,9 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
         return;
     int8 nt, nf;
+    float8 hc = lb_cub_rect_shift_x8(on, lb_plane_distance_x8(P, (float8)(0, 1, 2, 3, 4, 5, 6, 7) + (float)col0, row), plane_eps);
+    float8 v0c = ov, lc = (float8)(P[13]);
+    LB_CUB_RECT_CLIP_CALL(_x8);
     float8 e = LB_CUB_RECT_CALL(_x8, nt, nf);
 #ifdef LB_CUB_BLEND
     float8 t;
@@ -99,10 +114,12 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     }
 }
 #elif defined(LB_CUB_RECT_CALL)
-/* The scene needs no clip, and the method is a fan around CP (or corner 0)
- * or Delaunay over corners + CP + barycentre: common/cubature_lanes.inc, one
- * pixel per work-item (GPUs, double, the exact lookup). horizon_eps is
- * unused: the host chose this variant because it clips nothing. */
+/* The scene needs no clip (or, with LB_CUB_RECT_CLIP, one along the u
+ * edges), and the method is a fan around CP (or corner 0) or Delaunay over
+ * corners + CP + barycentre: common/cubature_lanes.inc, one pixel per
+ * work-item (GPUs, double, the exact lookup). Without LB_CUB_RECT_CLIP
+ * horizon_eps is unused: the host chose that variant because it clips
+ * nothing. */
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
                      __global int* stats, int want_stats, real plane_eps, real horizon_eps,
                      real corner_inset, real dyn_weight, real blend_dist)
@@ -112,6 +129,9 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     if (!lb_work_item_pixels(P, row0, &col, &row, &res, &ou, &ov, &on, &au, &av, &an))
         return;
     int nt, nf;
+    real hc = lb_cub_rect_shift(on, lb_plane_distance(P, (real)col, row), plane_eps);
+    real v0c = ov, lc = P[13];
+    LB_CUB_RECT_CLIP_CALL();
     real e = LB_CUB_RECT_CALL(, nt, nf);
 #ifdef LB_CUB_BLEND
     real t;

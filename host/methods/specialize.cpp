@@ -16,6 +16,7 @@ std::string Specialization::defines() const
     if (noBack) d += " -DLB_NO_BACK";
     if (rectFan) d += " -DLB_CUB_RECT_FAN";
     if (rectDel) d += " -DLB_CUB_RECT_DEL";
+    if ((rectFan || rectDel) && rectClip) d += " -DLB_CUB_RECT_CLIP";
     if ((rectFan || rectDel) && blend) d += " -DLB_CUB_BLEND";
     return d;
 }
@@ -23,7 +24,7 @@ std::string Specialization::defines() const
 nlohmann::json Specialization::json() const
 {
     return {{"lut", lut}, {"lut1d", lut && lut1d}, {"no_horizon", noHorizon}, {"no_back", noBack}, {"rect_fan", rectFan},
-            {"rect_del", rectDel}, {"blend", blend}};
+            {"rect_del", rectDel}, {"rect_clip", (rectFan || rectDel) && rectClip}, {"blend", blend}};
 }
 
 bool lightAboveEveryHorizon(const Scene& scene, double margin)
@@ -36,6 +37,16 @@ bool lightAboveEveryHorizon(const Scene& scene, double margin)
         for (int r : {0, n - 1})
             for (int c : {0, n - 1}) lo = std::min(lo, glm::dot(nx, p - scene.pixel(r, c)));
     return lo > margin;
+}
+
+bool horizonAlongU(const Scene& scene)
+{
+    // Exactly as the kernels compute it (lb_receiver_normal_local), in float
+    // and in double: the straight-line clip needs au == 0 exactly.
+    auto P = scene.params();
+    double au = P[16] * P[3] + P[17] * P[4] + P[18] * P[5];
+    float auf = float(P[16]) * float(P[3]) + float(P[17]) * float(P[4]) + float(P[18]) * float(P[5]);
+    return au == 0 && auf == 0;
 }
 
 namespace {
@@ -68,8 +79,16 @@ Specialization analyseCubature(const Scene& scene, const photometry::Table& tabl
     bool fanCp = (o.triangulation == 0 && (o.dynamic == 1 || o.dynamic == 0)) || (o.triangulation == 1 && o.dynamic == 1);
     bool delCpBary = o.triangulation == 1 && o.dynamic == (1 | 8);  // LB_CUB_CP | LB_CUB_BARY
     bool unclipped = lightAboveEveryHorizon(scene, o.horizonEps + o.planeEps);
-    s.rectFan = fanCp && unclipped;
-    s.rectDel = delCpBary && unclipped;
+    // Otherwise the straight-line forms run on what the horizon leaves where
+    // it cuts along the light's u edges (LB_CUB_RECT_CLIP). dynamic=none fans
+    // from the clipped polygon's first vertex, which the clip decides: general.
+    // Not for normalize=formfactor: the clipped rectangle's Lambert edge sum
+    // lost float accuracy at grazing receivers (2.2e-4 against the general
+    // kernel's own 5.4e-5 at h = -0.2, R = 5pi/8).
+    bool clipAlongU = !unclipped && horizonAlongU(scene) && (fanCp || delCpBary) && o.dynamic != 0 && !o.formfactor;
+    s.rectFan = fanCp && (unclipped || clipAlongU);
+    s.rectDel = delCpBary && (unclipped || clipAlongU);
+    s.rectClip = clipAlongU;
     s.blend = !noBlend;
     return s;
 }

@@ -57,6 +57,17 @@
 //              most of them within a few eps of an edge or corner, and
 //              tests/methods/test_specialize.cpp holds the images and flip
 //              counts to the general kernel.
+//   rectClip   (cubature) rectFan and rectDel also where the horizon cuts the
+//              light (h < 0, or horizon_eps + plane_eps above the lowest
+//              corner), if it cuts along the light's u edges: the receiver
+//              normal is perpendicular to u (au = 0 exactly, as in every
+//              normalized scene), so n_x . p does not depend on u and what is
+//              left is again a rectangle, on which the same straight-line
+//              code runs (LB_CUB_RECT_CLIP, lb_cub_rect_clip of
+//              common/cubature_lanes.inc). Not for dynamic=none (its fan
+//              starts at the clipped polygon's first vertex), nor for
+//              normalize=formfactor (the clipped Lambert edge sum in float
+//              measured 4x the general kernel's error at grazing receivers).
 //   rectDel    (cubature) as rectFan, for triangulation=delaunay with
 //              dynamic=cp+barycentre: LB_CUB_RECT_DEL, lb_cub_rect_del of
 //              common/cubature_lanes.inc (the two edges that can flip decided
@@ -81,6 +92,7 @@ struct Specialization {
     bool noBack = false;     // LB_NO_BACK
     bool rectFan = false;    // LB_CUB_RECT_FAN (cubature only)
     bool rectDel = false;    // LB_CUB_RECT_DEL (cubature only)
+    bool rectClip = false;   // LB_CUB_RECT_CLIP: with rectFan / rectDel, the horizon cuts along u
     bool blend = false;      // LB_CUB_BLEND: some pixel blends (with rectFan / rectDel)
 
     std::string defines() const;  // " -DLB_LUT ..." (leading space when not empty)
@@ -99,6 +111,11 @@ Specialization analyseCubature(const Scene& scene, const photometry::Table& tabl
 // elsewhere) where a straight-line form (rectFan, rectDel) runs in float with
 // the LUT, else 1.
 int cubatureLanes(const Specialization& s, const CubatureOptions& o, const std::string& deviceType, bool dbl);
+
+// Whether the receiver normal is perpendicular to the light's u axis, exactly
+// in float and double (every normalized scene): the horizon then cuts the
+// light along its u edges (rule rectClip).
+bool horizonAlongU(const Scene& scene);
 
 // Whether every light corner is more than `margin` (m) above the receiver of
 // every pixel.

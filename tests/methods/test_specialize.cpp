@@ -155,7 +155,7 @@ TEST(Specialize, CubatureRectFanRule)
     EXPECT_TRUE(fan(s, "triangulation=delaunay"));
     EXPECT_TRUE(fan(s, "triangulation=delaunay,dynamic=cp"));
     EXPECT_FALSE(fan(s, "triangulation=delaunay,dynamic=none"));
-    EXPECT_FALSE(fan(scene(-0.1, M_PI / 2), "triangulation=delaunay"));
+    EXPECT_FALSE(fan(scene(-0.1, M_PI / 2), "triangulation=delaunay,dynamic=np"));
     EXPECT_TRUE(fan(s, "normalize=formfactor"));
     EXPECT_FALSE(fan(s, "dynamic=np"));
     EXPECT_FALSE(fan(s, "specialize=none"));
@@ -169,10 +169,25 @@ TEST(Specialize, CubatureRectFanRule)
     // at horizon_eps + plane_eps decides
     Scene v = scene(0.1, M_PI / 2);
     EXPECT_TRUE(fan(v, "plane_eps=0.001,horizon_eps=0.05"));
-    EXPECT_FALSE(fan(v, "plane_eps=0.001,horizon_eps=0.1"));
-    EXPECT_FALSE(fan(v, "plane_eps=0.1"));
-    EXPECT_FALSE(fan(scene(0.0, M_PI / 2), ""));  // touching
-    EXPECT_FALSE(fan(scene(-0.1, M_PI / 2), ""));  // through the receiver plane
+    // Clipped: the straight-line forms on what the horizon leaves (rule
+    // rectClip; the normalized scene's receiver normal is perpendicular to u)
+    auto clip = [&](const Scene& sc, const std::string& kv) {
+        auto a = analyseCubature(sc, t, opts(kv));
+        return (a.rectFan || a.rectDel) && a.rectClip;
+    };
+    EXPECT_TRUE(horizonAlongU(v));
+    EXPECT_TRUE(fan(v, "plane_eps=0.001,horizon_eps=0.1"));
+    EXPECT_TRUE(clip(v, "plane_eps=0.001,horizon_eps=0.1"));
+    EXPECT_FALSE(clip(v, "plane_eps=0.001,horizon_eps=0.05"));
+    EXPECT_TRUE(clip(v, "plane_eps=0.1"));
+    EXPECT_FALSE(fan(v, "plane_eps=0.1,normalize=formfactor"));  // formfactor: general where clipped
+    EXPECT_TRUE(clip(scene(0.0, M_PI / 2), ""));   // touching
+    EXPECT_TRUE(clip(scene(-0.1, M_PI / 2), ""));  // through the receiver plane
+    EXPECT_EQ(analyseCubature(scene(-0.1, M_PI / 2), t, opts("")).defines(),
+              " -DLB_LUT -DLB_CUB_RECT_FAN -DLB_CUB_RECT_CLIP");
+    EXPECT_FALSE(fan(scene(-0.1, M_PI / 2), "dynamic=none"));  // fans from the clip's first vertex
+    EXPECT_FALSE(fan(scene(-0.1, M_PI / 2), "specialize=none"));
+    EXPECT_FALSE(clip(s, ""));
     // lanes: 8 on CPU devices in float with the LUT, else 1
     auto a = analyseCubature(s, t, opts(""));
     EXPECT_EQ(cubatureLanes(a, opts(""), "CPU", false), 8);
@@ -193,7 +208,7 @@ TEST(Specialize, CubatureRectFanRule)
     EXPECT_FALSE(del(s, "triangulation=delaunay,dynamic=cp+np+mrp+barycentre"));
     EXPECT_FALSE(del(s, cb + ",specialize=none"));
     EXPECT_TRUE(del(s, cb + ",blend_dist=3"));
-    EXPECT_FALSE(del(v, cb + ",horizon_eps=0.1"));
+    EXPECT_TRUE(clip(v, cb + ",horizon_eps=0.1"));
     EXPECT_EQ(cubatureLanes(analyseCubature(s, t, opts(cb)), opts(cb), "CPU", false), 8);
 }
 
@@ -446,6 +461,67 @@ TEST(Specialize, CubatureRectDelaunayEqualsGeneral)
             if (HasFailure()) return;
         }
     std::cout << "Delaunay cp + barycentre, straight-line against the general kernel: float " << worst
+              << " (general float kernel against its double result: " << worstGeneral << "), double " << worstD
+              << "\n";
+}
+
+} // namespace
+} // namespace lb::methods
+
+namespace lb::methods {
+namespace {
+
+// The straight-line forms where the horizon cuts the light (rule rectClip),
+// against the general kernel's clip: the light through the receiver plane
+// (h < 0, three rotations), touching it, cut by horizon_eps, and a
+// horizontal light wholly behind the receiver plane (av = 0: all or
+// nothing). Bounds as the unclipped forms above (double 1e-12; float 1e-6 of
+// the double general kernel or twice the general float kernel's own error),
+// and the triangle and flip counts of every pixel equal.
+TEST(Specialize, CubatureRectClipEqualsGeneral)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    auto asym = asymmetric();
+    Scene below = scene(-1.0, M_PI, 45);
+    std::vector<std::pair<Scene, std::string>> cases = {
+        {scene(-0.2, 5 * M_PI / 8, 45), ""}, {scene(-0.3, M_PI / 2, 45), ""}, {scene(-0.5, 3 * M_PI / 4, 45), ""},
+        {scene(0.0, M_PI / 2, 45), ""}, {scene(0.1, M_PI / 2, 45), "horizon_eps=0.1"}};
+    const std::vector<std::string> specs = {"cubature",
+                                            "cubature:weighting=sample",
+                                            "cubature:weighting=dotout,corner_inset=0.3,dyn_weight=2",
+                                            "cubature:blend_dist=1.5",
+                                            "cubature:triangulation=delaunay",
+                                            "cubature:triangulation=delaunay,dynamic=cp+barycentre",
+                                            "cubature:triangulation=delaunay,dynamic=cp+barycentre,weighting=dotout"};
+    Precision ref = rt->fp64() ? Precision::Double : Precision::Float;
+    double rel = rt->fp64() ? 1e-6 : 2e-5;
+    double worst = 0, worstD = 0, worstGeneral = 0;
+    for (const auto& [s, kv] : cases)
+        for (const auto& base : specs) {
+            std::string spec = kv.empty() ? base : base + (base.find(':') == std::string::npos ? ":" : ",") + kv;
+            auto a = analyseCubature(s, asym, CubatureOptions::parse(parseSpec(spec).values));
+            EXPECT_TRUE(a.rectClip) << spec << " " << s.describe();
+            bool ff = spec.find("formfactor") != std::string::npos;
+            double g = rt->fp64() ? generalFloatError(*rt, asym, s, spec) : 0;
+            worstGeneral = std::max(worstGeneral, g);
+            if (rt->fp64())
+                worstD = std::max(worstD, cubatureDiff(*rt, asym, s, spec, Precision::Double, "1", Precision::Double,
+                                                       1e-12));
+            for (const char* lanes : {"1", "8"})
+                worst = std::max(worst, cubatureDiff(*rt, asym, s, spec, Precision::Float, lanes, ref,
+                                                     std::max(ff ? 1e-4 : rel, 2 * g)));
+            if (HasFailure()) return;
+        }
+    // wholly behind: every pixel exactly 0 and no triangle, as the general kernel
+    RenderOptions opt;
+    opt.reps = 1;
+    for (const auto& spec : specs) {
+        EXPECT_TRUE(analyseCubature(below, asym, CubatureOptions::parse(parseSpec(spec).values)).rectClip) << spec;
+        auto sp = render(*rt, asym, below, parseSpec(spec), Precision::Float, opt);
+        for (double e : sp.image.px) EXPECT_EQ(e, 0.0) << spec;
+        EXPECT_EQ(sp.stats["triangles_per_pixel"], 0.0) << spec;
+    }
+    std::cout << "clipped straight-line forms against the general kernel: float " << worst
               << " (general float kernel against its double result: " << worstGeneral << "), double " << worstD
               << "\n";
 }
