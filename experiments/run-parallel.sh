@@ -27,5 +27,7 @@ seq 1 "$n" | parallel --will-cite --halt now,fail=1 -j "$jobs" -q \
     "$bin" run "$exp" --out "$out/shard-{}-of-$n" --shard "{}/$n" --no-report "$@"
 shards=()
 for k in $(seq 1 "$n"); do shards+=("$out/shard-$k-of-$n"); done
-"$bin" merge --out "$out" "${shards[@]}"
+# --force: OUT holds this experiment's own shards, so a rerun (which resumes
+# them) merges again over the earlier merge.
+"$bin" merge --force --out "$out" "${shards[@]}"
 echo "report: $out/report.md"

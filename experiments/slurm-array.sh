@@ -35,7 +35,8 @@ merge)
     out=$2 n=$3
     shards=()
     for k in $(seq 1 "$n"); do shards+=("$out/shard-$k-of-$n"); done
-    exec "$bin" merge --out "$out" "${shards[@]}"
+    # --force: OUT holds this experiment's own shards; a rerun merges again.
+    exec "$bin" merge --force --out "$out" "${shards[@]}"
     ;;
 *)
     echo "usage: sbatch --array=1-N $0 run EXP OUT [options] | sbatch $0 merge OUT N" >&2

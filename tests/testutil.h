@@ -2,6 +2,7 @@
 #pragma once
 
 #include "cl/runtime.h"
+#include "util/error.h"
 
 #include <gtest/gtest.h>
 
@@ -13,6 +14,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -91,5 +93,25 @@ inline CliResult runCli(const std::string& args)
     return r;
 }
 inline std::string binary() { return LB_BINARY; }
+
+// An empty directory <tmp>/lumibench-test-<name>-<pid> (removed first).
+inline std::filesystem::path freshDir(const std::string& name)
+{
+    auto d = std::filesystem::temp_directory_path() / ("lumibench-test-" + name + "-" + std::to_string(::getpid()));
+    std::filesystem::remove_all(d);
+    std::filesystem::create_directories(d);
+    return d;
+}
+
+// The message of the lb::InputError that f throws, or "(no error)".
+inline std::string inputErrorOf(const std::function<void()>& f)
+{
+    try {
+        f();
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
 
 } // namespace lb::test

@@ -1,5 +1,6 @@
 #include "cl/runtime.h"
 
+#include "util/digest.h"
 #include "util/error.h"
 
 #include <fmt/format.h>
@@ -10,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <set>
 #include <sstream>
 
 #ifndef LB_SOURCE_KERNEL_DIR
@@ -137,6 +139,34 @@ static std::string readFile(const fs::path& p)
     std::ostringstream s;
     s << f.rdbuf();
     return s.str();
+}
+
+std::string kernelSourceDigest(const std::string& file)
+{
+    util::Digest d;
+    std::set<fs::path> seen;
+    const fs::path root = fs::path(kernelDir());
+    std::function<void(const fs::path&)> visit = [&](const fs::path& p) {
+        fs::path c = p.lexically_normal();
+        if (!seen.insert(c).second) return;
+        const std::string src = readFile(c);
+        d.str(c.lexically_relative(root).generic_string());
+        d.str(src);
+        std::istringstream in(src);
+        std::string line;
+        while (std::getline(in, line)) {
+            auto h = line.find_first_not_of(" \t");
+            if (h == std::string::npos || line[h] != '#') continue;
+            auto inc = line.find("include", h);
+            auto q0 = line.find('"', h), q1 = q0 == std::string::npos ? q0 : line.find('"', q0 + 1);
+            if (inc == std::string::npos || q1 == std::string::npos || inc > q0) continue;
+            const std::string name = line.substr(q0 + 1, q1 - q0 - 1);
+            fs::path local = c.parent_path() / name;
+            visit(fs::exists(local) ? local : root / name);
+        }
+    };
+    visit(root / file);
+    return d.hex();
 }
 
 Timing summarize(std::vector<double> s)

@@ -14,6 +14,11 @@
 
 namespace lb::ocl {
 
+// Timed launches per measurement at most (--reps, "reps"): 1000 launches of
+// the slowest kernel at 512^2 (the naive MC, ~0.4 s) take 7 minutes already,
+// and the median of more adds nothing.
+constexpr int kMaxReps = 1000;
+
 // A readable name for an OpenCL error code ("CL_OUT_OF_RESOURCES (-5)").
 std::string errorString(cl_int code);
 
@@ -41,6 +46,13 @@ int chooseDevice(int requested = -1);
 
 // Directory of the .cl sources: $LUMIBENCH_KERNEL_DIR or the source tree's kernels/.
 std::string kernelDir();
+
+// Digest (util/digest.h, 16 hex digits) of kernels/<file> and of every file
+// it includes with #include "..." (transitively; resolved against the
+// including file's directory, then the kernel directory): what a kernel
+// computes, for keys of results and caches. Throws lb::Error naming a
+// missing source.
+std::string kernelSourceDigest(const std::string& file);
 
 // Robust statistics of repeated timings, in milliseconds.
 struct Timing {

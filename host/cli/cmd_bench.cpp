@@ -4,6 +4,7 @@
 
 #include "bench/bench.h"
 #include "methods/analytic.h"
+#include "util/check.h"
 #include "util/error.h"
 
 #include <fmt/format.h>
@@ -24,22 +25,24 @@ void addBenchCommand(CLI::App& app)
         bool quick = false, json = false;
     };
     auto o = std::make_shared<Opts>();
-    auto* cmd = app.add_subcommand("bench", "Benchmark the kernels against a naive MC kernel (issue 9)");
+    auto* cmd = app.add_subcommand("bench", "Benchmark the kernels against a naive MC kernel");
     cmd->add_option("--luminaire", o->luminaire, "IES or LDT file or short name")->capture_default_str();
-    cmd->add_option("--height", o->height, "Height h of the light (m)")->capture_default_str();
-    cmd->add_option("--rotation", o->rotation, "Rotation R (radians or e.g. 3pi/4)")->capture_default_str();
-    cmd->add_option("--res", o->res, "Image resolution N")->capture_default_str();
-    cmd->add_option("--reps", o->reps, "Timed launches after one warm-up (median)")->capture_default_str();
-    cmd->add_option("--samples", o->samples, "MC N of the samples/s comparison")->capture_default_str();
-    cmd->add_option("--rounds", o->rounds, "Alternating naive / fast rounds (median of each)")->capture_default_str();
+    cmd->add_option("--height", o->height, "Height h of the light (m, 0 .. 1e4)")->capture_default_str();
+    cmd->add_option("--rotation", o->rotation, "Rotation R (radians in 0 .. 2pi, or e.g. 3pi/4)")->capture_default_str();
+    cmd->add_option("--res", o->res, "Image resolution N (1 .. 16384)")->capture_default_str();
+    cmd->add_option("--reps", o->reps, "Timed launches after one warm-up (median; 1 .. 1000)")->capture_default_str();
+    cmd->add_option("--samples", o->samples, "MC N of the samples/s comparison (1 .. 2^20)")->capture_default_str();
+    cmd->add_option("--rounds", o->rounds, "Alternating naive / fast rounds (median of each; 1 .. 1000)")->capture_default_str();
     cmd->add_option("--local", o->local, "Work-group size WxH")->capture_default_str();
-    cmd->add_option("--device", o->device, "OpenCL device index (lumibench devices)");
+    cmd->add_option("--device", o->device, "OpenCL device index >= 0 (lumibench devices)");
     cmd->add_flag("--quick", o->quick, "Fewer methods and fit points (smoke tests)");
     cmd->add_flag("--json", o->json, "Print one JSON document to stdout");
-    cmd->callback([o] {
-        if (o->res < 1 || o->res > 16384) throw InputError(fmt::format("--res must be in [1, 16384], got {}", o->res));
-        if (o->reps < 1) throw InputError("--reps must be >= 1");
-        if (o->samples < 1) throw InputError("--samples must be >= 1");
+    cmd->callback([o, cmd] {
+        Scene scene = sceneFromFlags(o->height, o->rotation, "1x1", 5, o->res);
+        util::checkRange("--reps", o->reps, 1, ocl::kMaxReps);
+        util::checkRange("--samples", o->samples, 1, 1 << 20);  // the MC kernel's largest N
+        util::checkRange("--rounds", o->rounds, 1, ocl::kMaxReps);
+        const int device = deviceFlag(*cmd, o->device);
         bench::Options opt;
         auto x = o->local.find_first_of("xX");
         try {
@@ -54,15 +57,10 @@ void addBenchCommand(CLI::App& app)
         opt.res = o->res;
         opt.reps = o->reps;
         opt.samples = o->samples;
-        if (o->rounds < 1) throw InputError("--rounds must be >= 1");
         opt.rounds = o->rounds;
         opt.quick = o->quick;
-        Scene scene;
-        scene.height = o->height;
-        scene.rotation = parseAngle(o->rotation);
-        scene.res = o->res;
         photometry::Table table = methods::loadLuminaire(o->luminaire);
-        ocl::Runtime rt(o->device);
+        ocl::Runtime rt(device);
         auto doc = bench::run(rt, table, scene, opt);
         if (o->json)
             std::cout << doc.dump() << std::endl;

@@ -10,7 +10,9 @@
 #include "metrics/metrics.h"
 #include "metrics/png.h"
 #include "metrics/tonemap.h"
+#include "util/check.h"
 #include "util/error.h"
+#include "util/fileio.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -56,9 +58,9 @@ void runCompare(const CompareArgs& a)
         const double over = a.bound > 0 ? a.bound : (std::isfinite(m.ueb) ? m.ueb : 0.0);
         const double under = a.bound > 0 ? a.bound : (std::isfinite(m.leb) ? -m.leb : 0.0);
         const std::string fr = a.png + "_ref.png", ft = a.png + "_test.png", fe = a.png + "_err.png";
-        writePng(fr, tonemap::tonemapPicture(R, k));
-        writePng(ft, tonemap::tonemapPicture(A, k));
-        writePng(fe, tonemap::errorPicture(R, A, over, under));
+        util::writeFilesAtomic({{fr, encodePng(tonemap::tonemapPicture(R, k))},
+                                {ft, encodePng(tonemap::tonemapPicture(A, k))},
+                                {fe, encodePng(tonemap::errorPicture(R, A, over, under))}});
         j["k"] = k;
         j["bound_over"] = over;
         j["bound_under"] = under;
@@ -102,12 +104,15 @@ void addCompareCommand(CLI::App& app)
     cmd->add_option("--png", a->png, "Write PREFIX_ref.png, PREFIX_test.png (tone mapped) and PREFIX_err.png "
                                      "(orange too bright, blue too dark, white no error, magenta non-finite)");
     cmd->add_option("--k", a->k, "Tone-mapping scale: display L/(1+L) of L = k E (default 1/mean(reference); "
-                                 "give one k to every row of a figure)")
-        ->check(CLI::PositiveNumber);
+                                 "give one k to every row of a figure; positive and finite)");
     cmd->add_option("--bound", a->bound, "Error (lux) at which the error picture saturates on both sides "
-                                         "(default UEB for orange, |LEB| for blue)")
-        ->check(CLI::PositiveNumber);
-    cmd->callback([a] { runCompare(*a); });
+                                         "(default UEB for orange, |LEB| for blue; positive and finite)");
+    cmd->callback([a, cmd] {
+        // Any positive finite value; the bounds only keep nan, inf and 0 out.
+        if (cmd->count("--k")) util::checkRange("--k", a->k, 1e-300, 1e300);
+        if (cmd->count("--bound")) util::checkRange("--bound", a->bound, 1e-300, 1e300, "lux");
+        runCompare(*a);
+    });
 }
 
 } // namespace lb::cli

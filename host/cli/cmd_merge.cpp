@@ -5,10 +5,13 @@
 
 #include "experiments/report.h"
 #include "experiments/results.h"
+#include "util/error.h"
+#include "util/fileio.h"
 
 #include <fmt/format.h>
 
 #include <filesystem>
+#include <set>
 #include <iostream>
 
 namespace lb::cli {
@@ -18,21 +21,42 @@ void addMergeCommand(CLI::App& app)
     struct Opts {
         std::vector<std::string> inputs;
         std::string out;
-        bool noReport = false;
+        bool noReport = false, force = false;
     };
     auto o = std::make_shared<Opts>();
-    auto* cmd = app.add_subcommand("merge", "Merge result directories of shards into one");
+    auto* cmd = app.add_subcommand(
+        "merge", "Merge result directories of shards into one. Records are kept one per cell (method, parameters, "
+                 "luminaire, height, rotation, res, precision, device); of several, the one from the later input "
+                 "wins. An equal-time MCI partner's cell is its scene, device and matched method, so each method "
+                 "keeps one partner per scene: the later input's.");
     cmd->add_option("inputs", o->inputs, "Result directories (with results.json) or results files")->required();
     cmd->add_option("--out", o->out, "Output directory (DIR/results.json, report.md, plots/)")->required();
     cmd->add_flag("--no-report", o->noReport, "Do not write report.md and plots");
+    cmd->add_flag("--force", o->force, "Write into a non-empty --out directory (its results.json is replaced)");
     cmd->callback([o] {
         namespace fs = std::filesystem;
+        std::error_code ec;
+        if (fs::exists(o->out, ec) && !fs::is_directory(o->out, ec))
+            throw InputError(fmt::format("--out {}: expected a directory, got a file", o->out));
+        // Non-empty: anything in --out besides the inputs themselves (shard
+        // directories inside the output, as experiments/run-parallel.sh makes).
+        if (!o->force && fs::is_directory(o->out, ec)) {
+            std::set<fs::path> inputs;
+            for (const auto& in : o->inputs) inputs.insert(fs::weakly_canonical(in, ec));
+            for (const auto& entry : fs::directory_iterator(o->out, ec))
+                if (!inputs.count(fs::weakly_canonical(entry.path(), ec)))
+                    throw InputError(fmt::format(
+                        "--out {}: expected an empty or new directory, got one holding {} (merging would replace "
+                        "its results); give --force to write there anyway",
+                        o->out, entry.path().filename().string()));
+        }
         std::vector<std::string> files;
         for (const auto& in : o->inputs)
             files.push_back(fs::is_directory(in) ? (fs::path(in) / "results.json").string() : in);
         results::MergeStats st;
         auto doc = results::mergeResults(files, &st);
         fs::create_directories(o->out);
+        util::removeStaleTemporaries(o->out);
         results::save((fs::path(o->out) / "results.json").string(), doc);
         // Saved pictures come along, so the merged report can show them.
         for (const auto& in : o->inputs) {
@@ -41,7 +65,9 @@ void addMergeCommand(CLI::App& app)
                 fs::copy(img, fs::path(o->out) / "images",
                          fs::copy_options::recursive | fs::copy_options::overwrite_existing);
         }
-        std::cerr << fmt::format("merged {} files: {} records in, {} out ({} replaced) -> {}/results.json\n", st.files,
+        std::cerr << fmt::format("merged {} files: {} records in, {} out ({} replaced by a later one of the same "
+                                 "cell) -> {}/results.json\n",
+                                 st.files,
                                  st.records_in, st.records_out, st.replaced, o->out);
         if (!o->noReport) {
             std::string note = experiments::makePlots(o->out);

@@ -3,7 +3,9 @@
 
 #include "methods/analytic.h"
 #include "methods/render.h"
+#include "util/check.h"
 #include "util/error.h"
+#include "util/fileio.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -14,50 +16,27 @@
 
 namespace lb::cli {
 
-namespace {
-
-double parseNumber(const std::string& what, const std::string& s)
+Scene sceneFromFlags(double height, const std::string& rotation, const std::string& size, double extent, int res)
 {
-    char* end = nullptr;
-    double v = std::strtod(s.c_str(), &end);
-    if (s.empty() || *end || !std::isfinite(v))
-        throw InputError(fmt::format("{}: expected a number, got '{}'", what, s));
-    return v;
+    Scene scene;
+    scene.height = util::checkRange("--height", height, 0, kMaxSceneLength, "m");
+    scene.rotation = util::parseAngle("--rotation", rotation);
+    auto x = size.find_first_of("xX");
+    if (x == std::string::npos) throw InputError(fmt::format("--size: expected WxL in metres, got '{}'", size));
+    scene.width = util::checkRange("--size W", util::parseReal("--size W", size.substr(0, x)), 0, kMaxSceneLength, "m");
+    scene.length = util::checkRange("--size L", util::parseReal("--size L", size.substr(x + 1)), 0, kMaxSceneLength, "m");
+    if (!(scene.width > 0 && scene.length > 0)) throw InputError(fmt::format("--size: expected W, L > 0, got '{}'", size));
+    scene.extent = util::checkRange("--extent", extent, 0, kMaxSceneLength, "m");
+    if (!(scene.extent > 0)) throw InputError(fmt::format("--extent: expected a number > 0, got {}", extent));
+    scene.res = util::checkRange("--res", res, 1, kMaxRes);
+    return scene;
 }
 
-} // namespace
-
-// An angle in radians: a number, or an expression like pi, 3pi/4, 3*pi/4, pi/2, 0.75pi.
-double parseAngle(const std::string& text)
+int deviceFlag(const CLI::App& cmd, int device)
 {
-    std::string s;
-    for (char ch : text)
-        if (ch != ' ') s += ch;
-    auto bad = [&] {
-        throw InputError(fmt::format("--rotation: expected radians or an expression like 3pi/4, got '{}'", text));
-    };
-    if (s.empty()) bad();
-    std::string num = s, den;
-    if (auto sl = s.find('/'); sl != std::string::npos) {
-        num = s.substr(0, sl);
-        den = s.substr(sl + 1);
-        if (den.empty()) bad();
-    }
-    double v;
-    if (auto p = num.find("pi"); p != std::string::npos) {
-        if (p + 2 != num.size()) bad();
-        std::string coef = num.substr(0, p);
-        if (!coef.empty() && coef.back() == '*') coef.pop_back();
-        v = (coef.empty() ? 1.0 : parseNumber("--rotation", coef)) * 3.14159265358979323846;
-    } else {
-        v = parseNumber("--rotation", num);
-    }
-    if (!den.empty()) {
-        double d = parseNumber("--rotation", den);
-        if (d == 0) bad();
-        v /= d;
-    }
-    return v;
+    // -1 is "not given" (the default device); an explicit index must exist,
+    // which ocl::chooseDevice checks against the device list.
+    return cmd.count("--device") ? util::checkRange("--device", device, 0, 4095) : -1;
 }
 
 void addRenderCommand(CLI::App& app)
@@ -74,53 +53,47 @@ void addRenderCommand(CLI::App& app)
     cmd->add_option("--method", o->method,
                     "Method SPEC name:key=value,..., e.g. mc:n=24; methods: " + methods::registry().names())
         ->required();
-    cmd->add_option("--height", o->height, "Height h of the light (m)")->required();
-    cmd->add_option("--rotation", o->rotation, "Rotation R in radians (pi/2 .. pi), e.g. 2.356 or 3pi/4")->required();
-    cmd->add_option("--size", o->size, "Light size WxL in metres")->capture_default_str();
-    cmd->add_option("--res", o->res, "Image resolution N (N x N pixels)")->capture_default_str();
-    cmd->add_option("--extent", o->extent, "Side S of the imaged square (m)")->capture_default_str();
+    cmd->add_option("--height", o->height, "Height h of the light (m, 0 .. 1e4)")->required();
+    cmd->add_option("--rotation", o->rotation, "Rotation R in radians (0 .. 2pi; pi/2 .. pi in the papers), e.g. 2.356 "
+                                               "or 3pi/4")->required();
+    cmd->add_option("--size", o->size, "Light size WxL in metres (each > 0, <= 1e4)")->capture_default_str();
+    cmd->add_option("--res", o->res, "Image resolution N (N x N pixels, 1 .. 16384)")->capture_default_str();
+    cmd->add_option("--extent", o->extent, "Side S of the imaged square (m, > 0, <= 1e4)")->capture_default_str();
     cmd->add_option("--precision", o->precision, "float or double")->capture_default_str();
-    cmd->add_option("--device", o->device, "OpenCL device index (lumibench devices)");
+    cmd->add_option("--device", o->device, "OpenCL device index >= 0 (lumibench devices)");
     cmd->add_option("--out", o->out, "Output .exr (channel Y, lux); the reference also writes FILE.err.exr")
         ->required();
-    cmd->add_option("--reps", o->reps, "Timed runs after one warm-up")->capture_default_str();
+    cmd->add_option("--reps", o->reps, "Timed runs after one warm-up (1 .. 1000)")->capture_default_str();
     cmd->add_flag("--json", o->json, "Print one JSON object describing the result");
     cmd->add_flag("--no-cache", o->noCache, "Do not read or write the reference cache ($LUMIBENCH_CACHE)");
-    cmd->callback([o] {
+    cmd->callback([o, cmd] {
+        if (o->method.empty()) throw InputError("--method: expected a SPEC such as mc:n=24, got an empty value");
         methods::MethodSpec spec = methods::parseSpec(o->method);
         methods::Precision prec = methods::parsePrecision(o->precision);
-        Scene scene;
-        scene.height = o->height;
-        scene.rotation = parseAngle(o->rotation);
-        auto x = o->size.find_first_of("xX");
-        if (x == std::string::npos) throw InputError(fmt::format("--size: expected WxL, got '{}'", o->size));
-        scene.width = parseNumber("--size", o->size.substr(0, x));
-        scene.length = parseNumber("--size", o->size.substr(x + 1));
-        scene.extent = o->extent;
-        scene.res = o->res;
-        if (!(scene.width > 0 && scene.length > 0)) throw InputError("--size: W and L must be > 0");
-        if (!(scene.extent > 0)) throw InputError("--extent must be > 0");
-        if (!(scene.height >= 0)) throw InputError("--height must be >= 0");
-        if (o->res < 1 || o->res > 16384) throw InputError(fmt::format("--res must be in [1, 16384], got {}", o->res));
-        if (o->reps < 1) throw InputError("--reps must be >= 1");
+        Scene scene = sceneFromFlags(o->height, o->rotation, o->size, o->extent, o->res);
+        util::checkRange("--reps", o->reps, 1, ocl::kMaxReps);
+        const int device = deviceFlag(*cmd, o->device);
 
         photometry::Table table = methods::loadLuminaire(o->luminaire);
-        ocl::Runtime rt(o->device);
+        ocl::Runtime rt(device);
         methods::RenderOptions ropt;
         ropt.reps = o->reps;
         ropt.useCache = !o->noCache;
         ropt.progress = true;
         auto r = methods::render(rt, table, scene, spec, prec, ropt);
 
-        writeExr(o->out, r.image);
+        // The image and its side images (the reference's FILE.err.exr) as one
+        // group: if any cannot be written, none is left behind.
+        std::vector<std::pair<std::string, std::string>> files = {{o->out, encodeExr(r.image)}};
         std::string stem = o->out;
         if (stem.size() > 4 && stem.substr(stem.size() - 4) == ".exr") stem.resize(stem.size() - 4);
         nlohmann::json extra = nlohmann::json::object();
         for (auto& [name, img] : r.extraImages) {
             std::string p = stem + "." + name + ".exr";
-            writeExr(p, img);
+            files.emplace_back(p, encodeExr(img));
             extra[name] = p;
         }
+        util::writeFilesAtomic(files);
         if (r.nonfinite > 0) std::cerr << fmt::format("lumibench: warning: {} non-finite pixels\n", r.nonfinite);
         if (o->json) {
             nlohmann::json j = {

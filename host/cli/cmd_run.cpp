@@ -24,39 +24,38 @@ void addRunCommand(CLI::App& app)
     auto* cmd = app.add_subcommand("run", "Run an experiment file (experiments/*.json) into a results directory");
     cmd->add_option("experiment", o->exp, "Experiment file, e.g. experiments/smoke.json")->required();
     cmd->add_option("--out", o->out, "Results directory (results.json, report.md, plots/, images/); "
-                                     "a rerun resumes, skipping the cells already there")
+                                     "a rerun resumes: it skips the cells already there and recomputes those "
+                                     "whose inputs changed (scene, method, reference, luminaire file content, "
+                                     "kernel sources, reps, time_res)")
         ->required();
     cmd->add_option("--luminaires", o->luminaires, "Use every .ldt/.ies file in this directory instead of the "
                                                    "experiment's list");
     cmd->add_option("--shard", o->shard, "Run shard K of N: the scenes with index % N == K-1")->capture_default_str();
-    cmd->add_option("--res", o->res, "Override the experiment's resolution");
-    cmd->add_option("--reps", o->reps, "Override the experiment's timed runs per cell");
+    cmd->add_option("--res", o->res, "Override the experiment's resolution (1 .. 16384)");
+    cmd->add_option("--reps", o->reps, "Override the experiment's timed runs per cell (5 .. 1000)");
     cmd->add_option("--time-res", o->timeRes,
                     "Override the experiment's timing resolution: every method is timed at N x N pixels "
-                    "(default 512, DESIGN 6), whatever the error image's --res");
-    cmd->add_option("--device", o->device, "OpenCL device index (lumibench devices)");
+                    "(default 512, DESIGN 6; 0 .. 16384, 0 = at --res), whatever the error image's --res");
+    cmd->add_option("--device", o->device, "OpenCL device index >= 0 (lumibench devices)");
     cmd->add_flag("--no-report", o->noReport, "Do not write report.md and plots (e.g. for shards)");
     cmd->add_flag("--quiet", o->quiet, "No progress lines on stderr");
-    cmd->callback([o] {
-        experiments::Overrides ov;
+    cmd->callback([o, cmd] {
+        experiments::Overrides ov;  // range-checked by loadExperiment like the keys they replace
         ov.luminaireDir = o->luminaires;
-        ov.res = o->res;
-        ov.reps = o->reps;
-        ov.timeRes = o->timeRes;
-        if (o->timeRes < 0 || o->timeRes > 16384)
-            throw InputError(fmt::format("--time-res must be in [1, 16384], got {}", o->timeRes));
-        if (o->res < 0 || o->res > 16384) throw InputError(fmt::format("--res must be in [1, 16384], got {}", o->res));
-        if (o->reps < 0) throw InputError("--reps must be >= 1");
+        if (cmd->count("--res")) ov.res = o->res;
+        if (cmd->count("--reps")) ov.reps = o->reps;
+        if (cmd->count("--time-res")) ov.timeRes = o->timeRes;
         experiments::RunOptions ro;
         experiments::parseShard(o->shard, ro.shardK, ro.shardN);
         auto e = experiments::loadExperiment(o->exp, ov);
         ro.outDir = o->out;
-        ro.device = o->device;
+        ro.device = deviceFlag(*cmd, o->device);
         ro.progress = !o->quiet;
         auto s = experiments::run(e, ro);
-        std::cerr << fmt::format("[{}] shard {}/{}: {} scenes, {} cells ({} computed, {} already done), "
-                                 "{} equal-time partners off, {:.1f} s -> {}/results.json\n",
-                                 e.name, ro.shardK, ro.shardN, s.scenes, s.cells, s.computed, s.skipped,
+        std::cerr << fmt::format("[{}] shard {}/{}: {} scenes, {} cells ({} computed, {} of them recomputed because "
+                                 "their inputs changed, {} already done), {} equal-time partners off, {:.1f} s -> "
+                                 "{}/results.json\n",
+                                 e.name, ro.shardK, ro.shardN, s.scenes, s.cells, s.computed, s.stale, s.skipped,
                                  s.equalTimeOff, s.seconds, o->out);
         if (!o->noReport) {
             std::string note = experiments::makePlots(o->out);

@@ -5,6 +5,7 @@
 #include "cli/commands.h"
 
 #include "stability/stability.h"
+#include "util/check.h"
 #include "util/error.h"
 
 #include <fmt/format.h>
@@ -30,12 +31,11 @@ void addStabilityCommand(CLI::App& app)
     cmd->add_option("--case", o->run.cases, "Only these cases (repeatable)");
     cmd->add_option("--method", o->run.methods, "Only these method families (repeatable)");
     cmd->add_option("--out", o->out, "Write DIR/stability.json, DIR/report.md and DIR/png/ (worst error images)");
-    cmd->add_option("--device", o->device, "OpenCL device index (lumibench devices)");
+    cmd->add_option("--device", o->device, "OpenCL device index >= 0 (lumibench devices)");
     cmd->add_flag("--json", o->json, "Print the whole result as one JSON object");
-    cmd->callback([o] {
-        if (o->run.res < 3 || o->run.res > 4096)
-            throw InputError(fmt::format("--res must be in [3, 4096], got {}", o->run.res));
-        ocl::Runtime rt(o->device);
+    cmd->callback([o, cmd] {
+        util::checkRange("--res", o->run.res, 3, 4096);
+        ocl::Runtime rt(deviceFlag(*cmd, o->device));
         o->run.progress = !o->json;
         auto results = stability::run(rt, o->run);
         if (!o->out.empty()) stability::writeReport(o->out, results, rt, o->run);

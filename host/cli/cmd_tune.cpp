@@ -2,6 +2,7 @@
 // parameters against the NMSE over the experiment's training scenes (host/tune).
 #include "cli/commands.h"
 #include "tune/tune.h"
+#include "util/check.h"
 
 #include <fmt/format.h>
 
@@ -22,18 +23,19 @@ void addTuneCommand(CLI::App& app)
     auto* cmd = app.add_subcommand("tune", "Tune epsilons and sample placement with nlopt against NMSE");
     cmd->add_option("experiment", o->exp, "Tune experiment file, e.g. experiments/tune-smoke.json")->required();
     cmd->add_option("--out", o->out, "Output directory (tune.json, tune.png)")->required();
-    cmd->add_option("--maxeval", o->maxeval, "Override the experiment's evaluation budget");
-    cmd->add_option("--maxtime", o->maxtime, "Override the experiment's time budget (seconds, 0 = none)");
-    cmd->add_option("--device", o->device, "OpenCL device index (lumibench devices)");
+    cmd->add_option("--maxeval", o->maxeval, "Override the experiment's evaluation budget (1 .. 1e6)");
+    cmd->add_option("--maxtime", o->maxtime, "Override the experiment's time budget (seconds, 0 .. 1e7, 0 = none)");
+    cmd->add_option("--device", o->device, "OpenCL device index >= 0 (lumibench devices)");
     cmd->add_flag("--no-plot", o->noPlot, "Do not draw tune.png");
     cmd->add_flag("--quiet", o->quiet, "No progress lines on stderr");
-    cmd->callback([o] {
+    cmd->callback([o, cmd] {
         tune::TuneExperiment e = tune::loadTuneExperiment(o->exp);
-        if (o->maxeval > 0) e.maxeval = o->maxeval;
-        if (o->maxtime >= 0) e.maxtime = o->maxtime;
+        // The same bounds as the tune file's maxeval and maxtime keys.
+        if (cmd->count("--maxeval")) e.maxeval = util::checkRange("--maxeval", o->maxeval, 1, 1000000);
+        if (cmd->count("--maxtime")) e.maxtime = util::checkRange("--maxtime", o->maxtime, 0.0, 1e7, "s");
         tune::TuneOptions t;
         t.outDir = o->out;
-        t.device = o->device;
+        t.device = deviceFlag(*cmd, o->device);
         t.quiet = o->quiet;
         t.plot = !o->noPlot;
         auto doc = tune::runTune(e, t);

@@ -2,6 +2,8 @@
 // file per command (cmd_<name>.cpp), so commands can grow independently.
 #pragma once
 
+#include "scene/scene.h"
+
 #include <CLI/CLI.hpp>
 
 #include <string>
@@ -22,8 +24,12 @@ void addBenchCommand(CLI::App& app);
 // For commands whose issue has not landed: a clear message and exit code 3.
 [[noreturn]] void notImplemented(const std::string& what);
 
-// An angle in radians from a number or an expression like pi, 3pi/4, 3*pi/4,
-// 0.75pi (cmd_render.cpp); InputError otherwise.
-double parseAngle(const std::string& text);
+// The normalized scene from the flags render and bench share, each
+// range-checked with a message naming the flag (limits in scene/scene.h;
+// cmd_render.cpp).
+Scene sceneFromFlags(double height, const std::string& rotation, const std::string& size, double extent, int res);
+
+// The --device flag: -1 (the default device) when not given, else an index >= 0.
+int deviceFlag(const CLI::App& cmd, int device);
 
 } // namespace lb::cli

@@ -33,6 +33,16 @@ int main(int argc, char** argv)
     lb::cli::addStabilityCommand(app);
     lb::cli::addBenchCommand(app);
     try {
+        // CLI11 reads "--opt=" as "--opt" and takes the next argument as its
+        // value ("--method= --out x.exr" complained about --out): an empty
+        // value after '=' is refused here, naming the option.
+        for (int i = 1; i < argc; ++i) {
+            std::string a = argv[i];
+            if (a == "--") break;
+            if (a.size() > 3 && a.rfind("--", 0) == 0 && a.back() == '=' && a.find('=') == a.size() - 1)
+                throw lb::InputError(fmt::format("{}: expected a value after '=', got an empty value",
+                                                 a.substr(0, a.size() - 1)));
+        }
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         int rc = app.exit(e);

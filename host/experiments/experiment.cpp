@@ -1,8 +1,10 @@
 #include "experiments/experiment.h"
 
-#include "cli/commands.h"
+#include "cl/runtime.h"
 #include "methods/spec.h"
+#include "util/check.h"
 #include "util/error.h"
+#include "util/fileio.h"
 
 #include <fmt/format.h>
 
@@ -24,9 +26,10 @@ struct Reader {
     std::string path;
     const json& j;
 
+    std::string name(const std::string& key) const { return fmt::format("{}: key \"{}\"", path, key); }
     [[noreturn]] void fail(const std::string& key, const std::string& what) const
     {
-        throw InputError(fmt::format("{}: key \"{}\": {}", path, key, what));
+        throw InputError(fmt::format("{}: {}", name(key), what));
     }
     bool has(const std::string& key) const { return j.contains(key); }
     const json& at(const std::string& key) const
@@ -38,17 +41,13 @@ struct Reader {
     {
         const json& v = at(key);
         if (!v.is_number()) fail(key, fmt::format("expected a number, found {}", v.dump()));
-        double d = v.get<double>();
-        if (!(d >= lo && d <= hi)) fail(key, fmt::format("expected a number in [{}, {}], found {}", lo, hi, d));
-        return d;
+        return util::checkRange(name(key), v.get<double>(), lo, hi);
     }
     long integer(const std::string& key, long lo, long hi) const
     {
         const json& v = at(key);
         if (!v.is_number_integer()) fail(key, fmt::format("expected an integer, found {}", v.dump()));
-        long d = v.get<long>();
-        if (d < lo || d > hi) fail(key, fmt::format("expected an integer in [{}, {}], found {}", lo, hi, d));
-        return d;
+        return util::checkRange(name(key), v.get<long>(), lo, hi);
     }
     std::string string(const std::string& key) const
     {
@@ -56,18 +55,17 @@ struct Reader {
         if (!v.is_string()) fail(key, fmt::format("expected a string, found {}", v.dump()));
         return v.get<std::string>();
     }
-    // A list of strings (a single string is a list of one).
+    // A list of strings. A bare string is an error (a typo for a list of one
+    // would otherwise pass silently), except `luminaires: "*"`, read by the caller.
     std::vector<std::string> strings(const std::string& key, bool nonEmpty = true) const
     {
         const json& v = at(key);
         std::vector<std::string> out;
-        if (v.is_string()) out.push_back(v.get<std::string>());
-        else if (v.is_array()) {
-            for (const auto& x : v) {
-                if (!x.is_string()) fail(key, fmt::format("expected a list of strings, found element {}", x.dump()));
-                out.push_back(x.get<std::string>());
-            }
-        } else fail(key, fmt::format("expected a list of strings, found {}", v.dump()));
+        if (!v.is_array()) fail(key, fmt::format("expected a list of strings like [\"a\", \"b\"], found {}", v.dump()));
+        for (const auto& x : v) {
+            if (!x.is_string()) fail(key, fmt::format("expected a list of strings, found element {}", x.dump()));
+            out.push_back(x.get<std::string>());
+        }
         if (nonEmpty && out.empty()) fail(key, "expected a non-empty list");
         return out;
     }
@@ -130,11 +128,11 @@ std::string resolveDir(const std::string& dir)
 
 Experiment loadExperiment(const std::string& path, const Overrides& ov)
 {
-    std::ifstream in(path);
-    if (!in) throw InputError(fmt::format("{}: cannot open the experiment file", path));
+    // An experiment file is a few kB; 16 MiB leaves room for generated ones.
+    const std::string fileText = util::readFile(path, "an experiment file (JSON)", 16u << 20);
     json j;
     try {
-        j = json::parse(in);
+        j = json::parse(fileText);
     } catch (const json::parse_error& e) {
         throw InputError(fmt::format("{}: not valid JSON: {}", path, e.what()));
     }
@@ -158,7 +156,8 @@ Experiment loadExperiment(const std::string& path, const Overrides& ov)
         e.luminaireDir = ov.luminaireDir;
         e.luminaires = luminaireFiles(ov.luminaireDir, "--luminaires");
     } else {
-        auto names = r.strings("luminaires");
+        auto names = j.contains("luminaires") && j["luminaires"] == "*" ? std::vector<std::string>{"*"}
+                                                                          : r.strings("luminaires");
         if (names.size() == 1 && names[0] == "*") {
             e.luminaires = luminaireFiles(e.luminaireDir, path + ": key \"luminaires\"");
         } else {
@@ -173,20 +172,15 @@ Experiment loadExperiment(const std::string& path, const Overrides& ov)
     const json& hs = r.at("heights");
     if (!hs.is_array() || hs.empty()) r.fail("heights", "expected a non-empty list of numbers");
     for (const auto& h : hs) {
-        if (!h.is_number() || !(h.get<double>() >= 0) || !std::isfinite(h.get<double>()))
-            r.fail("heights", fmt::format("expected numbers >= 0, found element {}", h.dump()));
-        e.heights.push_back(h.get<double>());
+        if (!h.is_number()) r.fail("heights", fmt::format("expected numbers, found element {}", h.dump()));
+        e.heights.push_back(util::checkRange(r.name("heights"), h.get<double>(), 0, kMaxSceneLength, "m"));
     }
     const json& rs = r.at("rotations");
     if (!rs.is_array() || rs.empty()) r.fail("rotations", "expected a non-empty list");
     for (const auto& x : rs) {
         std::string text = x.is_string() ? x.get<std::string>() : x.dump();
         if (!x.is_string() && !x.is_number()) r.fail("rotations", fmt::format("expected radians or an expression like 3pi/4, found {}", x.dump()));
-        try {
-            e.rotations.push_back(cli::parseAngle(text));
-        } catch (const InputError&) {
-            r.fail("rotations", fmt::format("expected radians or an expression like 3pi/4, found '{}'", text));
-        }
+        e.rotations.push_back(util::parseAngle(r.name("rotations"), text));
         e.rotationText.push_back(text);
     }
 
@@ -217,8 +211,8 @@ Experiment loadExperiment(const std::string& path, const Overrides& ov)
     if (!e.equalTime.empty() && e.mciCurve.empty() && e.equalTimeFit.size() < 2)
         r.fail("equal_time_fit", "expected at least two sample counts to fit t(N)");
 
-    if (r.has("res")) e.res = static_cast<int>(r.integer("res", 1, 16384));
-    if (ov.res > 0) e.res = ov.res;
+    if (r.has("res")) e.res = static_cast<int>(r.integer("res", 1, kMaxRes));
+    if (ov.res) e.res = util::checkRange("--res", *ov.res, 1, kMaxRes);
     if (r.has("precision")) {
         e.precisions = r.strings("precision");
         for (const auto& p : e.precisions) try {
@@ -229,17 +223,18 @@ Experiment loadExperiment(const std::string& path, const Overrides& ov)
     }
     if (r.has("size")) {
         const json& s = r.at("size");
-        if (!s.is_array() || s.size() != 2 || !s[0].is_number() || !s[1].is_number() || !(s[0].get<double>() > 0) ||
-            !(s[1].get<double>() > 0))
-            r.fail("size", fmt::format("expected [W, L] in metres, both > 0, found {}", s.dump()));
-        e.width = s[0];
-        e.length = s[1];
+        if (!s.is_array() || s.size() != 2 || !s[0].is_number() || !s[1].is_number())
+            r.fail("size", fmt::format("expected [W, L] in metres, found {}", s.dump()));
+        e.width = util::checkRange(r.name("size") + " W", s[0].get<double>(), 0, kMaxSceneLength, "m");
+        e.length = util::checkRange(r.name("size") + " L", s[1].get<double>(), 0, kMaxSceneLength, "m");
+        if (!(e.width > 0 && e.length > 0)) r.fail("size", fmt::format("expected W, L > 0, found {}", s.dump()));
     }
-    if (r.has("extent")) e.extent = r.number("extent", 1e-6, 1e6);
-    if (r.has("reps")) e.reps = static_cast<int>(r.integer("reps", 1, 1000));
-    if (ov.reps > 0) e.reps = ov.reps;
-    if (r.has("time_res")) e.timeRes = static_cast<int>(r.integer("time_res", 0, 16384));
-    if (ov.timeRes > 0) e.timeRes = ov.timeRes;
+    if (r.has("extent")) e.extent = r.number("extent", 1e-6, kMaxSceneLength);  // 1 um: anything smaller is a typo
+    // DESIGN 6: the median of at least 5 timed runs.
+    if (r.has("reps")) e.reps = static_cast<int>(r.integer("reps", kMinExperimentReps, ocl::kMaxReps));
+    if (ov.reps) e.reps = util::checkRange("--reps", *ov.reps, kMinExperimentReps, ocl::kMaxReps);
+    if (r.has("time_res")) e.timeRes = static_cast<int>(r.integer("time_res", 0, kMaxRes));
+    if (ov.timeRes) e.timeRes = util::checkRange("--time-res", *ov.timeRes, 0, kMaxRes);
     if (r.has("equal_time_tolerance")) e.equalTimeTolerance = r.number("equal_time_tolerance", 0.001, 10);
     if (r.has("save_images")) {
         if (!j["save_images"].is_boolean()) r.fail("save_images", "expected true or false");

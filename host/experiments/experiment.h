@@ -1,4 +1,4 @@
-// experiment.h -- declarative experiments (issue 6): experiments/*.json.
+// experiment.h -- declarative experiments: experiments/*.json.
 //
 //   {"name": "smoke",
 //    "luminaire_dir": "luminaires",          // relative to the source tree (or absolute)
@@ -11,7 +11,7 @@
 //    "equal_time_fit": [8, 32, 128],         // N to fit t(N) on when mci_curve is empty
 //    "reference": "reference",               // the reference SPEC
 //    "res": 64, "precision": ["float"], "size": [1, 1], "extent": 5,
-//    "reps": 5, "equal_time_tolerance": 0.10, "save_images": true,
+//    "reps": 5, "equal_time_tolerance": 0.10, "save_images": true,   // reps: 5 .. 1000
 //    "time_res": 512}                        // every method is timed at time_res^2 pixels,
 //                                            // whatever res the error image has (DESIGN 6)
 //
@@ -27,6 +27,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,12 +54,16 @@ struct Experiment {
     nlohmann::json raw;  // the file as read
 };
 
-// Command-line overrides applied after reading the file.
+// DESIGN 6: every time is the median of at least 5 timed runs.
+constexpr int kMinExperimentReps = 5;
+
+// Command-line overrides applied after reading the file (range-checked like
+// the keys they replace; unset = the file's value).
 struct Overrides {
-    std::string luminaireDir;  // --luminaires DIR: every .ldt/.ies file in DIR
-    int res = 0;               // --res N
-    int reps = 0;              // --reps K
-    int timeRes = 0;           // --time-res N
+    std::string luminaireDir;    // --luminaires DIR: every .ldt/.ies file in DIR
+    std::optional<int> res;      // --res N
+    std::optional<int> reps;     // --reps K
+    std::optional<int> timeRes;  // --time-res N
 };
 
 // Reads and checks an experiment file. Throws lb::InputError naming the file

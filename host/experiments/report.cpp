@@ -2,6 +2,7 @@
 
 #include "experiments/results.h"
 #include "util/error.h"
+#include "util/fileio.h"
 
 #include <fmt/format.h>
 
@@ -68,6 +69,7 @@ void writeReport(const std::string& dir, const std::string& plotNote)
 {
     const std::string path = (fs::path(dir) / "results.json").string();
     results::Results doc = results::load(path);
+    results::dedupe(doc.records);  // files of older versions may hold two partners of one method
     const json& c = doc.context;
     std::ostringstream o;
 
@@ -210,13 +212,7 @@ void writeReport(const std::string& dir, const std::string& plotNote)
     for (const auto& p : pngs) o << fmt::format("![{}](plots/{})\n\n", p, p);
     if (pngs.empty() && plotNote.empty()) o << "No plots in `plots/` (run `lumibench report DIR`).\n";
 
-    std::string tmp = (fs::path(dir) / "report.md.tmp").string();
-    {
-        std::ofstream f(tmp);
-        if (!f) throw Error("cannot write " + tmp);
-        f << o.str();
-    }
-    fs::rename(tmp, fs::path(dir) / "report.md");
+    util::writeFileAtomic((fs::path(dir) / "report.md").string(), o.str());
 }
 
 } // namespace lb::experiments

@@ -1,6 +1,7 @@
 #include "experiments/results.h"
 
 #include "util/error.h"
+#include "util/fileio.h"
 
 #include <fmt/format.h>
 
@@ -66,7 +67,8 @@ double numField(const json& j, const char* key)
 
 const std::set<std::string> kKnownKeys = {
     "method", "params", "luminaire", "height", "rotation", "res", "precision", "device", "driver", "time_ms",
-    "nmse", "nrmse", "relmse", "ueb", "leb", "nonfinite", "pixels", "mean_ref", "mean_test", "equal_time_to", "n"};
+    "nmse", "nrmse", "relmse", "ueb", "leb", "nonfinite", "pixels", "mean_ref", "mean_test", "equal_time_to", "n",
+    "inputs"};
 
 // Output of a shell command with surrounding white space trimmed, "" on failure.
 std::string capture(const std::string& cmd)
@@ -86,9 +88,27 @@ std::string capture(const std::string& cmd)
 
 std::string Record::key() const
 {
-    json k = json::array({method, params, luminaire, num(height), num(rotation), res, precision, device,
-                          equal_time_to ? json(*equal_time_to) : json(nullptr)});
+    const bool partner = equal_time_to.has_value();
+    json k = json::array({partner ? std::string("equal_time") : method, partner ? json::object() : params, luminaire,
+                          num(height), num(rotation), res, precision, device,
+                          partner ? json(*equal_time_to) : json(nullptr)});
     return k.dump();  // objects dump with sorted keys: a canonical string
+}
+
+size_t dedupe(std::vector<Record>& records)
+{
+    std::unordered_map<std::string, size_t> first;  // cell key -> position in out
+    std::vector<Record> out;
+    for (auto& r : records) {
+        auto [it, fresh] = first.emplace(r.key(), out.size());
+        if (fresh)
+            out.push_back(std::move(r));
+        else
+            out[it->second] = std::move(r);  // the later record wins
+    }
+    size_t dropped = records.size() - out.size();
+    records = std::move(out);
+    return dropped;
 }
 
 void to_json(json& j, const Record& r)
@@ -108,6 +128,7 @@ void to_json(json& j, const Record& r)
     j.update(json(r.error));  // nmse, nrmse, relmse, ueb, leb, nonfinite, pixels, mean_ref, mean_test
     if (r.equal_time_to) j["equal_time_to"] = *r.equal_time_to;
     if (r.n) j["n"] = *r.n;
+    if (r.inputs.is_object() && !r.inputs.empty()) j["inputs"] = r.inputs;
 }
 
 void from_json(const json& j, Record& r)
@@ -145,6 +166,10 @@ void from_json(const json& j, Record& r)
     r.error.mean_test = j.contains("mean_test") ? numField(j, "mean_test") : kNaN;
     if (j.contains("equal_time_to")) r.equal_time_to = field<std::string>(j, "equal_time_to");
     if (j.contains("n")) r.n = field<int64_t>(j, "n");
+    if (j.contains("inputs")) {
+        r.inputs = j["inputs"];
+        if (!r.inputs.is_object()) throw InputError(fmt::format("key \"inputs\": expected an object, found {}", r.inputs.dump()));
+    }
     for (auto it = j.begin(); it != j.end(); ++it)
         if (!kKnownKeys.count(it.key())) r.extra[it.key()] = it.value();
 }
@@ -205,11 +230,11 @@ json makeContext(const std::string& device, const std::string& driver, const jso
 
 Results load(const std::string& path)
 {
-    std::ifstream in(path);
-    if (!in) throw InputError(fmt::format("{}: cannot open results file", path));
+    // 1 GiB: a results file of a million records is ~1 GB; anything larger is not one.
+    const std::string text = util::readFile(path, "a results file (JSON)", size_t(1) << 30);
     json j;
     try {
-        j = json::parse(in);
+        j = json::parse(text);
     } catch (const json::parse_error& e) {
         throw InputError(fmt::format("{}: not a JSON document: {}", path, e.what()));
     }
@@ -222,20 +247,7 @@ Results load(const std::string& path)
 
 void save(const std::string& path, const Results& doc)
 {
-    const std::string text = json(doc).dump(1) + '\n';
-    const std::string tmp = fmt::format("{}.tmp.{}", path, getpid());
-    FILE* f = std::fopen(tmp.c_str(), "wb");
-    if (!f) throw Error(fmt::format("{}: cannot write: {}", tmp, std::strerror(errno)));
-    bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
-    ok = std::fflush(f) == 0 && ok;
-    ok = ::fsync(fileno(f)) == 0 && ok;  // on disk before the rename makes it visible
-    ok = std::fclose(f) == 0 && ok;
-    std::error_code ec;
-    if (ok) std::filesystem::rename(tmp, path, ec);  // atomic on POSIX within one file system
-    if (!ok || ec) {
-        std::filesystem::remove(tmp, ec);
-        throw Error(fmt::format("{}: cannot write results", path));
-    }
+    util::writeFileAtomic(path, json(doc).dump(1) + '\n');
 }
 
 void appendRecord(const std::string& path, const json& context, const Record& r)
@@ -256,14 +268,8 @@ void appendRecord(const std::string& path, const json& context, const Record& r)
         doc = load(path);
     else
         doc.context = context;
-    const std::string k = r.key();
-    bool replaced = false;
-    for (auto& old : doc.records)
-        if (old.key() == k) {
-            old = r;
-            replaced = true;
-        }
-    if (!replaced) doc.records.push_back(r);
+    doc.records.push_back(r);
+    dedupe(doc.records);  // replaces a record of the same cell (e.g. an out-of-date one)
     save(path, doc);
 }
 
@@ -272,24 +278,15 @@ Results mergeResults(const std::vector<std::string>& paths, MergeStats* stats)
     Results out;
     MergeStats s;
     json sources = json::array();
-    std::unordered_map<std::string, size_t> index;  // cell key -> position in out.records
     for (const auto& p : paths) {
         Results d = load(p);
         if (s.files == 0) out.context = d.context;
         sources.push_back({{"file", p}, {"context", d.context}});
         ++s.files;
-        for (auto& r : d.records) {
-            ++s.records_in;
-            const std::string k = r.key();
-            auto [it, fresh] = index.emplace(k, out.records.size());
-            if (fresh) {
-                out.records.push_back(std::move(r));
-            } else {
-                out.records[it->second] = std::move(r);  // the later file wins
-                ++s.replaced;
-            }
-        }
+        s.records_in += d.records.size();
+        for (auto& r : d.records) out.records.push_back(std::move(r));
     }
+    s.replaced = dedupe(out.records);
     out.context["merged_from"] = sources;
     s.records_out = out.records.size();
     if (stats) *stats = s;

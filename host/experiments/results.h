@@ -49,13 +49,26 @@ struct Record {
     metrics::Metrics error;                  // serialised flat: nmse, nrmse, ... at the record's top level
     std::optional<std::string> equal_time_to;  // MC at equal time: the method spec it matches
     std::optional<int64_t> n;                  // sample count where it is a result (N_eq), not a parameter
+    // Everything else the record was computed from, as the runner writes it
+    // (runner.h): light size, extent, reps, time_res, the reference SPEC and
+    // digests of the luminaire file and of the kernel sources. Empty in
+    // records of older files: resume treats those as stale.
+    nlohmann::json inputs = nlohmann::json::object();
     nlohmann::json extra = nlohmann::json::object();  // any other keys, kept as they are
 
     // The cell key: method, params, luminaire, height, rotation, res,
-    // precision, device and equal_time_to. Anything else that tells two cells
-    // apart must go into params.
+    // precision, device and equal_time_to; for an equal-time partner only
+    // the scene, device and equal_time_to (its N is a result, not part of
+    // the cell), so that a scene has one partner per method. Anything else
+    // that tells two cells apart must go into params. `inputs` is not part
+    // of it: a record whose inputs changed is the same cell, out of date.
     std::string key() const;
 };
+
+// Keeps one record per cell key: the last one (in file order), at the
+// position of the first. Returns how many were dropped. The rule of
+// appendRecord, mergeResults and the report.
+size_t dedupe(std::vector<Record>& records);
 
 void to_json(nlohmann::json& j, const Record& r);
 // Throws lb::InputError naming the missing or mistyped key.
@@ -98,8 +111,9 @@ struct MergeStats {
 };
 
 // Merges results files (e.g. the shards of one experiment) into one document.
-// Records are deduplicated by cell key; of several with the same key the one
-// from the later file (in the order given) wins. The merged context is the
+// Records are deduplicated by cell key (dedupe): of several with the same key
+// the one from the later file (in the order given) wins, also for equal-time
+// partners (one per scene, device and matched method). The merged context is the
 // first file's, with "merged_from": [{"file": ..., "context": ...}, ...] for
 // every input. Throws lb::InputError for an unreadable input.
 Results mergeResults(const std::vector<std::string>& paths, MergeStats* stats = nullptr);

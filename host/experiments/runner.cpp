@@ -6,9 +6,13 @@
 #include "metrics/metrics.h"
 #include "metrics/png.h"
 #include "metrics/tonemap.h"
+#include "photometry/text.h"
+#include "util/digest.h"
 #include "util/error.h"
+#include "util/fileio.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <chrono>
@@ -102,6 +106,28 @@ std::string hms(double s)
                      : fmt::format("{}:{:02d}", t / 60, t % 60);
 }
 
+// Digest of a luminaire file's bytes (of the name for built-in analytic
+// luminaires, which have no file): a file edited under the same name is a
+// different input.
+std::string luminaireDigest(const std::string& path)
+{
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec)) return util::digestHex(path);
+    return util::digestHex(util::readFile(path, "a luminaire file", photometry::kMaxFileBytes));
+}
+
+// The names of the inputs that differ between two records' `inputs`.
+std::string changedInputs(const json& was, const json& now)
+{
+    if (!was.is_object() || was.empty()) return "no input digests (an older file)";
+    std::set<std::string> names;
+    for (auto it = now.begin(); it != now.end(); ++it)
+        if (!was.contains(it.key()) || was[it.key()] != it.value()) names.insert(it.key());
+    for (auto it = was.begin(); it != was.end(); ++it)
+        if (!now.contains(it.key())) names.insert(it.key());
+    return fmt::format("{}", fmt::join(names, ", "));
+}
+
 // The scene's part of a record.
 results::Record baseRecord(const SceneId& sid, ocl::Runtime& rt)
 {
@@ -160,15 +186,15 @@ struct SceneRun {
     void saveImages(const std::string& name, const Image& img, const metrics::Metrics& m) const
     {
         std::string p = (fs::path(imageDir) / name).string();
-        writeExr(p + ".exr", img);
         double k = tonemap::defaultK(ref);
         double over = std::isfinite(m.ueb) ? m.ueb : 0.0, under = std::isfinite(m.leb) ? -m.leb : 0.0;
-        writePng(p + "_ref.png", tonemap::tonemapPicture(ref, k));
-        writePng(p + "_test.png", tonemap::tonemapPicture(img, k));
-        writePng(p + "_err.png", tonemap::errorPicture(ref, img, over, under));
         json j = m;
         j["k"] = k;
-        std::ofstream(p + ".json") << j.dump() << '\n';
+        util::writeFilesAtomic({{p + ".exr", encodeExr(img)},
+                                {p + "_ref.png", encodePng(tonemap::tonemapPicture(ref, k))},
+                                {p + "_test.png", encodePng(tonemap::tonemapPicture(img, k))},
+                                {p + "_err.png", encodePng(tonemap::errorPicture(ref, img, over, under))},
+                                {p + ".json", j.dump() + '\n'}});
     }
 };
 
@@ -195,23 +221,30 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
          {"equal_time_tolerance", e.equalTimeTolerance},
          {"shard", fmt::format("{}/{}", opt.shardK, opt.shardN)}});
 
-    // Resume: the cells already written. Method and curve cells match by cell
-    // key; an equal-time partner (whose N was chosen at run time) by scene,
-    // device and the SPEC it matches.
-    std::set<std::string> doneKeys;
-    std::map<std::string, double> doneTimes;  // key -> median ms (equal-time targets)
+    // Resume: the cells already written, by cell key (an equal-time partner,
+    // whose N was chosen at run time, by scene, device and the SPEC it
+    // matches), with the inputs they were computed from. A cell is done
+    // only when its inputs are this run's; otherwise it is recomputed and
+    // its record replaced.
+    util::removeStaleTemporaries(opt.outDir);  // left by a killed run
+    std::map<std::string, json> doneInputs;     // key -> inputs
+    std::map<std::string, double> doneTimes;    // key -> median ms (equal-time targets)
     if (fs::exists(resultsPath)) {
         for (const auto& r : results::load(resultsPath).records) {
-            doneKeys.insert(r.key());
+            doneInputs[r.key()] = r.inputs;
             doneTimes[r.key()] = r.time_ms.median;
-            if (r.equal_time_to) {
-                results::Record k = r;
-                k.method = "equal_time";
-                k.params = json::object();
-                doneKeys.insert(k.key());
-            }
         }
     }
+
+    // What every record depends on besides its cell key (results.h).
+    std::map<std::string, std::string> kernelDigests;  // kernel file -> digest of it and its headers
+    auto kernelDigest = [&](const std::string& method) {
+        const std::string& file = methods::family(method).file;
+        auto it = kernelDigests.find(file);
+        if (it == kernelDigests.end()) it = kernelDigests.emplace(file, ocl::kernelSourceDigest(file)).first;
+        return it->second;
+    };
+    std::map<std::string, std::string> lumDigests;  // luminaire path -> digest of its bytes
 
     std::vector<Cell> cells = cellsOf(e);
     std::vector<SceneId> mine;
@@ -228,12 +261,11 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
     for (size_t si = 0; si < mine.size(); ++si) {
         const SceneId& sid = mine[si];
 
-        // Keys of this scene's cells, to skip the scene without a reference render.
+        // Keys and inputs of this scene's cells, to skip the scene without a reference render.
         auto keyOf = [&](const Cell& c) {
             results::Record r = baseRecord(sid, rt);
             if (c.role == "equal_time") {
-                r.method = "equal_time";
-                r.params = json::object();
+                r.method = "mc";
                 r.equal_time_to = c.parsed.canonical();
             } else {
                 r.method = c.parsed.name;
@@ -241,10 +273,41 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
             }
             return r.key();
         };
+        if (!lumDigests.count(sid.luminaire)) lumDigests[sid.luminaire] = luminaireDigest(sid.luminaire);
+        auto inputsOf = [&](const Cell& c) {
+            json in = {{"size", {sid.width, sid.length}},
+                       {"extent", sid.extent},
+                       {"luminaire_digest", lumDigests[sid.luminaire]},
+                       {"reference", refSpec.canonical()},
+                       {"reference_kernel", kernelDigest(refSpec.name)},
+                       {"reps", e.reps},
+                       {"time_res", e.timeRes}};
+            if (c.role == "equal_time") {
+                in["kernel"] = kernelDigest("mc");
+                in["target_kernel"] = kernelDigest(c.parsed.name);
+                in["mc"] = methods::parseSpec(e.mc).canonical();
+                in["equal_time_tolerance"] = e.equalTimeTolerance;
+            } else {
+                in["kernel"] = kernelDigest(c.parsed.name);
+            }
+            return in;
+        };
         std::vector<bool> todo(cells.size());
-        size_t ntodo = 0;
-        for (size_t i = 0; i < cells.size(); ++i) ntodo += (todo[i] = !doneKeys.count(keyOf(cells[i])));
+        std::vector<json> cellInputs(cells.size());
+        std::set<std::string> changed;  // why done cells are recomputed
+        size_t ntodo = 0, nstale = 0;
+        for (size_t i = 0; i < cells.size(); ++i) {
+            cellInputs[i] = inputsOf(cells[i]);
+            auto it = doneInputs.find(keyOf(cells[i]));
+            todo[i] = it == doneInputs.end() || it->second != cellInputs[i];
+            if (it != doneInputs.end() && todo[i]) {
+                ++nstale;
+                changed.insert(changedInputs(it->second, cellInputs[i]));
+            }
+            ntodo += todo[i];
+        }
         sum.skipped += cells.size() - ntodo;
+        sum.stale += nstale;
         cellsSeen += cells.size() - ntodo;
         if (ntodo == 0) continue;
 
@@ -287,7 +350,9 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
             if (c.role != "equal_time") {
                 auto rr = sr.render(c.parsed);
                 remember(c.parsed, rr.timing.median_ms);
-                results::appendRecord(resultsPath, context, sr.record(c.parsed, rr, c, fileSafe(c.spec)));
+                results::Record r = sr.record(c.parsed, rr, c, fileSafe(c.spec));
+                r.inputs = cellInputs[i];
+                results::appendRecord(resultsPath, context, r);
             } else {
                 // Equal-time MCI partner of c.spec (DESIGN section 6).
                 const std::string target = c.parsed.canonical();
@@ -348,8 +413,8 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
                     std::vector<ocl::Timing> tt = rt.timeInterleaved(launches, std::max(1, e.reps), 1);
                     for (size_t k = 0; k < cand.size(); ++k) {
                         std::vector<double> rr;
-                        for (size_t r = 0; r < tt[0].samples_ms.size(); ++r)
-                            rr.push_back(tt[k + 1].samples_ms[r] / tt[0].samples_ms[r]);
+                        for (size_t ri = 0; ri < tt[0].samples_ms.size(); ++ri)
+                            rr.push_back(tt[k + 1].samples_ms[ri] / tt[0].samples_ms[ri]);
                         double q = ocl::summarize(rr).median_ms;  // median of the rounds' ratios
                         measured[cand[k]] = q;
                         candJson.push_back({{"n", cand[k]}, {"ratio", q}, {"ms", tt[k + 1].median_ms}});
@@ -403,6 +468,7 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
                 r.extra["equal_time_ok"] = std::abs(ratio - 1) <= e.equalTimeTolerance;
                 r.extra["equal_time_bracketed"] = bracketed;
                 r.extra["equal_time_fit"] = fitJson;
+                r.inputs = cellInputs[i];
                 if (std::abs(ratio - 1) > e.equalTimeTolerance) {
                     ++sum.equalTimeOff;
                     std::cerr << fmt::format("lumibench: warning: {}: MCI at equal time to {}: N = {}, {:.4g} ms vs "
@@ -420,9 +486,12 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
             double elapsed = std::chrono::duration<double>(Clock::now() - t0).count();
             size_t left = sum.cells - cellsSeen;
             double eta = sum.computed ? elapsed / double(sum.computed) * double(left) : NAN;
-            std::cerr << fmt::format("[{}] cells {}/{} ({:.0f}%), scene {}/{} {}, elapsed {}, ETA {}\n", e.name,
+            std::cerr << fmt::format("[{}] cells {}/{} ({:.0f}%), scene {}/{} {}, elapsed {}, ETA {}{}\n", e.name,
                                      cellsSeen, sum.cells, 100.0 * cellsSeen / std::max<size_t>(1, sum.cells), si + 1,
-                                     mine.size(), sid.label(), hms(elapsed), hms(eta));
+                                     mine.size(), sid.label(), hms(elapsed), hms(eta),
+                                     nstale ? fmt::format("; recomputed {} cells whose inputs changed ({})", nstale,
+                                                          fmt::format("{}", fmt::join(changed, "; ")))
+                                            : std::string());
         }
     }
     sum.seconds = std::chrono::duration<double>(Clock::now() - t0).count();

@@ -2,7 +2,17 @@
 //
 //   DIR/results.json   one record per cell (results.h), appended atomically as
 //                      each cell finishes, so an interrupted run resumes: a
-//                      rerun skips the cells already in the file
+//                      rerun skips the cells already in the file whose
+//                      `inputs` are this run's, and recomputes (and replaces)
+//                      those whose inputs changed, saying which changed
+//
+// A record's `inputs`: `size` [W, L], `extent`, `luminaire_digest` (of the
+// file's bytes), `reference` (canonical SPEC) and `reference_kernel`,
+// `kernel` (digest of the method's kernel source with every header it
+// includes, ocl::kernelSourceDigest), `reps`, `time_res`; equal-time
+// partners also `target_kernel`, `mc` and `equal_time_tolerance`. Records of
+// older files have none and are recomputed. Stale temporary files of a
+// killed run are removed at the start (util::removeStaleTemporaries).
 //   DIR/images/<scene>/  with "save_images": reference.exr, <cell>.exr and the
 //                      PNG triple <cell>_ref/_test/_err.png + <cell>.json that
 //                      plots/image_grid.py lays out
@@ -52,7 +62,8 @@ struct RunOptions {
 struct RunSummary {
     size_t scenes = 0;      // scenes of this shard
     size_t cells = 0;       // cells of this shard
-    size_t skipped = 0;     // already in results.json
+    size_t skipped = 0;     // already in results.json with this run's inputs
+    size_t stale = 0;       // in results.json but with other inputs: recomputed (counted in computed)
     size_t computed = 0;    // rendered now
     size_t equalTimeOff = 0;  // equal-time partners outside the tolerance
     double seconds = 0;

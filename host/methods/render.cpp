@@ -1,6 +1,9 @@
 #include "methods/render.h"
 
+#include "util/check.h"
+#include "util/digest.h"
 #include "util/error.h"
+#include "util/fileio.h"
 
 #include <fmt/format.h>
 
@@ -16,19 +19,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Fnv {
-    std::uint64_t h = 1469598103934665603ull;
-    void bytes(const void* p, size_t n)
-    {
-        auto* b = static_cast<const unsigned char*>(p);
-        for (size_t i = 0; i < n; ++i) {
-            h ^= b[i];
-            h *= 1099511628211ull;
-        }
-    }
-    void str(const std::string& s) { bytes(s.data(), s.size() + 1); }
-};
-
 long countNonfinite(const Image& img)
 {
     long n = 0;
@@ -42,15 +32,34 @@ nlohmann::json timingJson(const ocl::Timing& t)
     return {{"median", t.median_ms}, {"min", t.min_ms}, {"max", t.max_ms}, {"reps", t.reps}, {"samples", t.samples_ms}};
 }
 
-// A cached result: <key>.exr, <key>.<extra>.exr, <key>.json.
-bool loadCached(const std::string& base, RenderResult& r)
+// A cached result: <key>.exr, <key>.<extra>.exr and <key>.json, which records
+// the key and, per image, its file name, size and content digest. An entry is
+// served only when every image has the recorded digest and the scene's size;
+// anything else (a damaged, foreign or resized image, an entry of an older
+// version without digests) is reported, naming the cache, and rendered again.
+bool loadCached(const std::string& base, const std::string& key, int res, RenderResult& r)
 {
-    std::ifstream in(base + ".json");
-    if (!in || !fs::exists(base + ".exr")) return false;
+    const std::string meta = base + ".json";
+    if (!fs::exists(meta)) return false;
     try {
-        nlohmann::json j = nlohmann::json::parse(in);
-        r.image = readExr(base + ".exr");
-        for (auto& name : j.at("extra")) r.extraImages[name] = readExr(base + "." + name.get<std::string>() + ".exr");
+        nlohmann::json j = nlohmann::json::parse(util::readFile(meta, "a reference cache entry", 1u << 20));
+        if (j.value("key", std::string()) != key || !j.contains("images"))
+            throw Error("written by another version (no key and image digests)");
+        auto readChecked = [&](const std::string& name) {
+            const auto& d = j.at("images").at(name);
+            const std::string file = (fs::path(base).parent_path() / d.at("file").get<std::string>()).string();
+            const std::string bytes = util::readFile(file, "a cached OpenEXR image", size_t(1) << 34);
+            const std::string got = util::digestHex(bytes);
+            if (got != d.at("digest").get<std::string>())
+                throw Error(fmt::format("{}: content digest {} differs from the recorded {}", file, got,
+                                        d.at("digest").get<std::string>()));
+            Image img = readExr(file);
+            if (img.width != res || img.height != res || d.at("width") != res || d.at("height") != res)
+                throw Error(fmt::format("{}: {} x {} pixels, expected {} x {}", file, img.width, img.height, res, res));
+            return img;
+        };
+        r.image = readChecked("main");
+        for (auto& name : j.at("extra")) r.extraImages[name] = readChecked(name.get<std::string>());
         auto& t = j.at("time_ms");
         r.timing.median_ms = t.at("median");
         r.timing.min_ms = t.at("min");
@@ -59,7 +68,9 @@ bool loadCached(const std::string& base, RenderResult& r)
         r.buildSeconds = j.at("build_s");
         r.stats = j.at("stats");
     } catch (const std::exception& e) {
-        std::cerr << "lumibench: ignoring unreadable cache entry " << base << ": " << e.what() << '\n';
+        std::cerr << fmt::format("lumibench: warning: reference cache {}: ignoring entry {}: {}; rendering again\n",
+                                 fs::path(base).parent_path().string(), fs::path(base).filename().string(), e.what());
+        r = RenderResult{};
         return false;
     }
     r.nonfinite = countNonfinite(r.image);
@@ -67,18 +78,39 @@ bool loadCached(const std::string& base, RenderResult& r)
     return true;
 }
 
-void storeCached(const std::string& base, const RenderResult& r)
+// Writes the entry as one group (util::writeFilesAtomic): a failure leaves
+// none of its files. A cache that cannot be written is a warning naming it:
+// the render itself succeeded.
+void storeCached(const std::string& base, const std::string& key, const RenderResult& r)
 {
-    fs::create_directories(fs::path(base).parent_path());
-    writeExr(base + ".exr", r.image);
-    nlohmann::json extra = nlohmann::json::array();
+    const std::string stem = fs::path(base).filename().string();
+    std::vector<std::pair<std::string, std::string>> files;
+    nlohmann::json images = nlohmann::json::object(), extra = nlohmann::json::array();
+    auto add = [&](const std::string& name, const std::string& suffix, const Image& img) {
+        std::string bytes = encodeExr(img);
+        images[name] = {{"file", stem + suffix}, {"width", img.width}, {"height", img.height},
+                        {"digest", util::digestHex(bytes)}};
+        files.emplace_back(base + suffix, std::move(bytes));
+    };
+    add("main", ".exr", r.image);
     for (auto& [name, img] : r.extraImages) {
-        writeExr(base + "." + name + ".exr", img);
+        add(name, "." + name + ".exr", img);
         extra.push_back(name);
     }
-    nlohmann::json j = {{"time_ms", timingJson(r.timing)}, {"build_s", r.buildSeconds}, {"stats", r.stats},
-                        {"extra", extra}};
-    std::ofstream(base + ".json") << j.dump(1) << '\n';
+    nlohmann::json j = {{"key", key},          {"time_ms", timingJson(r.timing)}, {"build_s", r.buildSeconds},
+                        {"stats", r.stats},    {"extra", extra},                  {"images", images}};
+    // The description last: an entry without it is not served.
+    files.emplace_back(base + ".json", j.dump(1) + '\n');
+    try {
+        std::error_code ec;
+        fs::create_directories(fs::path(base).parent_path(), ec);
+        if (ec) throw Error(fmt::format("cannot create the directory: {}", ec.message()));
+        util::removeStaleTemporaries(fs::path(base).parent_path().string());
+        util::writeFilesAtomic(files);
+    } catch (const std::exception& e) {
+        std::cerr << fmt::format("lumibench: warning: reference cache {}: cannot store {}: {}\n",
+                                 fs::path(base).parent_path().string(), stem, e.what());
+    }
 }
 
 } // namespace
@@ -93,23 +125,23 @@ std::string cacheDir(const RenderOptions& opt)
 
 std::string cacheKey(const photometry::Table& table, const Scene& scene, const MethodSpec& spec, Precision p)
 {
-    Fnv f;
-    f.str("lumibench-render-v1");
+    util::Digest f;
+    f.str("lumibench-render-v2");
     auto P = scene.params();
     f.bytes(P.data(), P.size() * sizeof(double));
     auto lum = table.packed();
     f.bytes(lum.data(), lum.size() * sizeof(float));
     f.str(precisionName(p));
     f.str(spec.canonical());
-    return fmt::format("{:016x}", f.h);
+    f.str(ocl::kernelSourceDigest(family(spec.name).file));  // the kernel and every header it includes
+    return f.hex();
 }
 
 Prepared::Prepared(ocl::Runtime& rt, const photometry::Table& table, const Scene& scene, const MethodSpec& spec,
                    Precision precision)
     : fam_(methods::family(spec.name)), spec_(spec), scene_(scene)
 {
-    if (scene_.res < 1 || scene_.res > 16384)
-        throw InputError(fmt::format("--res must be in [1, 16384], got {}", scene_.res));
+    util::checkRange("--res", scene_.res, 1, kMaxRes);
     scene_.validate();
     table.validate();
     const bool dbl = precision == Precision::Double;
@@ -181,11 +213,12 @@ RenderResult render(ocl::Runtime& rt, const photometry::Table& table, const Scen
 {
     const Family& fam = family(spec.name);
     RenderResult result;
-    std::string base;
+    std::string base, key;
     if (fam.expensive && opt.useCache) {
         scene.validate();
-        base = (fs::path(cacheDir(opt)) / (spec.name + "-" + cacheKey(table, scene, spec, precision))).string();
-        if (loadCached(base, result)) {
+        key = cacheKey(table, scene, spec, precision);
+        base = (fs::path(cacheDir(opt)) / (spec.name + "-" + key)).string();
+        if (loadCached(base, key, scene.res, result)) {
             result.stats["cached"] = true;
             return result;
         }
@@ -234,7 +267,7 @@ RenderResult render(ocl::Runtime& rt, const photometry::Table& table, const Scen
     result.nonfinite = countNonfinite(result.image);
     if (fam.expensive) {
         result.stats["cached"] = false;
-        if (opt.useCache) storeCached(base, result);
+        if (opt.useCache) storeCached(base, key, result);
     }
     return result;
 }

@@ -79,8 +79,9 @@ struct RenderResult {
 RenderResult render(ocl::Runtime& rt, const photometry::Table& table, const Scene& scene, const MethodSpec& spec,
                     Precision precision, const RenderOptions& opt = {});
 
-// The cache directory in use and the key of one render (hex of a 64-bit FNV-1a
-// over scene parameters, packed table, precision and canonical SPEC).
+// The cache directory in use and the key of one render (util::Digest over
+// scene parameters, packed table, precision, canonical SPEC and the digest of
+// the family's kernel source with every header it includes).
 std::string cacheDir(const RenderOptions& opt);
 std::string cacheKey(const photometry::Table& table, const Scene& scene, const MethodSpec& spec, Precision p);
 

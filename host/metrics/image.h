@@ -17,7 +17,10 @@ struct Image {
     double at(int row, int col) const { return px[static_cast<size_t>(row) * width + col]; }
 };
 
-// Writes `img` as a single-channel FLOAT OpenEXR file (channel "Y"); throws lb::Error.
+// `img` as the bytes of a single-channel FLOAT OpenEXR file (channel "Y").
+std::string encodeExr(const Image& img);
+// Writes encodeExr(img) to `path` atomically (util/fileio.h: nothing is left
+// behind when the write fails); throws lb::Error naming the path.
 void writeExr(const std::string& path, const Image& img);
 // Reads channel Y of an OpenEXR file; throws lb::InputError naming the file when
 // it is missing, unreadable or has no Y channel.

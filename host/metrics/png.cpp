@@ -3,6 +3,7 @@
 #include "metrics/png.h"
 
 #include "util/error.h"
+#include "util/fileio.h"
 
 #include <fmt/format.h>
 #include <png.h>
@@ -13,7 +14,7 @@ namespace lb {
 
 static_assert(sizeof(tonemap::Rgb8) == 3, "Rgb8 must be packed RGB bytes for libpng");
 
-void writePng(const std::string& path, const tonemap::Picture& pic)
+std::string encodePng(const tonemap::Picture& pic)
 {
     png_image img;
     std::memset(&img, 0, sizeof img);
@@ -21,9 +22,18 @@ void writePng(const std::string& path, const tonemap::Picture& pic)
     img.width = static_cast<png_uint_32>(pic.width);
     img.height = static_cast<png_uint_32>(pic.height);
     img.format = PNG_FORMAT_RGB;
-    if (!png_image_write_to_file(&img, path.c_str(), 0, pic.px.data(), 0, nullptr))
-        throw Error(fmt::format("{}: cannot write PNG: {}", path, img.message));
+    png_alloc_size_t size = 0;
+    // First call: the size; second: the bytes.
+    if (!png_image_write_to_memory(&img, nullptr, &size, 0, pic.px.data(), 0, nullptr))
+        throw Error(fmt::format("cannot encode a {} x {} PNG: {}", pic.width, pic.height, img.message));
+    std::string out(size, '\0');
+    if (!png_image_write_to_memory(&img, out.data(), &size, 0, pic.px.data(), 0, nullptr))
+        throw Error(fmt::format("cannot encode a {} x {} PNG: {}", pic.width, pic.height, img.message));
+    out.resize(size);
+    return out;
 }
+
+void writePng(const std::string& path, const tonemap::Picture& pic) { util::writeFileAtomic(path, encodePng(pic)); }
 
 tonemap::Picture readPng(const std::string& path)
 {

@@ -11,11 +11,15 @@
 #include "photometry/symmetry.h"
 #include "photometry/text.h"
 #include "util/error.h"
+#include "util/fileio.h"
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <cmath>
 #include <fstream>
+#include <sstream>
+#include <utility>
 
 namespace lb::photometry {
 
@@ -28,7 +32,47 @@ static std::string trimmed(const std::string& s)
     return s.substr(a, s.find_last_not_of(" \t") - a + 1);
 }
 
+// The first token like "12,5" (digits, one comma, digits) on lines from
+// `first` (0-based) on, as (1-based line, token); (0, "") if none. IES
+// separates numbers by blanks or commas, so a decimal comma splits one number
+// into two and the reader's first complaint (angles not ascending, a count
+// off) would hide the cause.
+static std::pair<size_t, std::string> decimalComma(const TextFile& f, size_t first)
+{
+    for (size_t l = first; l < f.lines.size(); ++l) {
+        std::istringstream in(f.lines[l]);
+        std::string t;
+        while (in >> t) {
+            auto k = t.find(',');
+            if (k == std::string::npos || k == 0 || k + 1 == t.size() || t.find(',', k + 1) != std::string::npos)
+                continue;
+            double v;
+            if (parseNumber(t, v, true) && std::isdigit(static_cast<unsigned char>(t[k - 1])) &&
+                std::isdigit(static_cast<unsigned char>(t[k + 1])))
+                return {l + 1, t};
+        }
+    }
+    return {0, ""};
+}
+
+static Table readIesBody(const TextFile& f, IesExtra* extraOut);
+
 Table readIes(const TextFile& f, IesExtra* extraOut)
+{
+    try {
+        return readIesBody(f, extraOut);
+    } catch (const InputError& e) {
+        size_t tilt = 0;
+        while (tilt < f.lines.size() && trimmed(f.lines[tilt]).rfind("TILT", 0) != 0) ++tilt;
+        auto [line, token] = decimalComma(f, tilt + 1);
+        if (line == 0) throw;
+        throw InputError(fmt::format("{}:{}: expected '.' as the decimal mark (IES LM-63 separates numbers by blanks "
+                                     "or commas), got a decimal comma in {} (the reader then stopped at: {})",
+                                     f.path, line, quote(token), e.what()));
+    }
+}
+
+static Table readIesBody(const TextFile& f, IesExtra* extraOut)
 {
     IesExtra x;
     // Header: everything up to the TILT= line.
@@ -70,6 +114,7 @@ Table readIes(const TextFile& f, IesExtra* extraOut)
     size_t l = in.lineNo();
     x.multiplier = in.number("the candela multiplier");
     if (!(x.multiplier > 0)) f.fail(l, "a candela multiplier > 0", fmt::format("{}", x.multiplier));
+    const size_t countLine = in.lineNo();
     int nv = in.integer("the number of vertical angles", 2, kMaxAngles);
     int nh = in.integer("the number of horizontal angles", 1, kMaxAngles);
     l = in.lineNo();
@@ -124,14 +169,21 @@ Table readIes(const TextFile& f, IesExtra* extraOut)
                fmt::format("{}-{}", h0, h1));
 
     const double scale = x.multiplier * x.ballastFactor * x.ballastLampFactor;
+    // Angles are at most kMaxAngles each; the Nh x Nv table is what could be
+    // large, so its count is checked against the file before it is allocated.
+    in.requireRoom(double(nv) * nh, fmt::format("Nh x Nv = {} x {} candela values", nh, nv), countLine);
     std::vector<std::vector<double>> planes(nh, std::vector<double>(nv));
     for (int p = 0; p < nh; ++p)
         for (int k = 0; k < nv; ++k) {
             l = in.lineNo();
             double c = in.number(fmt::format("candela {} of {} at horizontal angle {}", k + 1, nv, h[p]));
             if (c < 0) f.fail(l, "a candela value >= 0", fmt::format("{}", c));
-            planes[p][k] = c * scale;
+            planes[p][k] = absoluteCandela(f, l, c, scale, "a candela value");
         }
+    if (!in.atEnd()) {
+        l = in.lineNo();
+        f.fail(l, fmt::format("the end of the file after the {} x {} candela values", nh, nv), quote(in.token("")));
+    }
     // A full set that stores 360 keeps its own 360 plane; one that stops short
     // gets 360 = 0 (unfold).
     Table t = unfold(isym, h, v, planes, fmt::format("{}:{}", f.path, hLine));
@@ -186,7 +238,7 @@ std::string iesText(const Table& t, const std::string& name)
 
 void writeIes(const Table& t, const std::string& path, const std::string& name)
 {
-    writeTextFile(path, iesText(t, name));
+    util::writeFileAtomic(path, iesText(t, name));
 }
 
 } // namespace lb::photometry

@@ -15,6 +15,7 @@
 #include "photometry/symmetry.h"
 #include "photometry/text.h"
 #include "util/error.h"
+#include "util/fileio.h"
 
 #include <fmt/format.h>
 
@@ -129,14 +130,22 @@ Table readLdt(const TextFile& f)
 
     // Intensities, cd/klm -> absolute cd.
     const double scale = lampFlux / 1000.0;
+    tok.requireRoom(double(mc) * ng, fmt::format("Mc x Ng = {} x {} intensities (Nc = {}, Isym = {})", mc, ng, nc, isym),
+                    ncLine);
     std::vector<std::vector<double>> planes(mc, std::vector<double>(static_cast<size_t>(ng)));
     for (size_t p = 0; p < mc; ++p)
         for (int i = 0; i < ng; ++i) {
             size_t l = tok.lineNo();
             double v = tok.number(fmt::format("intensity {} of plane C = {} (cd/klm)", i + 1, cStored[p]));
             if (v < 0) f.fail(l, "an intensity >= 0", fmt::format("{}", v));
-            planes[p][i] = v * scale;
+            planes[p][i] = absoluteCandela(f, l, v, scale, "an intensity");
         }
+    if (!tok.atEnd()) {
+        size_t l = tok.lineNo();
+        f.fail(l, fmt::format("the end of the file after the {} x {} intensities (Mc x Ng for Nc = {}, Isym = {})", mc,
+                              ng, nc, isym),
+               quote(tok.token("")));
+    }
 
     // unfold() takes the C90-C270 half for Isym 3: plane C stands for its mirror
     // image 180 - C there (C270 -> 270, C0 -> 180, C90 -> 90).
@@ -230,7 +239,7 @@ std::string ldtText(const Table& t, const std::string& name)
 
 void writeLdt(const Table& t, const std::string& path, const std::string& name)
 {
-    writeTextFile(path, ldtText(t, name));
+    util::writeFileAtomic(path, ldtText(t, name));
 }
 
 } // namespace lb::photometry

@@ -93,7 +93,10 @@ Table synth(const std::string& kind, const SynthParams& p)
         for (const auto& k : synthKinds()) all += (all.empty() ? "" : ", ") + k;
         throw InputError(fmt::format("luminaire synth: expected a kind ({}), got \"{}\"", all, kind));
     }
-    if (!(p.flux > 0) || !std::isfinite(p.flux)) throw InputError(fmt::format("luminaire synth: expected --flux > 0, got {}", p.flux));
+    // Up to 1e9 lm (real luminaires: < 1e6 lm), so that the table's candela stay
+    // far below photometry::kMaxCandela, which the readers enforce.
+    if (!(p.flux > 0 && p.flux <= 1e9))
+        throw InputError(fmt::format("luminaire synth: expected --flux in (0, 1e9] lm, got {}", p.flux));
     if (!(p.n >= 0 && p.n <= 10000)) throw InputError(fmt::format("luminaire synth: expected --n in [0, 10000], got {}", p.n));
     const Kind& k = it->second;
     Table t;

@@ -1,6 +1,7 @@
 #include "photometry/text.h"
 
 #include "util/error.h"
+#include "util/fileio.h"
 
 #include <fmt/format.h>
 
@@ -32,14 +33,8 @@ TextFile TextFile::fromString(const std::string& path, const std::string& text)
 
 TextFile TextFile::read(const std::string& path)
 {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(fmt::format("{}: cannot open the file", path));
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    std::string text = ss.str();
-    if (text.size() > kMaxFileBytes)
-        throw InputError(fmt::format("{}:1: expected a luminaire file of at most {} bytes, got {} bytes", path,
-                                     kMaxFileBytes, text.size()));
+    // Refuses a directory and stops reading at the limit (a /dev/zero ends there).
+    std::string text = util::readFile(path, "a luminaire file", kMaxFileBytes);
     if (text.empty()) throw InputError(fmt::format("{}:1: expected a luminaire file, got an empty file", path));
     return fromString(path, text);
 }
@@ -150,6 +145,30 @@ double TokenCursor::number(const std::string& what)
     return v;
 }
 
+void TokenCursor::requireRoom(double count, const std::string& what, size_t declLine)
+{
+    fill();
+    double left = 0;  // characters from the cursor to the end of the file, line ends included
+    for (size_t l = line_; l < f_.lines.size(); ++l) left += double(f_.lines[l].size() + 1);
+    left -= double(pos_);
+    // At most one number per byte: a loose bound, so that a file cut short by
+    // a few values still names the line where it ends, while a count the
+    // file cannot possibly hold fails here, before its arrays are allocated.
+    if (count > left)
+        f_.fail(declLine, fmt::format("{} that the rest of the file can hold (at most {:.0f} numbers in {:.0f} bytes)",
+                                      what, left, left),
+                fmt::format("{:.0f} numbers", count));
+}
+
+double absoluteCandela(const TextFile& f, size_t line, double raw, double scale, const std::string& what)
+{
+    const double v = raw * scale;
+    if (!(v >= 0 && v <= kMaxCandela))
+        f.fail(line, fmt::format("{} in [0, {:g}] cd after the file's multipliers (x {:g})", what, kMaxCandela, scale),
+               fmt::format("{:g} cd", v));
+    return v;
+}
+
 int TokenCursor::integer(const std::string& what, int lo, int hi)
 {
     std::string t = token(what);
@@ -157,13 +176,6 @@ int TokenCursor::integer(const std::string& what, int lo, int hi)
     if (!parseNumber(t, v, decComma_) || v != std::floor(v) || v < lo || v > hi)
         f_.fail(tokLine_, fmt::format("{} (an integer in [{}, {}])", what, lo, hi), quote(t));
     return static_cast<int>(v);
-}
-
-void writeTextFile(const std::string& path, const std::string& text)
-{
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-    if (!out) throw Error(fmt::format("{}: cannot write", path));
 }
 
 } // namespace lb::photometry

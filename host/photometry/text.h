@@ -14,6 +14,16 @@ namespace lb::photometry {
 constexpr int kMaxAngles = 10000;
 // Files larger than this are not luminaires (the largest real ones are ~100 kB).
 constexpr size_t kMaxFileBytes = 16u << 20;
+// Largest absolute candela accepted (after every multiplier). Real luminaires
+// stay below 1e7 cd; the kernels compute I cos / r^2 in float (max 3.4e38),
+// so 1e20 keeps that finite down to r = 1e-9 m while leaving 13 orders of
+// magnitude above any real file.
+constexpr double kMaxCandela = 1e20;
+
+struct TextFile;
+// `raw` x `scale` (the file's multipliers) as absolute candela; fails at
+// `line` unless the product is finite, >= 0 and <= kMaxCandela.
+double absoluteCandela(const TextFile& f, size_t line, double raw, double scale, const std::string& what);
 
 // A file split into lines (\n, \r\n or a lone \r end a line; the ends are dropped).
 struct TextFile {
@@ -29,9 +39,6 @@ struct TextFile {
 
 // How a token looks in a message: quoted, shortened, control bytes escaped.
 std::string quote(const std::string& token);
-
-// Writes `text` to `path` (binary, as given); throws lb::Error naming the path.
-void writeTextFile(const std::string& path, const std::string& text);
 
 // Strict number parsing: the whole token must be a finite decimal number.
 // decimalComma accepts "12,5" (EULUMDAT). Returns false when it is not one.
@@ -66,6 +73,10 @@ public:
     bool atEnd();                  // no token left
     size_t lineNo() { fill(); return line_ + 1; } // of the next token
     size_t lastLine() const { return tokLine_; } // of the token read last
+    // Fails at `declLine` unless the rest of the file can hold `count` more
+    // numbers (at most one per byte), so that declared counts are checked
+    // against the file's size before anything is allocated from them.
+    void requireRoom(double count, const std::string& what, size_t declLine);
     std::string token(const std::string& what);
     double number(const std::string& what);
     int integer(const std::string& what, int lo, int hi);

@@ -9,6 +9,7 @@
 #include <algorithm>
 
 #include <cmath>
+#include <utility>
 
 namespace lb {
 
@@ -48,6 +49,12 @@ void Scene::validate() const
     // h < 0 is allowed: the light then passes through the receiver plane and
     // every method must clip it at the receiver's horizon (a stiff case).
     if (!(extent > 0)) throw InputError(fmt::format("scene {}: extent must be > 0", describe()));
+    const std::pair<const char*, double> lengths[] = {
+        {"height", std::fabs(height)}, {"width", width}, {"length", length}, {"extent", extent}};
+    for (auto [name, x] : lengths)
+        if (x > kMaxSceneLength)
+            throw InputError(fmt::format("scene {}: {} {} m beyond the {} m the scene allows (float coordinates)",
+                                         describe(), name, x, kMaxSceneLength));
     if (!(width > 0 && length > 0))
         throw InputError(fmt::format("scene {}: degenerate light {} x {}: its corners coincide or are collinear "
                                      "(W and L must be > 0)",

@@ -9,6 +9,16 @@
 
 namespace lb {
 
+// Limits of the scene's values, checked by Scene::validate and by every flag
+// and experiment key that sets them (util::checkRange).
+// Lengths (|height|, W, L, extent) up to 10 km: the kernels work in float by
+// default, whose spacing at 1e4 m is 1e-3 m (2^-10), so beyond it a light of
+// a few millimetres cannot be told from a point and a metre-sized one loses
+// its shape to rounding; real scenes are < 1 km.
+constexpr double kMaxSceneLength = 1e4;
+// Pixels per side: 16384^2 doubles are 2 GiB, the largest buffer we ask of a device.
+constexpr int kMaxRes = 16384;
+
 struct Scene {
     double height = 1.0;                 // h: lower edge at R = pi/2; centre at h + L/2
     double rotation = 3.14159265358979;  // R: angle between n_L and n_x, pi/2 .. pi
@@ -28,7 +38,8 @@ struct Scene {
     std::vector<double> params() const;
     std::string describe() const;
 
-    // Throws lb::InputError unless every value is finite, h >= 0, S > 0 and the
+    // Throws lb::InputError unless every value is finite, |h|, W, L, S <=
+    // kMaxSceneLength, S > 0 and the
     // light is a proper rectangle: W, L > 0 and both sides resolvable in float
     // against the scene's coordinates (>= 1e-6 of max(W, L, h + L, S), i.e.
     // ~8 float ulps). A narrower light has coincident or collinear corners in

@@ -1,12 +1,14 @@
 // tune.cpp -- see tune.h.
 #include "tune/tune.h"
 
-#include "cli/commands.h"
 #include "methods/render.h"
 #include "methods/spec.h"
 #include "metrics/metrics.h"
 #include "photometry/load.h"
+#include "util/check.h"
 #include "util/error.h"
+#include "util/fileio.h"
+#include "util/fileio.h"
 
 #include <fmt/format.h>
 #include <nlopt.hpp>
@@ -43,28 +45,30 @@ std::string resolveDir(const std::string& dir)
     return (fs::path(LB_SOURCE_DIR) / p).string();  // relative to the source tree
 }
 
-std::vector<double> numbers(const std::string& path, const std::string& key, const json& v)
+std::string keyName(const std::string& path, const std::string& key) { return fmt::format("{}: key \"{}\"", path, key); }
+
+// Lengths in metres, each in [lo, kMaxSceneLength]: sizes from 0, heights
+// from -kMaxSceneLength (a light through the receiver plane is a case to tune on).
+std::vector<double> lengths(const std::string& path, const std::string& key, const json& v, double lo)
 {
     if (!v.is_array() || v.empty()) fail(path, key, "expected a non-empty list of numbers");
     std::vector<double> out;
     for (const auto& x : v) {
-        if (!x.is_number() || !std::isfinite(x.get<double>()))
-            fail(path, key, fmt::format("expected finite numbers, found element {}", x.dump()));
-        out.push_back(x.get<double>());
+        if (!x.is_number()) fail(path, key, fmt::format("expected numbers, found element {}", x.dump()));
+        out.push_back(util::checkRange(keyName(path, key), x.get<double>(), lo, kMaxSceneLength, "m"));
     }
     return out;
 }
 
+// A list of strings; a bare string is an error naming the key.
 std::vector<std::string> strings(const std::string& path, const std::string& key, const json& v)
 {
     std::vector<std::string> out;
-    if (v.is_string()) out.push_back(v.get<std::string>());
-    else if (v.is_array())
-        for (const auto& x : v) {
-            if (!x.is_string()) fail(path, key, fmt::format("expected strings, found element {}", x.dump()));
-            out.push_back(x.get<std::string>());
-        }
-    else fail(path, key, fmt::format("expected a list of strings, found {}", v.dump()));
+    if (!v.is_array()) fail(path, key, fmt::format("expected a list of strings like [\"a\", \"b\"], found {}", v.dump()));
+    for (const auto& x : v) {
+        if (!x.is_string()) fail(path, key, fmt::format("expected strings, found element {}", x.dump()));
+        out.push_back(x.get<std::string>());
+    }
     if (out.empty()) fail(path, key, "expected a non-empty list");
     return out;
 }
@@ -83,16 +87,12 @@ SceneSet sceneSet(const std::string& path, const std::string& key, const json& j
         if (!fs::exists(p)) fail(path, key + ".luminaires", fmt::format("file '{}' not found", p.string()));
         s.luminaires.push_back(p.string());
     }
-    s.heights = numbers(path, key + ".heights", j["heights"]);
+    s.heights = lengths(path, key + ".heights", j["heights"], -kMaxSceneLength);
     const json& rs = j["rotations"];
     if (!rs.is_array() || rs.empty()) fail(path, key + ".rotations", "expected a non-empty list");
     for (const auto& x : rs) {
         std::string text = x.is_string() ? x.get<std::string>() : x.dump();
-        try {
-            s.rotations.push_back(cli::parseAngle(text));
-        } catch (const InputError&) {
-            fail(path, key + ".rotations", fmt::format("expected radians or an expression like 3pi/4, found '{}'", text));
-        }
+        s.rotations.push_back(util::parseAngle(keyName(path, key + ".rotations"), text));
         s.rotationText.push_back(text);
     }
     return s;
@@ -130,11 +130,11 @@ double Dim::toUnit(double v) const
 
 TuneExperiment loadTuneExperiment(const std::string& path)
 {
-    std::ifstream in(path);
-    if (!in) throw InputError(fmt::format("{}: cannot open the tune experiment file", path));
+    // A tune file is a few kB; 16 MiB leaves room for generated ones.
+    const std::string text = util::readFile(path, "a tune experiment file (JSON)", 16u << 20);
     json j;
     try {
-        j = json::parse(in);
+        j = json::parse(text);
     } catch (const json::parse_error& err) {
         throw InputError(fmt::format("{}: not valid JSON: {}", path, err.what()));
     }
@@ -154,14 +154,12 @@ TuneExperiment loadTuneExperiment(const std::string& path)
         return j[k].get<std::string>();
     };
     auto integer = [&](const std::string& k, long lo, long hi) {
-        if (!j[k].is_number_integer() || j[k].get<long>() < lo || j[k].get<long>() > hi)
-            fail(path, k, fmt::format("expected an integer in [{}, {}], found {}", lo, hi, j[k].dump()));
-        return j[k].get<long>();
+        if (!j[k].is_number_integer()) fail(path, k, fmt::format("expected an integer, found {}", j[k].dump()));
+        return util::checkRange(keyName(path, k), j[k].get<long>(), lo, hi);
     };
     auto number = [&](const std::string& k, double lo, double hi) {
-        if (!j[k].is_number() || !(j[k].get<double>() >= lo && j[k].get<double>() <= hi))
-            fail(path, k, fmt::format("expected a number in [{}, {}], found {}", lo, hi, j[k].dump()));
-        return j[k].get<double>();
+        if (!j[k].is_number()) fail(path, k, fmt::format("expected a number, found {}", j[k].dump()));
+        return util::checkRange(keyName(path, k), j[k].get<double>(), lo, hi);
     };
     e.name = j.contains("name") ? str("name") : fs::path(path).stem().string();
     if (!j.contains("method")) fail(path, "method", "missing (a SPEC, e.g. \"cubature:triangulation=fan\")");
@@ -206,12 +204,12 @@ TuneExperiment loadTuneExperiment(const std::string& path)
         }
     }
     if (j.contains("size")) {
-        auto s = numbers(path, "size", j["size"]);
+        auto s = lengths(path, "size", j["size"], 0);
         if (s.size() != 2 || !(s[0] > 0) || !(s[1] > 0)) fail(path, "size", "expected [W, L] in metres, both > 0");
         e.width = s[0];
         e.length = s[1];
     }
-    if (j.contains("extent")) e.extent = number("extent", 1e-6, 1e6);
+    if (j.contains("extent")) e.extent = number("extent", 1e-6, kMaxSceneLength);
     for (const char* k : {"train", "validation"})
         if (!j.contains(k)) fail(path, k, "missing (an object with luminaires, heights, rotations)");
     e.train = sceneSet(path, "train", j["train"], lumDir);
@@ -502,12 +500,7 @@ json runTune(const TuneExperiment& e, const TuneOptions& opt)
     json doc = t.run();
     fs::create_directories(opt.outDir);
     fs::path out = fs::path(opt.outDir) / "tune.json";
-    {
-        std::ofstream f(out.string() + ".tmp");
-        if (!f) throw Error(fmt::format("cannot write {}", out.string()));
-        f << doc.dump(2) << "\n";
-    }
-    fs::rename(out.string() + ".tmp", out);
+    util::writeFileAtomic(out.string(), doc.dump(2) + "\n");
     if (opt.plot) {
         fs::path script = fs::path(LB_SOURCE_DIR) / "plots" / "tune.py";
         fs::path png = fs::path(opt.outDir) / "tune.png";

@@ -28,18 +28,6 @@ Result run(const std::string& args)
     return {c.code, c.out, c.err};
 }
 
-TEST(RenderCli, AngleExpressions)
-{
-    EXPECT_DOUBLE_EQ(cli::parseAngle("3.14159265358979323846"), M_PI);
-    EXPECT_DOUBLE_EQ(cli::parseAngle("pi"), M_PI);
-    EXPECT_DOUBLE_EQ(cli::parseAngle("3pi/4"), 3 * M_PI / 4);
-    EXPECT_DOUBLE_EQ(cli::parseAngle("3*pi/4"), 3 * M_PI / 4);
-    EXPECT_DOUBLE_EQ(cli::parseAngle("pi/2"), M_PI / 2);
-    EXPECT_DOUBLE_EQ(cli::parseAngle("0.75pi"), 0.75 * M_PI);
-    EXPECT_DOUBLE_EQ(cli::parseAngle("2.5"), 2.5);
-    for (auto* bad : {"", "pie", "3pi/", "pi/0", "x", "pi2", "1/2/3"}) EXPECT_THROW(cli::parseAngle(bad), InputError) << bad;
-}
-
 TEST(RenderCli, WritesExrAndJson)
 {
     LB_REQUIRE_RUNTIME(rt);

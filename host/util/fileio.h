@@ -1,0 +1,56 @@
+// fileio.h -- the one way lumibench reads input files and writes output files.
+//
+// Reading: readFile() refuses directories and anything larger than a stated
+// limit before holding it in memory (a /dev/zero is stopped at the limit, a
+// directory says "is a directory"), with messages naming the file.
+//
+// Writing: every output (EXR, PNG, JSON, Markdown, LDT/IES, cache entries) is
+// written to a temporary file in the target directory, flushed to disk
+// (fsync) and renamed over the target only when every byte was written and
+// the file closed without error. On failure the temporary file is removed and
+// the target is left as it was: a full disk never leaves an empty or a
+// truncated output behind. writeFilesAtomic() does this for a group (an image
+// and its side files): all temporaries are written first, so a failure of any
+// leaves none of them.
+//
+// Temporary files are named TARGET.tmp.PID.SEQ. One left behind by a killed
+// process (kill -9 cannot be caught) is removed by removeStaleTemporaries(),
+// which deletes only those whose process no longer runs on this host.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace lb::util {
+
+// The whole file at `path`, at most `maxBytes` long. `what` names the kind
+// of file in messages ("experiment file", "results file"). Throws
+// lb::InputError: "PATH: expected WHAT, got a directory" (and likewise for a
+// missing or unreadable file, or one over the limit).
+std::string readFile(const std::string& path, const std::string& what, size_t maxBytes);
+
+// Writes `bytes` to `path` atomically (see above); throws lb::Error naming the
+// path and the system's reason.
+void writeFileAtomic(const std::string& path, const std::string& bytes);
+
+// Writes every (path, bytes) pair atomically as a group: all temporaries are
+// written and flushed first; if any fails, all are removed and nothing is
+// renamed. Throws lb::Error naming the path that failed.
+void writeFilesAtomic(const std::vector<std::pair<std::string, std::string>>& files);
+
+// Removes TARGET.tmp.PID[.SEQ] files in `dir` whose PID is not a running
+// process; returns how many were removed. Errors are ignored (best effort).
+size_t removeStaleTemporaries(const std::string& dir);
+
+// Tests: replaces how a temporary file is opened. The opener gets the
+// temporary path and returns a writable file descriptor (or -1 with errno
+// set). A test can create the file and then dup2 /dev/full onto the
+// descriptor, so that every write fails with ENOSPC as on a full disk.
+// An empty function restores the default (open(2) with O_CREAT | O_EXCL).
+using TempOpener = std::function<int(const std::string& tmpPath)>;
+void setTempOpenerForTesting(TempOpener opener);
+
+} // namespace lb::util
