@@ -70,7 +70,9 @@ bool loadCached(const std::string& base, const std::string& key, int res, Render
     } catch (const std::exception& e) {
         std::cerr << fmt::format("lumibench: warning: reference cache {}: ignoring entry {}: {}; rendering again\n",
                                  fs::path(base).parent_path().string(), fs::path(base).filename().string(), e.what());
-        r = RenderResult{};
+        // drop what was read (swap: GCC 12 warns, wrongly, on assigning a temporary here)
+        RenderResult empty;
+        std::swap(r, empty);
         return false;
     }
     r.nonfinite = countNonfinite(r.image);
@@ -263,6 +265,9 @@ RenderResult render(ocl::Runtime& rt, const photometry::Table& table, const Scen
     prep.collect();
     result.extraImages = prep.extraImages();
     result.stats = prep.stats();
+    // which kernel variant ran (structural and scene defines): the records
+    // say whether a straight-line form or the general kernel was timed
+    result.stats["defines"] = prep.options();
     if (!timeDefines.empty()) result.stats["time_defines"] = timeDefines;
     result.nonfinite = countNonfinite(result.image);
     if (fam.expensive) {

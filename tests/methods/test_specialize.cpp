@@ -515,6 +515,10 @@ TEST(Specialize, CubatureRectClipEqualsGeneral)
     // wholly behind: every pixel exactly 0 and no triangle, as the general kernel
     RenderOptions opt;
     opt.reps = 1;
+    // the record says which variant ran
+    auto one = render(*rt, asym, cases[0].first, parseSpec("cubature"), Precision::Float, opt);
+    EXPECT_NE(one.stats.value("defines", std::string()).find("-DLB_CUB_RECT_CLIP"), std::string::npos)
+        << one.stats.dump();
     for (const auto& spec : specs) {
         EXPECT_TRUE(analyseCubature(below, asym, CubatureOptions::parse(parseSpec(spec).values)).rectClip) << spec;
         auto sp = render(*rt, asym, below, parseSpec(spec), Precision::Float, opt);
