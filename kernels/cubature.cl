@@ -1,6 +1,7 @@
-/* cubature.cl -- scattered-sampling cubature (paper Sec. 5, thesis 5.2): one
- * work-item per pixel of the normalized scene, all the math in
- * common/cubature.h (lb_cubature_irradiance).
+/* cubature.cl -- scattered-sampling cubature (paper Sec. 5, thesis 5.2): the
+ * general kernel runs lb_cubature_irradiance_ex of common/cubature.h, one
+ * work-item per pixel; the straight-line forms (below) are those of
+ * common/cubature_lanes.inc, one or eight pixels per work-item.
  *
  * Structural variants (-D, defaults = the paper's method):
  *   LB_CUB_TRI        0 fan around the first dynamic point | 1 delaunay (Lawson flips)
@@ -56,17 +57,17 @@
  * with LB_CUB_RECT_CLIP what the horizon leaves of it (lb_cub_rect_clip). */
 #if defined(LB_CUB_RECT_DEL)
 #define LB_CUB_RECT_CALL(s, nt, nf)                                                                             \
-    lb_cub_rect_del##s(lum, ou, v0c, hc, P[12], lc, R(1) / (P[12] * P[13]), au, av, an, LB_CUB_WEIGHT,          \
+    lb_cub_rect_del##s(lum, ou, v0c, hc, P[LB_P_W], lc, R(1) / (P[LB_P_W] * P[LB_P_L]), au, av, an, LB_CUB_WEIGHT,          \
                        LB_CUB_NORMALIZE, plane_eps, corner_inset, dyn_weight, &nt, &nf)
 #elif defined(LB_CUB_RECT_FAN)
 #define LB_CUB_RECT_CALL(s, nt, nf)                                                                             \
-    lb_cub_rect_fan##s(lum, ou, v0c, hc, P[12], lc, R(1) / (P[12] * P[13]), au, av, an, LB_CUB_WEIGHT,          \
+    lb_cub_rect_fan##s(lum, ou, v0c, hc, P[LB_P_W], lc, R(1) / (P[LB_P_W] * P[LB_P_L]), au, av, an, LB_CUB_WEIGHT,          \
                        (LB_CUB_DYNAMIC & LB_CUB_CP) != 0, LB_CUB_NORMALIZE, plane_eps, corner_inset, dyn_weight, \
                        &nt);                                                                                     \
     nf = 0
 #endif
 #ifdef LB_CUB_RECT_CLIP
-#define LB_CUB_RECT_CLIP_CALL(s) lb_cub_rect_clip##s(ov, hc, P[13], av, an, horizon_eps, &v0c, &lc)
+#define LB_CUB_RECT_CLIP_CALL(s) lb_cub_rect_clip##s(ov, hc, P[LB_P_L], av, an, horizon_eps, &v0c, &lc)
 #else
 #define LB_CUB_RECT_CLIP_CALL(s) (void)0
 #endif
@@ -92,12 +93,12 @@ __kernel void render(__global const real* P, __global const float* lum, __global
         return;
     int8 nt, nf;
     float8 hc = lb_cub_rect_shift_x8(on, lb_plane_distance_x8(P, (float8)(0, 1, 2, 3, 4, 5, 6, 7) + (float)col0, row), plane_eps);
-    float8 v0c = ov, lc = (float8)(P[13]);
+    float8 v0c = ov, lc = (float8)(P[LB_P_L]);
     LB_CUB_RECT_CLIP_CALL(_x8);
     float8 e = LB_CUB_RECT_CALL(_x8, nt, nf);
 #ifdef LB_CUB_BLEND
     float8 t;
-    e = lb_cub_rect_blend_x8(lum, e, ou, ov, on, P[12], P[13], au, av, an, blend_dist, &t);
+    e = lb_cub_rect_blend_x8(lum, e, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an, blend_dist, &t);
     nt = t >= 1.0f ? 0 : nt; /* no cubature where the grid MC alone counts */
     nf = t >= 1.0f ? 0 : nf;
 #endif
@@ -130,12 +131,12 @@ __kernel void render(__global const real* P, __global const float* lum, __global
         return;
     int nt, nf;
     real hc = lb_cub_rect_shift(on, lb_plane_distance(P, (real)col, row), plane_eps);
-    real v0c = ov, lc = P[13];
+    real v0c = ov, lc = P[LB_P_L];
     LB_CUB_RECT_CLIP_CALL();
     real e = LB_CUB_RECT_CALL(, nt, nf);
 #ifdef LB_CUB_BLEND
     real t;
-    e = lb_cub_rect_blend(lum, e, ou, ov, on, P[12], P[13], au, av, an, blend_dist, &t);
+    e = lb_cub_rect_blend(lum, e, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an, blend_dist, &t);
     nt = t >= R(1) ? 0 : nt;
     nf = t >= R(1) ? 0 : nf;
 #endif
@@ -153,12 +154,12 @@ __kernel void render(__global const real* P, __global const float* lum, __global
 {
     int col = get_global_id(0);
     int row = row0 + (int)get_global_id(1);
-    int n = (int)P[15];
+    int n = (int)P[LB_P_RES];
     if (col >= n || row >= n)
         return;
     lb_light L = lb_scene_light(P);
     real3 x = lb_pixel_position(P, row, col);
-    real3 nx = lb_p3(P, 16);
+    real3 nx = lb_p3(P, LB_P_NX);
     int nt = 0, nf = 0;
     real t = lb_blend_weight(length(x - L.c), blend_dist);
     real e = R(0);

@@ -30,7 +30,7 @@
 #ifndef LB_DYN_SKEW
 #define LB_DYN_SKEW
 #endif
-#define LB_DYN_RECT_CALL(s) LB_DYN_RECT_FN(s)(lum, ou, ov, on, P[12], P[13], au, av, an LB_DYN_SKEW)
+#define LB_DYN_RECT_CALL(s) LB_DYN_RECT_FN(s)(lum, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an LB_DYN_SKEW)
 #endif
 
 #if defined(LB_DYN_RECT) && defined(LB_LANES) && LB_LANES == 8 && !defined(LB_DOUBLE)
@@ -67,12 +67,12 @@ __kernel void render(__global const real* P, __global const float* lum, __global
 {
     int col = get_global_id(0);
     int row = row0 + (int)get_global_id(1);
-    int res = (int)P[15];
+    int res = (int)P[LB_P_RES];
     if (col >= res || row >= res)
         return;
     lb_light L = lb_scene_light(P);
     real3 x = lb_pixel_position(P, row, col);
-    real3 nx = lb_p3(P, 16);
+    real3 nx = lb_p3(P, LB_P_NX);
     real e = R(0);
 #ifdef LB_DYN_POINT
     real3 pc = L.c - x;

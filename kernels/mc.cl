@@ -35,7 +35,7 @@ __kernel void render(__global const real* P, __global const float* lum, __global
 {
     int col = get_global_id(0);
     int row = row0 + (int)get_global_id(1);
-    int res = (int)P[15];
+    int res = (int)P[LB_P_RES];
     /* No per-pixel early return: every work-item of a group reaches the
      * barrier below equally often. */
     bool inside = col < res && row < res;
@@ -44,7 +44,7 @@ __kernel void render(__global const real* P, __global const float* lum, __global
      * the pixel, in the light frame. */
     real ou, ov, on;
     lb_corner_offset(P, (real)col, row, &ou, &ov, &on);
-    real w = P[12], l = P[13];
+    real w = P[LB_P_W], l = P[LB_P_L];
 #ifdef LB_NO_BACK
     /* Every direction d = -w to a pixel with on >= 0 has d . n_L <= 0: no
      * light. The barrier below needs the whole work-group to take the same

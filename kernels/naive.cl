@@ -12,12 +12,12 @@ __kernel void render(__global const real* P, __global const float* lum, __global
 {
     int col = get_global_id(0);
     int row = row0 + (int)get_global_id(1);
-    int res = (int)P[15];
+    int res = (int)P[LB_P_RES];
     if (col >= res || row >= res)
         return;
     lb_light L = lb_scene_light(P);
     real3 x = lb_pixel_position(P, row, col);
-    real3 nx = lb_p3(P, 16);
+    real3 nx = lb_p3(P, LB_P_NX);
     real3 corner = L.c - L.u * (R(0.5) * L.w) - L.v * (R(0.5) * L.l);
     real sum = R(0);
     for (int i = 0; i < n; ++i) {

@@ -79,13 +79,13 @@ __kernel void render(__global const real* P, __global const float* lum, __global
 {
     int col = get_global_id(0);
     int row = row0 + (int)get_global_id(1);
-    int res = (int)P[15];
+    int res = (int)P[LB_P_RES];
     if (col >= res || row >= res)
         return;
     lb_ref_ctx c;
     c.L = lb_scene_light(P);
     real3 x = lb_pixel_position(P, row, col);
-    c.nx = lb_p3(P, 16);
+    c.nx = lb_p3(P, LB_P_NX);
     c.o = c.L.c - c.L.u * (R(0.5) * c.L.w) - c.L.v * (R(0.5) * c.L.l) - x;
     c.eu = c.L.u * c.L.w;
     c.ev = c.L.v * c.L.l;

@@ -24,7 +24,7 @@ __kernel void clip_and_measure(__global const real* P, __global const real* q, _
         return;
     lb_light L = lb_scene_light(P);
     real3 x = R3(q[3 * i], q[3 * i + 1], q[3 * i + 2]);
-    real3 nx = lb_p3(P, 16);
+    real3 nx = lb_p3(P, LB_P_NX);
     real3 p[LB_MAXV];
     lb_light_corners(L, p);
     for (int k = 0; k < 4; ++k)

@@ -23,7 +23,7 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     real au, av, an;
     if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
         return;
-    lb_store_x8(out, row * res + col0, res - col0, lb_structured_rect_x8(lum, ou, ov, on, P[12], P[13], au, av, an));
+    lb_store_x8(out, row * res + col0, res - col0, lb_structured_rect_x8(lum, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an));
 }
 #elif defined(LB_STRUCT_RECT)
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0)
@@ -32,7 +32,7 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     real ou, ov, on, au, av, an;
     if (!lb_work_item_pixels(P, row0, &col, &row, &res, &ou, &ov, &on, &au, &av, &an))
         return;
-    out[row * res + col] = lb_structured_rect(lum, ou, ov, on, P[12], P[13], au, av, an);
+    out[row * res + col] = lb_structured_rect(lum, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an);
 }
 #else
 
@@ -40,12 +40,12 @@ __kernel void render(__global const real* P, __global const float* lum, __global
 {
     int col = get_global_id(0);
     int row = row0 + (int)get_global_id(1);
-    int res = (int)P[15];
+    int res = (int)P[LB_P_RES];
     if (col >= res || row >= res)
         return;
     lb_light L = lb_scene_light(P);
     real3 x = lb_pixel_position(P, row, col);
-    real3 nx = lb_p3(P, 16);
+    real3 nx = lb_p3(P, LB_P_NX);
     real3 p[LB_MAXV];
     int m = lb_clipped_light(L, x, nx, p);
     real e = R(0);

@@ -31,7 +31,7 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     real au, av, an;
     if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
         return;
-    float8 e = lb_voronoi_rect_x8(lum, tab, tres, ou, ov, on, P[12], P[13], au, av, an, plane_eps);
+    float8 e = lb_voronoi_rect_x8(lum, tab, tres, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an, plane_eps);
     lb_store_x8(out, row * res + col0, res - col0, e);
 }
 #elif defined(LB_VOR_RECT)
@@ -42,7 +42,7 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     real ou, ov, on, au, av, an;
     if (!lb_work_item_pixels(P, row0, &col, &row, &res, &ou, &ov, &on, &au, &av, &an))
         return;
-    out[row * res + col] = lb_voronoi_rect(lum, tab, tres, ou, ov, on, P[12], P[13], au, av, an, plane_eps);
+    out[row * res + col] = lb_voronoi_rect(lum, tab, tres, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an, plane_eps);
 }
 #else
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
@@ -50,11 +50,11 @@ __kernel void render(__global const real* P, __global const float* lum, __global
 {
     int col = get_global_id(0);
     int row = row0 + (int)get_global_id(1);
-    int n = (int)P[15];
+    int n = (int)P[LB_P_RES];
     if (col >= n || row >= n)
         return;
     lb_light L = lb_scene_light(P);
     out[row * n + col] =
-        lb_voronoi_irradiance(lum, tab, tres, L, lb_pixel_position(P, row, col), lb_p3(P, 16), plane_eps);
+        lb_voronoi_irradiance(lum, tab, tres, L, lb_pixel_position(P, row, col), lb_p3(P, LB_P_NX), plane_eps);
 }
 #endif

@@ -1,5 +1,6 @@
 #include "methods/specialize.h"
 
+#include "math/kmath.h"
 #include "photometry/lut.h"
 
 #include <algorithm>
@@ -30,7 +31,7 @@ nlohmann::json Specialization::json() const
 bool lightAboveEveryHorizon(const Scene& scene, double margin)
 {
     auto P = scene.params();
-    glm::dvec3 nx(P[16], P[17], P[18]);
+    glm::dvec3 nx(P[LB_P_NX], P[LB_P_NX + 1], P[LB_P_NX + 2]);
     int n = scene.res;
     double lo = std::numeric_limits<double>::infinity();
     for (const auto& p : scene.corners())
@@ -44,8 +45,8 @@ bool horizonAlongU(const Scene& scene)
     // Exactly as the kernels compute it (lb_receiver_normal_local), in float
     // and in double: the straight-line clip needs au == 0 exactly.
     auto P = scene.params();
-    double au = P[16] * P[3] + P[17] * P[4] + P[18] * P[5];
-    float auf = float(P[16]) * float(P[3]) + float(P[17]) * float(P[4]) + float(P[18]) * float(P[5]);
+    double au = P[LB_P_NX] * P[LB_P_U] + P[LB_P_NX + 1] * P[LB_P_U + 1] + P[LB_P_NX + 2] * P[LB_P_U + 2];
+    float auf = float(P[LB_P_NX]) * float(P[LB_P_U]) + float(P[LB_P_NX + 1]) * float(P[LB_P_U + 1]) + float(P[LB_P_NX + 2]) * float(P[LB_P_U + 2]);
     return au == 0 && auf == 0;
 }
 
@@ -55,7 +56,7 @@ namespace {
 // convex, so over the square grid it peaks at an image corner.
 double farthestPixel(const Scene& scene)
 {
-    glm::dvec3 c(scene.params()[0], scene.params()[1], scene.params()[2]);
+    glm::dvec3 c = scene.center();
     int n = scene.res;
     double far = 0;
     for (int r : {0, n - 1})

@@ -26,9 +26,22 @@ std::array<glm::dvec3, 4> Scene::corners() const
 
 std::vector<double> Scene::params() const
 {
-    glm::dvec3 c = center(), uu = u(), vv = v(), nn = n();
-    return {c.x,   c.y,    c.z,    uu.x,   uu.y, uu.z, vv.x, vv.y, vv.z, nn.x,
-            nn.y,  nn.z,   width,  length, extent, static_cast<double>(res), 0.0, 0.0, 1.0, 0.0};
+    std::vector<double> P(LB_SCENE_SIZE, 0.0);
+    auto put3 = [&P](int at, const glm::dvec3& a) {
+        P[at] = a.x;
+        P[at + 1] = a.y;
+        P[at + 2] = a.z;
+    };
+    put3(LB_P_C, center());
+    put3(LB_P_U, u());
+    put3(LB_P_V, v());
+    put3(LB_P_N, n());
+    P[LB_P_W] = width;
+    P[LB_P_L] = length;
+    P[LB_P_EXTENT] = extent;
+    P[LB_P_RES] = static_cast<double>(res);
+    put3(LB_P_NX, {0.0, 0.0, 1.0});  // the receiver plane z = 0, seen from above
+    return P;
 }
 
 glm::dvec3 Scene::pixel(int row, int col) const

@@ -1,11 +1,20 @@
 /* scene.h -- the light and the image grid of DESIGN section 2, shared by host
- * and kernels. Kernels receive the scene as a small array of reals (one buffer,
- * so float and double kernels take the same argument list):
- *   P[0..3)  light centre      P[3..6)  u (width axis)   P[6..9)  v (length axis)
- *   P[9..12) n_L               P[12] W  P[13] L           P[14] extent S   P[15] resolution N
- *   P[16..19) receiver normal n_x
- * The receiver is the plane z = 0 seen from above. */
+ * and kernels. Kernels receive the scene as a small array of reals P (one
+ * buffer, so float and double kernels take the same argument list), laid out
+ * by the indices below: the one declaration of the layout, which
+ * host/scene/scene.cpp (Scene::params) fills by the same names
+ * (tests/scene: each field at its index). The receiver is the plane z = 0
+ * seen from above. */
 
+#define LB_P_C 0       /* light centre (3 reals) */
+#define LB_P_U 3       /* u, the width axis (3) */
+#define LB_P_V 6       /* v = cross(u, n_L), the length axis (3) */
+#define LB_P_N 9       /* n_L, where the light emits (3) */
+#define LB_P_W 12      /* width W along u */
+#define LB_P_L 13      /* length L along v */
+#define LB_P_EXTENT 14 /* side S of the square image */
+#define LB_P_RES 15    /* resolution N (pixels per side) */
+#define LB_P_NX 16     /* receiver normal n_x (3) */
 #define LB_SCENE_SIZE 20
 
 typedef struct {
@@ -21,12 +30,12 @@ LB_FN real3 lb_p3(__global const real* P, int i)
 LB_FN lb_light lb_scene_light(__global const real* P)
 {
     lb_light L;
-    L.c = lb_p3(P, 0);
-    L.u = lb_p3(P, 3);
-    L.v = lb_p3(P, 6);
-    L.n = lb_p3(P, 9);
-    L.w = P[12];
-    L.l = P[13];
+    L.c = lb_p3(P, LB_P_C);
+    L.u = lb_p3(P, LB_P_U);
+    L.v = lb_p3(P, LB_P_V);
+    L.n = lb_p3(P, LB_P_N);
+    L.w = P[LB_P_W];
+    L.l = P[LB_P_L];
     return L;
 }
 
@@ -44,8 +53,8 @@ LB_FN void lb_light_corners(lb_light L, real3* p)
 /* Receiver point at the centre of pixel (row, col), row 0 at the top (+y). */
 LB_FN real3 lb_pixel_position(__global const real* P, int row, int col)
 {
-    real s = P[14];
-    real n = P[15];
+    real s = P[LB_P_EXTENT];
+    real n = P[LB_P_RES];
     return R3(-R(0.5) * s + ((real)col + R(0.5)) * s / n,
               R(0.5) * s - ((real)row + R(0.5)) * s / n,
               R(0));
@@ -60,10 +69,10 @@ LB_FN real3 lb_to_light_frame(lb_light L, real3 d)
 /* The receiver normal n_x (P[16..19)) in the light's frame (u, v, n_L). */
 LB_FN void lb_receiver_normal_local(__global const real* P, real* au, real* av, real* an)
 {
-    real nxx = P[16], nxy = P[17], nxz = P[18];
-    *au = nxx * P[3] + nxy * P[4] + nxz * P[5];
-    *av = nxx * P[6] + nxy * P[7] + nxz * P[8];
-    *an = nxx * P[9] + nxy * P[10] + nxz * P[11];
+    real nxx = P[LB_P_NX], nxy = P[LB_P_NX + 1], nxz = P[LB_P_NX + 2];
+    *au = nxx * P[LB_P_U] + nxy * P[LB_P_U + 1] + nxz * P[LB_P_U + 2];
+    *av = nxx * P[LB_P_V] + nxy * P[LB_P_V + 1] + nxz * P[LB_P_V + 2];
+    *an = nxx * P[LB_P_N] + nxy * P[LB_P_N + 1] + nxz * P[LB_P_N + 2];
 }
 
 /* lb_corner_offset(P, col, row, &ou, &ov, &on): scene_lanes.inc. */
