@@ -77,9 +77,7 @@
  * launches ceil(N / 8) work-items per row. Float only: a double build ignores
  * LB_LANES (the host asks for 8 lanes only in float). */
 #include "common/lanes8.h"
-#include "common/lut_lanes.inc"
-#include "common/scene_lanes.inc"
-#include "common/cubature_lanes.inc"
+#include "common/lanes_all.inc"
 #include "common/lanes_end.h"
 
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,

@@ -35,10 +35,7 @@
 
 #if defined(LB_DYN_RECT) && defined(LB_LANES) && LB_LANES == 8 && !defined(LB_DOUBLE)
 #include "common/lanes8.h"
-#include "common/lut_lanes.inc"
-#include "common/scene_lanes.inc"
-#include "common/cubature_lanes.inc"
-#include "common/dynamic_lanes.inc"
+#include "common/lanes_all.inc"
 #include "common/lanes_end.h"
 
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0, real skew)

@@ -17,10 +17,7 @@
  * tab: tres x tres x 6 cell fractions for the scene's W x L light. */
 #if defined(LB_VOR_RECT) && defined(LB_LANES) && LB_LANES == 8 && !defined(LB_DOUBLE)
 #include "common/lanes8.h"
-#include "common/lut_lanes.inc"
-#include "common/scene_lanes.inc"
-#include "common/cubature_lanes.inc"
-#include "common/voronoi_lanes.inc"
+#include "common/lanes_all.inc"
 #include "common/lanes_end.h"
 
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,

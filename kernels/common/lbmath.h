@@ -10,7 +10,8 @@
 #include "cubature.h"
 #include "voronoi.h"
 /* The point-sample baselines' straight-line forms, one pixel per call (they
- * use cubature_lanes.inc's sample and triangle helpers). */
+ * use rect_lanes.inc's sample and triangle helpers, instantiated by
+ * cubature.h; lanes_all.inc lists every form in this order). */
 #include "lanes1.h"
 #include "dynamic_lanes.inc"
 #include "lanes_end.h"

@@ -66,7 +66,7 @@ LB_FN real3 lb_to_light_frame(lb_light L, real3 d)
     return R3(dot(d, L.u), dot(d, L.v), dot(d, L.n));
 }
 
-/* The receiver normal n_x (P[16..19)) in the light's frame (u, v, n_L). */
+/* The receiver normal n_x (P[LB_P_NX ..]) in the light's frame (u, v, n_L). */
 LB_FN void lb_receiver_normal_local(__global const real* P, real* au, real* av, real* an)
 {
     real nxx = P[LB_P_NX], nxy = P[LB_P_NX + 1], nxz = P[LB_P_NX + 2];
