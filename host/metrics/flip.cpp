@@ -103,8 +103,8 @@ private:
         const std::string script = (fs::path(LB_SOURCE_DIR) / "host" / "metrics" / "flip_server.py").string();
         std::error_code ec;
         if (!fs::exists(py, ec)) {
-            return fail(fmt::format("no Python at {} (run scripts/install-deps.sh, or set LUMIBENCH_PYTHON to a "
-                                    "Python with flip-evaluator)",
+            return fail(fmt::format("no Python at {} (run scripts/install-deps.sh, or set LUMIBENCH_FLIP_PYTHON "
+                                    "to a Python with flip-evaluator)",
                                     py));
         }
         if (!fs::exists(script, ec)) return fail(fmt::format("the co-process script {} is missing", script));
@@ -235,7 +235,7 @@ FlipServer& server()
 
 std::string flipPython()
 {
-    if (const char* env = std::getenv("LUMIBENCH_PYTHON"); env && *env) return env;
+    if (const char* env = std::getenv("LUMIBENCH_FLIP_PYTHON"); env && *env) return env;
     return (fs::path(LB_SOURCE_DIR) / ".venv" / "bin" / "python").string();
 }
 

@@ -7,7 +7,9 @@
 // that lives as long as this process; every later call writes the two images
 // as float32 files into a private temporary directory and asks it for the
 // mean over a socket, so no image pays a Python start-up. The Python is
-// $LUMIBENCH_PYTHON when set, else <source dir>/.venv/bin/python.
+// $LUMIBENCH_FLIP_PYTHON when set, else <source dir>/.venv/bin/python (not
+// $LUMIBENCH_PYTHON: that one picks the plotting Python, default the Debian
+// /usr/bin/python3, which has no flip-evaluator).
 //
 // The Y image is given as R = G = B with the package's HDR defaults. A
 // non-finite test pixel is left out of the mean (it takes the reference's
@@ -34,7 +36,7 @@ double flip(const Image& reference, const Image& test);
 // when it cannot, or the package and version ("flip-evaluator 1.7") when it can.
 bool flipAvailable(std::string* why = nullptr);
 
-// The Python the co-process runs with: $LUMIBENCH_PYTHON, else the source
+// The Python the co-process runs with: $LUMIBENCH_FLIP_PYTHON, else the source
 // tree's .venv/bin/python.
 std::string flipPython();
 

@@ -2,7 +2,7 @@
 """Mean HDR-FLIP co-process of lumibench (host/metrics/flip.h).
 
 Started once per lumibench process, on the first FLIP request, with the
-Python of the project's .venv (or $LUMIBENCH_PYTHON). It first writes one
+Python of the project's .venv (or $LUMIBENCH_FLIP_PYTHON). It first writes one
 line on stdout:
 
     {"ready": "flip-evaluator 1.7"}          the package imports

@@ -94,16 +94,16 @@ TEST_F(CompareCli, JsonHasTheMetrics)
 // computed, and one warning says why and how to get it; exit 0.
 TEST_F(CompareCli, FlipIsNullWithOneWarningWhenNotAvailable)
 {
-    // LUMIBENCH_PYTHON pointing nowhere stands for a machine without the package.
-    const char* was = std::getenv("LUMIBENCH_PYTHON");
+    // LUMIBENCH_FLIP_PYTHON pointing nowhere stands for a machine without the package.
+    const char* was = std::getenv("LUMIBENCH_FLIP_PYTHON");
     std::string saved = was ? was : "";
-    setenv("LUMIBENCH_PYTHON", (dir / "no-python").c_str(), 1);
+    setenv("LUMIBENCH_FLIP_PYTHON", (dir / "no-python").c_str(), 1);
     auto r = run("compare " + ref + " " + test + " --json", dir);
     auto t = run("compare " + ref + " " + test, dir);
     if (was)
-        setenv("LUMIBENCH_PYTHON", saved.c_str(), 1);
+        setenv("LUMIBENCH_FLIP_PYTHON", saved.c_str(), 1);
     else
-        unsetenv("LUMIBENCH_PYTHON");
+        unsetenv("LUMIBENCH_FLIP_PYTHON");
     ASSERT_EQ(r.code, 0) << r.out << r.err;
     auto j = nlohmann::json::parse(r.out);
     ASSERT_TRUE(j.contains("flip"));
