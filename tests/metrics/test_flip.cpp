@@ -11,15 +11,23 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <limits>
 
 namespace lb {
 namespace {
 
-#define LB_REQUIRE_FLIP()                                                                   \
-    do {                                                                                    \
-        std::string why;                                                                    \
-        if (!metrics::flipAvailable(&why)) GTEST_SKIP() << "FLIP is not available: " << why; \
+// Skips when flip_evaluator cannot be imported by the Python FLIP uses
+// (checked here on its own, as the pyldt peer test does); where it can,
+// the co-process must be available: a broken co-process fails, never skips.
+#define LB_REQUIRE_FLIP()                                                                                  \
+    do {                                                                                                   \
+        const std::string py = metrics::flipPython();                                                      \
+        if (std::system(("'" + py + "' -c 'import flip_evaluator' 2>/dev/null").c_str()) != 0)             \
+            GTEST_SKIP() << "flip_evaluator cannot be imported by " << py                                  \
+                         << " (scripts/install-deps.sh installs it into .venv; no PyPI, no FLIP)";         \
+        std::string why;                                                                                   \
+        ASSERT_TRUE(metrics::flipAvailable(&why)) << py << " imports flip_evaluator, yet: " << why;        \
     } while (0)
 
 // A smooth HDR image like a receiver's illuminance: a bright peak (~2000 lx)
