@@ -9,6 +9,9 @@
   equal-time MCI partners as stars.
 - nmse_h<height>_<precision>.png: mean NMSE over the rotations per luminaire,
   one line per method (thesis Figs. 6.7-6.10: one figure per height).
+- grad_nmse_time_*, grad_nmse_h*, flip_time_*, flip_h*: the same for
+  grad_nmse and FLIP (DESIGN section 5), when some record carries them
+  (flip is null where flip-evaluator was not available).
 - grid_<scene>.png: reference | method | error for each method of a scene, from
   the PNG triples the runner saves with "save_images" (plots/image_grid.py);
   at most --max-grids scenes.
@@ -76,7 +79,16 @@ def on_curve(r, cell):
     return any(role(c) == "mci_curve" and strip(c["params"]) == strip(r["params"]) for c in cell)
 
 
-def nmse_time(records, out, dpi):
+METRICS = (("nmse", "NMSE"), ("grad_nmse", "grad_nmse"), ("flip", "FLIP"))
+
+
+def value(r, key):
+    """The metric of a record, None where it is null or missing (older files)."""
+    v = r.get(key)
+    return v if finite(v) and v > 0 else None
+
+
+def metric_time(records, out, dpi, key, name):
     """One figure per luminaire and precision; a panel per (height, rotation)."""
     by = collections.defaultdict(list)
     for r in records:
@@ -95,20 +107,20 @@ def nmse_time(records, out, dpi):
             for j, rot in enumerate(rots):
                 ax = axes[i][j]
                 cell = [r for r in rs if r["height"] == h and r["rotation"] == rot]
-                curve = sorted((r["params"]["n"], r["time_ms"]["median"], r["nmse"])
-                               for r in cell if on_curve(r, cell) and finite(r["nmse"]) and r["nmse"] > 0)
+                curve = sorted((r["params"]["n"], r["time_ms"]["median"], value(r, key))
+                               for r in cell if on_curve(r, cell) and value(r, key))
                 if curve:
                     ax.plot([c[1] for c in curve], [c[2] for c in curve], "-", color="0.5", lw=1,
                             marker=".", ms=3, label="MCI curve (N = {})".format(curve_ns))
                 for r in cell:
-                    if not (finite(r["nmse"]) and r["nmse"] > 0 and finite(r["time_ms"]["median"])):
+                    if not (value(r, key) and finite(r["time_ms"]["median"])):
                         continue
                     if role(r) == "method":
-                        ax.plot(r["time_ms"]["median"], r["nmse"], "o", color=colours[label(r)], ms=5,
+                        ax.plot(r["time_ms"]["median"], value(r, key), "o", color=colours[label(r)], ms=5,
                                 label=label(r))
                     elif role(r) == "equal_time":
                         m = r.get("equal_time_label", "")
-                        ax.plot(r["time_ms"]["median"], r["nmse"], "*", ms=9, mec="k", mew=0.5,
+                        ax.plot(r["time_ms"]["median"], value(r, key), "*", ms=9, mec="k", mew=0.5,
                                 color=colours.get(m, "k"), label="MCI=" + m + " (N={})".format(r.get("n")))
                 ax.set_xscale("log")
                 ax.set_yscale("log")
@@ -116,35 +128,35 @@ def nmse_time(records, out, dpi):
                 if i == 0:
                     ax.set_title(rot_label(rot), fontsize=9)
                 if j == 0:
-                    ax.set_ylabel("h={} m\nNMSE".format(h), fontsize=9)
+                    ax.set_ylabel("h={} m\n{}".format(h, name), fontsize=9)
                 if i == len(heights) - 1:
                     ax.set_xlabel("time (ms)", fontsize=9)
         handles, labels = {}, []
         for ax in axes.flat:
             for hd, lb in zip(*ax.get_legend_handles_labels()):
-                key = lb.split(" (N=")[0]
-                if key not in handles:
-                    handles[key] = hd
-                    labels.append(key)
+                entry = lb.split(" (N=")[0]
+                if entry not in handles:
+                    handles[entry] = hd
+                    labels.append(entry)
         ncol = max(1, min(len(labels), 2 * len(rots)))
         rows = (len(labels) + ncol - 1) // ncol
         fig.legend([handles[k] for k in labels], labels, loc="lower center", ncol=ncol, fontsize=7)
-        fig.suptitle("{} ({}): NMSE against run time".format(stem(lum), prec))
+        fig.suptitle("{} ({}): {} against run time".format(stem(lum), prec, name))
         fig.tight_layout(rect=(0, min(0.4, 0.035 * rows / max(1, len(heights)) * 4), 1, 0.97))
-        path = os.path.join(out, "nmse_time_{}_{}.png".format(safe(stem(lum)), prec))
+        path = os.path.join(out, "{}_time_{}_{}.png".format(key, safe(stem(lum)), prec))
         fig.savefig(path, dpi=dpi)
         plt.close(fig)
         files.append(path)
     return files
 
 
-def nmse_per_height(records, out, dpi):
-    """Mean NMSE over the rotations per luminaire, one figure per height and precision."""
+def metric_per_height(records, out, dpi, key, name):
+    """Mean of a metric over the rotations per luminaire, one figure per height and precision."""
     acc = collections.defaultdict(list)
     for r in records:
-        if role(r) == "mci_curve" or not finite(r["nmse"]):
+        if role(r) == "mci_curve" or not finite(r.get(key)):
             continue
-        acc[(r["height"], r["precision"], label(r), stem(r["luminaire"]))].append(r["nmse"])
+        acc[(r["height"], r["precision"], label(r), stem(r["luminaire"]))].append(r[key])
     files = []
     for h, prec in sorted({(k[0], k[1]) for k in acc}):
         lums = sorted({k[3] for k in acc if k[0] == h and k[1] == prec})
@@ -166,12 +178,12 @@ def nmse_per_height(records, out, dpi):
         ax.set_xticks(range(len(lums)))
         ax.set_xticklabels(lums, rotation=30, ha="right", fontsize=8)
         ax.set_yscale("log")
-        ax.set_ylabel("NMSE (mean over rotations)")
+        ax.set_ylabel("{} (mean over rotations)".format(name))
         ax.set_title("h = {} m ({})".format(h, prec))
         ax.grid(True, which="both", lw=0.3, alpha=0.5)
         ax.legend(fontsize=7)
         fig.tight_layout()
-        path = os.path.join(out, "nmse_h{}_{}.png".format(h, prec))
+        path = os.path.join(out, "{}_h{}_{}.png".format(key, h, prec))
         fig.savefig(path, dpi=dpi)
         plt.close(fig)
         files.append(path)
@@ -212,7 +224,10 @@ def main(argv=None):
     records = doc["records"]
     out = os.path.join(args.dir, "plots")
     os.makedirs(out, exist_ok=True)
-    files = nmse_time(records, out, args.dpi) + nmse_per_height(records, out, args.dpi)
+    files = []
+    for key, name in METRICS:
+        if any(value(r, key) for r in records):  # none: older records, or no flip-evaluator
+            files += metric_time(records, out, args.dpi, key, name) + metric_per_height(records, out, args.dpi, key, name)
     files += grids(records, args.dir, out, args.max_grids)
     print("experiment.py: {} figures in {}".format(len(files), out))
 

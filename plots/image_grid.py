@@ -47,7 +47,7 @@ def fmt(v, spec):
 
 
 def caption(prefix):
-    """NMSE / UEB / LEB from PREFIX.json, or '' when there is none."""
+    """NMSE / UEB / LEB (and grad_nmse / FLIP where the file has them) from PREFIX.json, or ''."""
     path = prefix + ".json"
     if not os.path.exists(path):
         return ""
@@ -55,6 +55,8 @@ def caption(prefix):
         m = json.load(f)
     text = "NMSE {}  UEB {} lx  LEB {} lx".format(
         fmt(m.get("nmse"), ".3g"), fmt(m.get("ueb"), "+.3g"), fmt(m.get("leb"), "+.3g"))
+    if "grad_nmse" in m or "flip" in m:
+        text += "\ngrad_nmse {}  FLIP {}".format(fmt(m.get("grad_nmse"), ".3g"), fmt(m.get("flip"), ".3g"))
     if m.get("nonfinite"):
         text += "\n{} non-finite pixels".format(m["nonfinite"])
     return text

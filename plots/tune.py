@@ -17,16 +17,18 @@ def main():
         sys.exit("usage: tune.py tune.json out.png")
     doc = json.load(open(sys.argv[1]))
     trace = doc["trace"]
+    metric = doc.get("metric", "nmse")  # files written before "metric" existed minimised NMSE
     k = [t["evaluation"] for t in trace]
     fig, ax = plt.subplots(figsize=(6, 4))
     ax.plot(k, [t["objective"] for t in trace], ".", color="0.6", label="objective")
     ax.plot(k, [t["best"] for t in trace], "-", color="C0", label="best so far")
-    ax.axhline(doc["default"]["train_nmse"], color="C1", ls="--", label="default (train)")
+    ax.axhline(doc["default"]["train_" + metric], color="C1", ls="--", label="default (train)")
     ax.set_yscale("log")
     ax.set_xlabel("evaluation")
-    ax.set_ylabel(f"{doc['objective']} NMSE over the training scenes")
+    ax.set_ylabel(f"{doc['objective']} {metric} over the training scenes")
     ax.set_title(f"{doc['name']}: {doc['tuned']['algorithm']}, validation "
-                 f"{doc['default']['validation_nmse']:.4g} -> {doc['tuned']['validation_nmse']:.4g}", fontsize=9)
+                 f"{doc['default']['validation_' + metric]:.4g} -> {doc['tuned']['validation_' + metric]:.4g}",
+                 fontsize=9)
     ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(sys.argv[2], dpi=120)

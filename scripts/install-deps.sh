@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Installs every Debian package lumibench needs to build, test and plot, and
 # the project-local Python environment .venv/ (PyPI packages the tests use as
-# independent peers). Idempotent: re-running it on a machine that has
-# everything only checks.
+# independent peers, and flip-evaluator for the flip metric). Idempotent:
+# re-running it on a machine that has everything only checks.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 PKGS=(
@@ -31,8 +31,10 @@ else
 fi
 
 # .venv: Debian's python3 with its site packages (matplotlib, numpy) plus the
-# pinned PyPI peers. Without PyPI the peer tests skip and say so.
-PYPI=(eulumdat-py==1.0.0)
+# pinned PyPI packages: eulumdat-py (the LDT reader's peer test) and
+# flip-evaluator (NVIDIA's FLIP, the `flip` metric: host/metrics/flip.h).
+# Without PyPI the peer and FLIP tests skip and say so, and flip is null.
+PYPI=(eulumdat-py==1.0.0 flip-evaluator==1.7)
 VENV=.venv
 if [ ! -x "$VENV/bin/python" ]; then
   /usr/bin/python3 -m venv --system-site-packages "$VENV"
@@ -41,5 +43,6 @@ fi
 if "$VENV/bin/python" -m pip install -q --disable-pip-version-check "${PYPI[@]}"; then
   echo "install-deps: $VENV has ${PYPI[*]}"
 else
-  echo "install-deps: WARNING: could not install ${PYPI[*]} into $VENV; the peer tests will skip" >&2
+  echo "install-deps: WARNING: could not install ${PYPI[*]} into $VENV; the peer and FLIP tests will skip" \
+       "and flip will be null" >&2
 fi

@@ -1,11 +1,12 @@
 // lumibench compare REFERENCE.exr TEST.exr [--json] [--png PREFIX] [--k K] [--bound B]
 //
-// The error metrics of DESIGN section 5 (metrics/metrics.h) as a table or one
-// JSON object, and optionally the pictures of a figure row: PREFIX_ref.png and
+// The error metrics of DESIGN section 5 (metrics/metrics.h, FLIP from
+// metrics/flip.h) as a table or one JSON object, and optionally the pictures of a figure row: PREFIX_ref.png and
 // PREFIX_test.png tone mapped with one k (default 1 / mean(reference), or --k
 // so that several rows share one k), PREFIX_err.png (orange too bright, blue
 // too dark, white no error, saturated at UEB / |LEB| or at --bound).
 #include "cli/commands.h"
+#include "metrics/flip.h"
 #include "metrics/image.h"
 #include "metrics/metrics.h"
 #include "metrics/png.h"
@@ -44,6 +45,7 @@ void runCompare(const CompareArgs& a)
     } catch (const InputError& e) {
         throw InputError(fmt::format("{} vs {}: {}", a.ref, a.test, e.what()));
     }
+    m.flip = metrics::flip(R, A);  // NaN (null) with one warning when flip-evaluator is not available
 
     nlohmann::json j = m;
     j["reference"] = a.ref;
@@ -82,7 +84,10 @@ void runCompare(const CompareArgs& a)
               << fmt::format("NMSE       {}\n", num(m.nmse)) << fmt::format("NRMSE      {}\n", num(m.nrmse))
               << fmt::format("relMSE     {}\n", num(m.relmse))
               << fmt::format("UEB        {} lx (largest over-estimate, max(test - reference, 0))\n", num(m.ueb))
-              << fmt::format("LEB        {} lx (largest under-estimate, min(test - reference, 0))\n", num(m.leb));
+              << fmt::format("LEB        {} lx (largest under-estimate, min(test - reference, 0))\n", num(m.leb))
+              << fmt::format("grad NMSE  {} (NMSE of the neighbour differences, {} pairs)\n", num(m.grad_nmse),
+                             m.grad_pairs)
+              << fmt::format("FLIP       {} (mean HDR-FLIP, NVIDIA flip-evaluator)\n", num(m.flip));
     if (!a.png.empty())
         std::cout << fmt::format("pictures   {} {} {} (k = {}, error saturates at +{} / -{} lx)\n",
                                  j["pictures"]["ref"].get<std::string>(), j["pictures"]["test"].get<std::string>(),
@@ -95,12 +100,14 @@ void runCompare(const CompareArgs& a)
 void addCompareCommand(CLI::App& app)
 {
     auto* cmd = app.add_subcommand(
-        "compare", "Error metrics (NMSE, NRMSE, relMSE, UEB, LEB) of TEST.exr against REFERENCE.exr, and pictures");
+        "compare",
+        "Error metrics (NMSE, NRMSE, relMSE, UEB, LEB, grad_nmse, FLIP) of TEST.exr against REFERENCE.exr, and pictures");
     auto a = std::make_shared<CompareArgs>();
     cmd->add_option("reference", a->ref, "Reference image (OpenEXR, channel Y, lux)")->required();
     cmd->add_option("test", a->test, "Test image of the same size")->required();
     cmd->add_flag("--json", a->json, "Print one JSON object (nmse, nrmse, relmse, ueb, leb, nonfinite, pixels, "
-                                     "mean_ref, mean_test, ...) instead of a table");
+                                     "mean_ref, mean_test, grad_nmse, grad_pairs, flip, ...) instead of a table; "
+                                     "flip is null when flip-evaluator cannot be imported");
     cmd->add_option("--png", a->png, "Write PREFIX_ref.png, PREFIX_test.png (tone mapped) and PREFIX_err.png "
                                      "(orange too bright, blue too dark, white no error, magenta non-finite)");
     cmd->add_option("--k", a->k, "Tone-mapping scale: display L/(1+L) of L = k E (default 1/mean(reference); "

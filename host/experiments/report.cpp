@@ -1,6 +1,7 @@
 #include "experiments/report.h"
 
 #include "experiments/results.h"
+#include "metrics/metrics.h"
 #include "util/error.h"
 #include "util/fileio.h"
 
@@ -117,43 +118,60 @@ void writeReport(const std::string& dir, const std::string& plotNote)
                      eqAll ? 100.0 * eqClosest / eqAll : 0.0);
     o << "Times are OpenCL profiling-event medians (DESIGN section 6); errors against the reference (section 5).\n";
 
-    // Main table: mean NMSE over the rotations per luminaire and height.
-    struct Acc {
-        double sum = 0;
-        int n = 0;
-        double nsum = 0;
-    };
-    std::map<std::tuple<std::string, std::string, double>, std::map<std::string, Acc>> rows;
-    for (const auto& r : doc.records) {
-        if (role(r) == "mci_curve") continue;
-        auto& a = rows[{r.luminaire, r.precision, r.height}][label(r)];
-        if (std::isfinite(r.error.nmse)) {
-            a.sum += r.error.nmse;
-            ++a.n;
-        }
-        if (r.n) a.nsum += double(*r.n);
-    }
-    o << "\n## NMSE per luminaire and height (mean over the rotations)\n\n"
-         "MCI=M is Monte Carlo at the time of method M (its mean N in brackets).\n\n";
-    o << "| luminaire | precision | h |";
-    for (const auto& col : cols) o << ' ' << col << " |";
-    o << "\n|---|---|---|";
-    for (size_t i = 0; i < cols.size(); ++i) o << "---|";
-    o << '\n';
-    for (const auto& [k, m] : rows) {
-        o << fmt::format("| {} | {} | {} |", std::get<0>(k), std::get<1>(k), std::get<2>(k));
-        for (const auto& col : cols) {
-            auto it = m.find(col);
-            if (it == m.end() || it->second.n == 0) {
-                o << " |";
-                continue;
+    // Main tables: the mean of each error metric over the rotations per
+    // luminaire and height (NMSE, then grad_nmse and flip of DESIGN section 5).
+    auto table = [&](const std::string& key, const std::string& title, const std::string& note) {
+        struct Acc {
+            double sum = 0;
+            int n = 0;
+            double nsum = 0;
+            int records = 0;
+        };
+        std::map<std::tuple<std::string, std::string, double>, std::map<std::string, Acc>> rows;
+        size_t carried = 0;
+        for (const auto& r : doc.records) {
+            if (role(r) == "mci_curve") continue;
+            auto& a = rows[{r.luminaire, r.precision, r.height}][label(r)];
+            const double v = metrics::minimisable(r.error, key);
+            if (std::isfinite(v)) {
+                a.sum += v;
+                ++a.n;
+                ++carried;
             }
-            o << ' ' << sci(it->second.sum / it->second.n);
-            if (col.rfind("MCI=", 0) == 0) o << fmt::format(" ({:.0f})", it->second.nsum / it->second.n);
-            o << " |";
+            if (r.n) a.nsum += double(*r.n);
+            ++a.records;
         }
+        o << fmt::format("\n## {} per luminaire and height (mean over the rotations)\n\n{}", title, note);
+        if (carried == 0) {
+            o << fmt::format("No record carries {} (records of an older lumibench{}).\n", key,
+                             key == "flip" ? ", or flip-evaluator was not available: scripts/install-deps.sh" : "");
+            return;
+        }
+        o << "MCI=M is Monte Carlo at the time of method M (its mean N in brackets).\n\n";
+        o << "| luminaire | precision | h |";
+        for (const auto& col : cols) o << ' ' << col << " |";
+        o << "\n|---|---|---|";
+        for (size_t i = 0; i < cols.size(); ++i) o << "---|";
         o << '\n';
-    }
+        for (const auto& [k, m] : rows) {
+            o << fmt::format("| {} | {} | {} |", std::get<0>(k), std::get<1>(k), std::get<2>(k));
+            for (const auto& col : cols) {
+                auto it = m.find(col);
+                if (it == m.end() || it->second.n == 0) {
+                    o << " |";
+                    continue;
+                }
+                o << ' ' << sci(it->second.sum / it->second.n);
+                if (col.rfind("MCI=", 0) == 0) o << fmt::format(" ({:.0f})", it->second.nsum / it->second.records);
+                o << " |";
+            }
+            o << '\n';
+        }
+    };
+    table("nmse", "NMSE", "");
+    table("grad_nmse", "grad_nmse",
+          "NMSE of the neighbouring-pixel differences: ripples and bumps, not a smooth bias.\n");
+    table("flip", "FLIP", "Mean HDR-FLIP (NVIDIA flip-evaluator), in [0, 1].\n");
 
     // Relative times (paper Table 1): geometric mean over scenes of the median over point's median.
     std::map<std::string, double> pointMs;
@@ -184,19 +202,22 @@ void writeReport(const std::string& dir, const std::string& plotNote)
 
     // Equal-time pairs.
     if (eqAll) {
-        std::map<std::string, double> nmseBy;  // scene|label -> nmse
-        for (const auto& r : doc.records) nmseBy[sceneKey(r) + "|" + str(r.extra, "spec", r.method)] = r.error.nmse;
+        std::map<std::string, metrics::Metrics> errBy;  // scene|label -> errors
+        for (const auto& r : doc.records) errBy[sceneKey(r) + "|" + str(r.extra, "spec", r.method)] = r.error;
         o << "\n## Equal-time pairs\n\n| luminaire | h | R (rad) | method | t method (ms) | N | t MCI (ms) | ratio | "
-             "NMSE method | NMSE MCI |\n|---|---|---|---|---|---|---|---|---|---|\n";
+             "NMSE method | NMSE MCI | grad_nmse method | grad_nmse MCI | FLIP method | FLIP MCI |\n"
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
         for (const auto& r : doc.records) {
             if (!r.equal_time_to) continue;
             std::string m = str(r.extra, "equal_time_label", *r.equal_time_to);
-            auto it = nmseBy.find(sceneKey(r) + "|" + m);
-            o << fmt::format("| {} | {} | {:.4f} | {} | {:.4f} | {} | {:.4f} | {:.3f}{} | {} | {} |\n", r.luminaire,
-                             r.height, r.rotation, m, r.extra.value("equal_time_target_ms", NAN), r.n ? *r.n : 0,
-                             r.time_ms.median, r.extra.value("equal_time_ratio", NAN),
-                             r.extra.value("equal_time_ok", false) ? "" : " (!)",
-                             it != nmseBy.end() ? sci(it->second) : "n/a", sci(r.error.nmse));
+            auto it = errBy.find(sceneKey(r) + "|" + m);
+            auto of = [&](double metrics::Metrics::*f) { return it != errBy.end() ? sci(it->second.*f) : "n/a"; };
+            o << fmt::format("| {} | {} | {:.4f} | {} | {:.4f} | {} | {:.4f} | {:.3f}{} | {} | {} | {} | {} | {} | {} |\n",
+                             r.luminaire, r.height, r.rotation, m, r.extra.value("equal_time_target_ms", NAN),
+                             r.n ? *r.n : 0, r.time_ms.median, r.extra.value("equal_time_ratio", NAN),
+                             r.extra.value("equal_time_ok", false) ? "" : " (!)", of(&metrics::Metrics::nmse),
+                             sci(r.error.nmse), of(&metrics::Metrics::grad_nmse), sci(r.error.grad_nmse),
+                             of(&metrics::Metrics::flip), sci(r.error.flip));
         }
     }
 

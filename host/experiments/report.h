@@ -11,10 +11,12 @@ namespace lb::experiments {
 // (no python, no matplotlib, script failed): the report says so.
 std::string makePlots(const std::string& dir);
 
-// Writes DIR/report.md: device and driver, the main table (mean NMSE over the
-// rotations per luminaire, height and method, the equal-time MCI beside the
-// method it matches), relative run times (paper Table 1: median time over the
-// point light's), the equal-time pairs, and the plots found in DIR/plots.
+// Writes DIR/report.md: device and driver, the main tables (mean NMSE, then
+// grad_nmse and FLIP, over the rotations per luminaire, height and method,
+// the equal-time MCI beside the method it matches; a metric no record carries
+// gets a line saying so), relative run times (paper Table 1: median time over
+// the point light's), the equal-time pairs with all three metrics, and the
+// plots found in DIR/plots.
 // `plotNote` (from makePlots) is printed when the plots are missing.
 void writeReport(const std::string& dir, const std::string& plotNote = "");
 

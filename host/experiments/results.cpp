@@ -67,8 +67,8 @@ double numField(const json& j, const char* key)
 
 const std::set<std::string> kKnownKeys = {
     "method", "params", "luminaire", "height", "rotation", "res", "precision", "device", "driver", "time_ms",
-    "nmse", "nrmse", "relmse", "ueb", "leb", "nonfinite", "pixels", "mean_ref", "mean_test", "equal_time_to", "n",
-    "inputs"};
+    "nmse", "nrmse", "relmse", "ueb", "leb", "nonfinite", "pixels", "mean_ref", "mean_test", "grad_nmse",
+    "grad_pairs", "flip", "equal_time_to", "n", "inputs"};
 
 // Output of a shell command with surrounding white space trimmed, "" on failure.
 std::string capture(const std::string& cmd)
@@ -125,7 +125,7 @@ void to_json(json& j, const Record& r)
     j["driver"] = r.driver;
     j["time_ms"] = {{"median", num(r.time_ms.median)}, {"min", num(r.time_ms.min)}, {"max", num(r.time_ms.max)},
                     {"reps", r.time_ms.reps}, {"res", r.time_ms.res}};
-    j.update(json(r.error));  // nmse, nrmse, relmse, ueb, leb, nonfinite, pixels, mean_ref, mean_test
+    j.update(json(r.error));  // nmse, ..., mean_test, grad_nmse, grad_pairs, flip (metrics.h)
     if (r.equal_time_to) j["equal_time_to"] = *r.equal_time_to;
     if (r.n) j["n"] = *r.n;
     if (r.inputs.is_object() && !r.inputs.empty()) j["inputs"] = r.inputs;
@@ -164,6 +164,10 @@ void from_json(const json& j, Record& r)
     r.error.pixels = j.contains("pixels") ? field<int64_t>(j, "pixels") : 0;
     r.error.mean_ref = j.contains("mean_ref") ? numField(j, "mean_ref") : kNaN;
     r.error.mean_test = j.contains("mean_test") ? numField(j, "mean_test") : kNaN;
+    // Records written before grad_nmse and flip existed read as NaN (written back as null).
+    r.error.grad_nmse = j.contains("grad_nmse") ? numField(j, "grad_nmse") : kNaN;
+    r.error.grad_pairs = j.contains("grad_pairs") ? field<int64_t>(j, "grad_pairs") : 0;
+    r.error.flip = j.contains("flip") ? numField(j, "flip") : kNaN;
     if (j.contains("equal_time_to")) r.equal_time_to = field<std::string>(j, "equal_time_to");
     if (j.contains("n")) r.n = field<int64_t>(j, "n");
     if (j.contains("inputs")) {

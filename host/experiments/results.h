@@ -8,6 +8,7 @@
 //                 "time_ms": {"median": ..., "min": ..., "max": ..., "reps": 5, "res": 512},
 //                 "nmse": ..., "nrmse": ..., "relmse": ..., "ueb": ..., "leb": ...,
 //                 "nonfinite": 0, "pixels": ..., "mean_ref": ..., "mean_test": ...,
+//                 "grad_nmse": ..., "grad_pairs": ..., "flip": ... (null: FLIP not available),
 //                 "equal_time_to": "cubature:...", "n": 40}, ...]}
 //
 // One record is one cell of an experiment: a method with its parameters at

@@ -3,6 +3,7 @@
 #include "experiments/results.h"
 #include "methods/analytic.h"
 #include "methods/render.h"
+#include "metrics/flip.h"
 #include "metrics/metrics.h"
 #include "metrics/png.h"
 #include "metrics/tonemap.h"
@@ -66,6 +67,10 @@ double interpolateMs(std::vector<std::pair<long, double>> pts, long n)
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// The error metrics a record carries (an input: records of a runner that
+// computed fewer are recomputed on resume, so that every record has them all).
+const char* const kMetricSet = "nmse nrmse relmse ueb leb grad_nmse flip";
 
 // One cell of a scene: a method (as written), an MCI-curve point, or the
 // equal-time partner of a method.
@@ -174,6 +179,7 @@ struct SceneRun {
         r.params = spec.paramsJson();
         r.time_ms = {rr.timing.median_ms, rr.timing.min_ms, rr.timing.max_ms, rr.timing.reps, rr.timeRes};
         r.error = metrics::compare(ref, rr.image);
+        r.error.flip = metrics::flip(ref, rr.image);  // null, with one warning per run, without flip-evaluator
         r.extra["spec"] = cell.role == "equal_time" ? "mc:n=" + std::to_string(spec.integer("n")) : cell.spec;
         r.extra["role"] = cell.role;
         r.extra["build_s"] = rr.buildSeconds;
@@ -281,7 +287,8 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
                        {"reference", refSpec.canonical()},
                        {"reference_kernel", kernelDigest(refSpec.name)},
                        {"reps", e.reps},
-                       {"time_res", e.timeRes}};
+                       {"time_res", e.timeRes},
+                       {"metrics", kMetricSet}};
             if (c.role == "equal_time") {
                 in["kernel"] = kernelDigest("mc");
                 in["target_kernel"] = kernelDigest(c.parsed.name);

@@ -10,7 +10,9 @@
 // file's bytes), `reference` (canonical SPEC) and `reference_kernel`,
 // `kernel` (digest of the method's kernel source with every header it
 // includes, ocl::kernelSourceDigest), `reps`, `time_res`; equal-time
-// partners also `target_kernel`, `mc` and `equal_time_tolerance`. Records of
+// partners also `target_kernel`, `mc` and `equal_time_tolerance`; `metrics`
+// names the error metrics computed (metrics.h), so records of a runner
+// that computed fewer are recomputed. Records of
 // older files have none and are recomputed. Stale temporary files of a
 // killed run are removed at the start (util::removeStaleTemporaries).
 //   DIR/images/<scene>/  with "save_images": reference.exr, <cell>.exr and the

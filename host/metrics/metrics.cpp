@@ -3,6 +3,7 @@
 #include "util/error.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -11,7 +12,7 @@
 
 namespace lb::metrics {
 
-Metrics compare(const Image& R, const Image& A)
+void checkComparable(const Image& R, const Image& A)
 {
     if (R.width != A.width || R.height != A.height)
         throw InputError(fmt::format("image sizes differ: reference is {}x{}, test is {}x{}", R.width, R.height,
@@ -21,7 +22,11 @@ Metrics compare(const Image& R, const Image& A)
         if (!std::isfinite(R.px[i]))
             throw InputError(fmt::format("reference pixel (row {}, column {}) is {}: a reference must be finite",
                                          i / R.width, i % R.width, R.px[i]));
+}
 
+Metrics compare(const Image& R, const Image& A)
+{
+    checkComparable(R, A);
     Metrics m;
     m.pixels = static_cast<int64_t>(R.px.size());
 
@@ -57,7 +62,42 @@ Metrics compare(const Image& R, const Image& A)
     const double nan = std::numeric_limits<double>::quiet_NaN();
     m.ueb = n > 0 ? maxOver : nan;
     m.leb = n > 0 ? maxUnder : nan;
+
+    // Third pass: differences of the neighbouring pairs, right and down.
+    double sgd = 0;
+    auto pair = [&](size_t i, size_t j) {
+        if (!std::isfinite(A.px[i]) || !std::isfinite(A.px[j])) return;
+        const double g = (R.px[j] - R.px[i]) - (A.px[j] - A.px[i]);
+        sgd += g * g;
+        ++m.grad_pairs;
+    };
+    const size_t w = static_cast<size_t>(R.width), h = static_cast<size_t>(R.height);
+    for (size_t y = 0; y < h; ++y)
+        for (size_t x = 0; x < w; ++x) {
+            if (x + 1 < w) pair(y * w + x, y * w + x + 1);
+            if (y + 1 < h) pair(y * w + x, (y + 1) * w + x);
+        }
+    // No pair (a 1x1 image, or every pair touches a non-finite pixel): NaN, not 0.
+    m.grad_nmse = m.grad_pairs > 0 ? sgd / double(m.grad_pairs) / (m.mean_ref * m.mean_test) : nan;
     return m;
+}
+
+const std::vector<std::string>& minimisableMetrics()
+{
+    static const std::vector<std::string> keys = {"nmse", "nrmse", "relmse", "grad_nmse", "flip", "ueb", "leb"};
+    return keys;
+}
+
+double minimisable(const Metrics& m, const std::string& key)
+{
+    if (key == "nmse") return m.nmse;
+    if (key == "nrmse") return m.nrmse;
+    if (key == "relmse") return m.relmse;
+    if (key == "grad_nmse") return m.grad_nmse;
+    if (key == "flip") return m.flip;
+    if (key == "ueb") return m.ueb;
+    if (key == "leb") return -m.leb;
+    throw InputError(fmt::format("unknown metric '{}' (expected one of {})", key, fmt::join(minimisableMetrics(), ", ")));
 }
 
 namespace {
@@ -68,6 +108,11 @@ double num(const nlohmann::json& j, const char* key)
     const auto& v = j.at(key);
     return v.is_null() ? std::numeric_limits<double>::quiet_NaN() : v.get<double>();
 }
+// A key that older files do not have: missing reads as NaN.
+double newerNum(const nlohmann::json& j, const char* key)
+{
+    return j.contains(key) ? num(j, key) : std::numeric_limits<double>::quiet_NaN();
+}
 } // namespace
 
 void to_json(nlohmann::json& j, const Metrics& m)
@@ -76,7 +121,8 @@ void to_json(nlohmann::json& j, const Metrics& m)
                        {"relmse", num(m.relmse)},     {"ueb", num(m.ueb)},
                        {"leb", num(m.leb)},           {"nonfinite", m.nonfinite},
                        {"pixels", m.pixels},          {"mean_ref", num(m.mean_ref)},
-                       {"mean_test", num(m.mean_test)}};
+                       {"mean_test", num(m.mean_test)}, {"grad_nmse", num(m.grad_nmse)},
+                       {"grad_pairs", m.grad_pairs},  {"flip", num(m.flip)}};
 }
 
 void from_json(const nlohmann::json& j, Metrics& m)
@@ -90,6 +136,9 @@ void from_json(const nlohmann::json& j, Metrics& m)
     m.pixels = j.at("pixels").get<int64_t>();
     m.mean_ref = num(j, "mean_ref");
     m.mean_test = num(j, "mean_test");
+    m.grad_nmse = newerNum(j, "grad_nmse");
+    m.grad_pairs = j.contains("grad_pairs") ? j.at("grad_pairs").get<int64_t>() : 0;
+    m.flip = newerNum(j, "flip");
 }
 
 } // namespace lb::metrics

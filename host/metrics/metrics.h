@@ -14,6 +14,14 @@
 //   relMSE = mean((R - A)^2 / (R^2 + 1e-2 mean(R)^2))
 //   UEB    = max(0, max_i (A_i - R_i))   largest over-estimate, >= 0, in lux
 //   LEB    = min(0, min_i (A_i - R_i))   largest under-estimate, <= 0, in lux
+//   grad_nmse = (1/M) sum_(i,j) (dR_ij - dA_ij)^2 / (mean(R) mean(A)) over
+//            the M pairs (i, j) of horizontally or vertically neighbouring
+//            pixels (both directions pooled), dR_ij = R_j - R_i and dA_ij =
+//            A_j - A_i: it sees ripples and bumps, and not a smooth bias (a
+//            constant offset gives 0). A pair that touches a non-finite test
+//            pixel is left out of M; the means are NMSE's.
+//   flip   = mean HDR-FLIP of A against R (metrics/flip.h); compare() leaves
+//            it NaN, since it needs the Python co-process of flip.h.
 //
 // Sign convention of the bounds: both are values of the signed error A - R,
 // as in the thesis' tables (e.g. Table B.1: UEB 160.25, LEB -8.4375), so LEB
@@ -29,6 +37,9 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
 
 namespace lb::metrics {
 
@@ -39,14 +50,30 @@ struct Metrics {
     int64_t nonfinite = 0; // test pixels that are NaN or +-inf (excluded)
     int64_t pixels = 0;    // all pixels of the image, non-finite ones included
     double mean_ref = 0, mean_test = 0;  // over the finite pixels, lux
+    double grad_nmse = 0;
+    int64_t grad_pairs = 0;  // neighbour pairs in grad_nmse (those touching non-finite pixels left out)
+    double flip = std::numeric_limits<double>::quiet_NaN();  // NaN: not computed or not available
 };
 
 // Throws lb::InputError when the sizes differ, the images are empty or the
 // reference holds a non-finite pixel.
+void checkComparable(const Image& reference, const Image& test);
+
+// Every metric but flip; throws as checkComparable.
 Metrics compare(const Image& reference, const Image& test);
 
+// The record keys of the metrics a search can minimise (tune's "metric"):
+// nmse, nrmse, relmse, grad_nmse, flip, ueb, leb.
+const std::vector<std::string>& minimisableMetrics();
+// Metric `key` of m as a quantity to minimise: its value, for leb its
+// magnitude -leb (LEB is <= 0). Throws lb::InputError for a key not in
+// minimisableMetrics().
+double minimisable(const Metrics& m, const std::string& key);
+
 // JSON object with the keys nmse, nrmse, relmse, ueb, leb, nonfinite, pixels,
-// mean_ref, mean_test (non-finite numbers become null).
+// mean_ref, mean_test, grad_nmse, grad_pairs, flip (non-finite numbers become
+// null). from_json reads files written before grad_nmse and flip existed:
+// those keys missing read as NaN (grad_pairs as 0).
 void to_json(nlohmann::json& j, const Metrics& m);
 void from_json(const nlohmann::json& j, Metrics& m);
 

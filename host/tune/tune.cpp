@@ -3,6 +3,7 @@
 
 #include "methods/render.h"
 #include "methods/spec.h"
+#include "metrics/flip.h"
 #include "metrics/metrics.h"
 #include "photometry/load.h"
 #include "util/check.h"
@@ -141,7 +142,7 @@ TuneExperiment loadTuneExperiment(const std::string& path)
     if (!j.is_object()) throw InputError(fmt::format("{}: expected a JSON object", path));
     static const std::set<std::string> keys = {
         "name",      "description", "method",    "params",   "reference", "luminaire_dir", "res",
-        "precision", "size",        "extent",    "train",    "validation", "objective",    "algorithm",
+        "precision", "size",        "extent",    "train",    "validation", "objective",    "algorithm", "metric",
         "global",    "global_maxeval", "maxeval", "maxtime", "seed"};
     for (auto it = j.begin(); it != j.end(); ++it)
         if (!keys.count(it.key())) fail(path, it.key(), fmt::format("unknown key (known: {})", fmt::join(keys, ", ")));
@@ -214,6 +215,12 @@ TuneExperiment loadTuneExperiment(const std::string& path)
         if (!j.contains(k)) fail(path, k, "missing (an object with luminaires, heights, rotations)");
     e.train = sceneSet(path, "train", j["train"], lumDir);
     e.validation = sceneSet(path, "validation", j["validation"], lumDir);
+    if (j.contains("metric")) {
+        e.metric = str("metric");
+        const auto& ok = metrics::minimisableMetrics();
+        if (std::find(ok.begin(), ok.end(), e.metric) == ok.end())
+            fail(path, "metric", fmt::format("expected one of {}, found '{}'", fmt::join(ok, ", "), e.metric));
+    }
     if (j.contains("objective")) {
         e.objective = str("objective");
         if (e.objective != "mean" && e.objective != "worst")
@@ -303,9 +310,10 @@ private:
         return out;
     }
 
-    // NMSE of the method with `values` on every case (non-finite pixels: a
-    // large penalty so the search moves away; they are reported too).
-    std::vector<double> nmse(const std::vector<Case>& cs, const std::vector<double>& values, long* nonfinite = nullptr)
+    // The metric of the method with `values` on every case (non-finite
+    // pixels or an undefined value: a large penalty so the search moves
+    // away; non-finite pixels are reported too).
+    std::vector<double> errors(const std::vector<Case>& cs, const std::vector<double>& values, long* nonfinite = nullptr)
     {
         std::vector<std::string> names;
         for (const auto& d : dims_) names.push_back(d.param.name);
@@ -316,8 +324,10 @@ private:
         for (const auto& c : cs) {
             auto r = methods::render(rt_, *c.table, c.scene, s, prec_, ro);
             auto m = metrics::compare(c.ref, r.image);
+            if (e_.metric == "flip") m.flip = metrics::flip(c.ref, r.image);  // only when minimised: it costs most
             if (nonfinite) *nonfinite += m.nonfinite;
-            out.push_back(m.nonfinite > 0 || !std::isfinite(m.nmse) ? 1e6 : m.nmse);
+            const double v = metrics::minimisable(m, e_.metric);
+            out.push_back(m.nonfinite > 0 || !std::isfinite(v) ? 1e6 : v);
         }
         return out;
     }
@@ -379,7 +389,7 @@ void Tuner::stage(const std::string& algo, int maxeval, double maxtime, std::vec
         auto* t = static_cast<std::pair<Tuner*, std::pair<int, int>>*>(data);
         Tuner& self = *t->first;
         auto v = self.values(x);
-        double obj = self.aggregate(self.nmse(self.train_, v));
+        double obj = self.aggregate(self.errors(self.train_, v));
         ++self.evals_;
         if (obj < self.best_) {
             self.best_ = obj;
@@ -420,6 +430,7 @@ json Tuner::run()
     doc["name"] = e_.name;
     doc["method"] = e_.method;
     doc["objective"] = e_.objective;
+    doc["metric"] = e_.metric;
     doc["seed"] = e_.seed;
     doc["device"] = rt_.info().name;
     json dims = json::array();
@@ -441,30 +452,30 @@ json Tuner::run()
 
     auto summary = [&](const std::vector<double>& v, const std::string& algo, int evals) {
         long nfT = 0, nfV = 0;
-        auto tr = nmse(train_, v, &nfT);
-        auto va = nmse(validation_, v, &nfV);
+        auto tr = errors(train_, v, &nfT);
+        auto va = errors(validation_, v, &nfV);
         json s;
         s["params"] = paramsJson(v);
         std::vector<std::string> names;
         for (const auto& d : dims_) names.push_back(d.param.name);
         s["spec"] = specWith(e_.method, names, v);
-        s["train_nmse"] = aggregate(tr);
-        s["validation_nmse"] = aggregate(va);
-        s["train_nmse_per_scene"] = tr;
-        s["validation_nmse_per_scene"] = va;
-        s["train_nmse_mean"] = std::accumulate(tr.begin(), tr.end(), 0.0) / tr.size();
-        s["validation_nmse_mean"] = std::accumulate(va.begin(), va.end(), 0.0) / va.size();
-        s["train_nmse_worst"] = *std::max_element(tr.begin(), tr.end());
-        s["validation_nmse_worst"] = *std::max_element(va.begin(), va.end());
+        for (const auto& [set, x] : {std::pair<std::string, const std::vector<double>*>{"train", &tr}, {"validation", &va}}) {
+            const std::string k = set + "_" + e_.metric;
+            s[k] = aggregate(*x);
+            s[k + "_per_scene"] = *x;
+            s[k + "_mean"] = std::accumulate(x->begin(), x->end(), 0.0) / double(x->size());
+            s[k + "_worst"] = *std::max_element(x->begin(), x->end());
+        }
         s["nonfinite"] = nfT + nfV;
         s["evaluations"] = evals;
         s["algorithm"] = algo;
         return s;
     };
+    const std::string trainKey = "train_" + e_.metric, validationKey = "validation_" + e_.metric;
     doc["default"] = summary(defaults, "none", 0);
     if (!opt_.quiet)
-        fmt::print(stderr, "tune: default  train {:.6g}  validation {:.6g}\n", doc["default"]["train_nmse"].get<double>(),
-                   doc["default"]["validation_nmse"].get<double>());
+        fmt::print(stderr, "tune: default  train {} {:.6g}  validation {:.6g}\n", e_.metric,
+                   doc["default"][trainKey].get<double>(), doc["default"][validationKey].get<double>());
 
     std::vector<double> u;
     for (size_t i = 0; i < dims_.size(); ++i) u.push_back(dims_[i].toUnit(defaults[i]));
@@ -484,11 +495,11 @@ json Tuner::run()
     doc["tuned"] = summary(best, algo, evals_);
     doc["trace"] = trace_;
     doc["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    doc["improved_validation"] = doc["tuned"]["validation_nmse"].get<double>() < doc["default"]["validation_nmse"].get<double>();
+    doc["improved_validation"] = doc["tuned"][validationKey].get<double>() < doc["default"][validationKey].get<double>();
     if (!opt_.quiet)
-        fmt::print(stderr, "tune: tuned {}  train {:.6g}  validation {:.6g}  ({} evaluations, {:.1f} s)\n",
-                   doc["tuned"]["params"].dump(), doc["tuned"]["train_nmse"].get<double>(),
-                   doc["tuned"]["validation_nmse"].get<double>(), evals_, doc["seconds"].get<double>());
+        fmt::print(stderr, "tune: tuned {}  train {} {:.6g}  validation {:.6g}  ({} evaluations, {:.1f} s)\n",
+                   doc["tuned"]["params"].dump(), e_.metric, doc["tuned"][trainKey].get<double>(),
+                   doc["tuned"][validationKey].get<double>(), evals_, doc["seconds"].get<double>());
     return doc;
 }
 
@@ -496,6 +507,9 @@ json Tuner::run()
 
 json runTune(const TuneExperiment& e, const TuneOptions& opt)
 {
+    std::string why;
+    if (e.metric == "flip" && !metrics::flipAvailable(&why))
+        throw Error(fmt::format("{}: \"metric\": flip cannot be minimised here: {}", e.path, why));
     Tuner t(e, opt);
     json doc = t.run();
     fs::create_directories(opt.outDir);

@@ -10,7 +10,9 @@
 //    "luminaire_dir": "luminaires", "res": 24, "precision": "float", "size": [1, 1], "extent": 5,
 //    "train":      {"luminaires": ["lambert.ldt"], "heights": [0.1], "rotations": ["pi/2", "3pi/4"]},
 //    "validation": {"luminaires": ["spot.ldt"],    "heights": [1.1], "rotations": ["pi/2", "3pi/4"]},
-//    "objective": "mean",                        // mean | worst NMSE over the training scenes
+//    "metric": "nmse",                           // what is minimised: any metric a record carries
+//                                                // (nmse, nrmse, relmse, grad_nmse, flip, ueb, leb as |leb|)
+//    "objective": "mean",                        // mean | worst of the metric over the training scenes
 //    "algorithm": "LN_SBPLX",                    // any nlopt name (LN_NELDERMEAD, LN_BOBYQA, ...)
 //    "global": "GN_DIRECT_L", "global_maxeval": 40,   // optional global search before the local one
 //    "maxeval": 30, "maxtime": 60, "seed": 1}
@@ -45,6 +47,7 @@ struct TuneExperiment {
     std::string precision = "float";
     double width = 1, length = 1, extent = 5;
     SceneSet train, validation;
+    std::string metric = "nmse";     // metrics::minimisableMetrics()
     std::string objective = "mean";  // mean | worst
     std::string algorithm = "LN_SBPLX";
     std::string global;              // "" = none
@@ -73,6 +76,9 @@ struct TuneOptions {
 };
 
 // Runs the search and writes outDir/tune.json (and tune.png); returns the document.
+// Its summaries ("default", "tuned") name the metric: train_<metric>,
+// validation_<metric>, ..._per_scene, ..._mean, ..._worst. Throws lb::Error
+// before searching when the metric is flip and flip-evaluator is not available.
 nlohmann::json runTune(const TuneExperiment& e, const TuneOptions& opt);
 
 // The SPEC with `names` set to `values` (canonical text), the rest from `base`.

@@ -1,5 +1,6 @@
 // lumibench compare as outside tools call it (DESIGN section 7), on EXR files
 // written here.
+#include "metrics/flip.h"
 #include "metrics/image.h"
 #include "metrics/png.h"
 #include "testutil.h"
@@ -9,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
 
@@ -72,7 +74,50 @@ TEST_F(CompareCli, JsonHasTheMetrics)
     EXPECT_EQ(j["pixels"].get<int>(), 4);
     EXPECT_DOUBLE_EQ(j["mean_ref"].get<double>(), 2.5);
     EXPECT_DOUBLE_EQ(j["mean_test"].get<double>(), 3.0);
+    // grad_nmse hand computed in tests/metrics/test_metrics.cpp (0.6, exact dyadic: 4 ulp).
+    EXPECT_DOUBLE_EQ(j["grad_nmse"].get<double>(), 0.6);
+    EXPECT_EQ(j["grad_pairs"].get<int>(), 4);
+    // flip: a FLIP value in (0, 1) when flip-evaluator imports (measured 0.193
+    // for these four pixels), null with a warning otherwise; never missing.
+    ASSERT_TRUE(j.contains("flip"));
+    if (metrics::flipAvailable()) {
+        ASSERT_TRUE(j["flip"].is_number()) << r.err;
+        EXPECT_GT(j["flip"].get<double>(), 0.0);
+        EXPECT_LT(j["flip"].get<double>(), 1.0);
+    } else {
+        EXPECT_TRUE(j["flip"].is_null());
+    }
     EXPECT_FALSE(j.contains("pictures"));  // no --png, no pictures
+}
+
+// Without flip-evaluator (here: no Python at all) flip is null, the rest is
+// computed, and one warning says why and how to get it; exit 0.
+TEST_F(CompareCli, FlipIsNullWithOneWarningWhenNotAvailable)
+{
+    // LUMIBENCH_FLIP_PYTHON pointing nowhere stands for a machine without the package.
+    const char* was = std::getenv("LUMIBENCH_FLIP_PYTHON");
+    std::string saved = was ? was : "";
+    setenv("LUMIBENCH_FLIP_PYTHON", (dir / "no-python").c_str(), 1);
+    auto r = run("compare " + ref + " " + test + " --json", dir);
+    auto t = run("compare " + ref + " " + test, dir);
+    if (was)
+        setenv("LUMIBENCH_FLIP_PYTHON", saved.c_str(), 1);
+    else
+        unsetenv("LUMIBENCH_FLIP_PYTHON");
+    ASSERT_EQ(r.code, 0) << r.out << r.err;
+    auto j = nlohmann::json::parse(r.out);
+    ASSERT_TRUE(j.contains("flip"));
+    EXPECT_TRUE(j["flip"].is_null());
+    EXPECT_DOUBLE_EQ(j["nmse"].get<double>(), 0.2);  // the rest as with FLIP (4 ulp: see JsonHasTheMetrics)
+    EXPECT_DOUBLE_EQ(j["grad_nmse"].get<double>(), 0.6);
+    // One warning, naming the missing Python and the way to install it.
+    size_t at = r.err.find("warning: FLIP is not available");
+    ASSERT_NE(at, std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("warning: FLIP", at + 1), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("no-python"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("install-deps.sh"), std::string::npos) << r.err;
+    ASSERT_EQ(t.code, 0) << t.out << t.err;
+    EXPECT_NE(t.out.find("FLIP       n/a"), std::string::npos) << t.out;
 }
 
 TEST_F(CompareCli, TableNamesEveryMetric)
@@ -80,7 +125,7 @@ TEST_F(CompareCli, TableNamesEveryMetric)
     auto r = run("compare " + ref + " " + test, dir);
     ASSERT_EQ(r.code, 0) << r.out << r.err;
     for (const char* s : {"NMSE       2.000000e-01", "UEB        2.000000e+00", "LEB        -1.000000e+00", "NRMSE",
-                          "relMSE", "0 non-finite"})
+                          "relMSE", "0 non-finite", "grad NMSE  6.000000e-01", "FLIP "})
         EXPECT_NE(r.out.find(s), std::string::npos) << s << "\n" << r.out;
 }
 

@@ -1,4 +1,5 @@
 // The results JSON document: round trip, atomic append, merge.
+#include "experiments/report.h"
 #include "experiments/results.h"
 #include "util/error.h"
 
@@ -75,17 +76,22 @@ TEST_F(Results, RecordRoundTripKeepsEveryField)
     r.equal_time_to = "cubature:triangulation=delaunay";
     r.n = 40;
     r.error.relmse = std::numeric_limits<double>::quiet_NaN();  // undefined: null in the file
+    r.error.grad_nmse = 0.75;
+    r.error.grad_pairs = 130560;
+    r.error.flip = 0.1875;
     r.extra["shard"] = 3;                                       // a key this code does not know
     results::Results doc;
     doc.context = results::makeContext("cpu-pocl", "5.0");
-    doc.records = {r, cell("cubature", 1.1, 27.9669)};
+    doc.records = {r, cell("cubature", 1.1, 27.9669)};  // flip not computed: NaN
     results::save(file("r.json"), doc);
 
     auto raw = json::parse(std::ifstream(file("r.json")));
     EXPECT_TRUE(raw["records"][0]["relmse"].is_null());
     for (const char* k : {"method", "params", "luminaire", "height", "rotation", "res", "precision", "time_ms",
-                          "nmse", "nrmse", "relmse", "ueb", "leb", "nonfinite", "equal_time_to", "n", "device"})
+                          "nmse", "nrmse", "relmse", "ueb", "leb", "nonfinite", "equal_time_to", "n", "device",
+                          "grad_nmse", "grad_pairs", "flip"})
         EXPECT_TRUE(raw["records"][0].contains(k)) << k;
+    EXPECT_TRUE(raw["records"][1]["flip"].is_null());  // not available: null, never 0
     EXPECT_FALSE(raw["records"][1].contains("equal_time_to"));  // optional fields only when set
 
     auto back = results::load(file("r.json"));
@@ -111,6 +117,11 @@ TEST_F(Results, RecordRoundTripKeepsEveryField)
     EXPECT_EQ(b.error.ueb, 160.25);
     EXPECT_EQ(b.error.leb, -8.4375);
     EXPECT_EQ(b.error.pixels, 65536);
+    EXPECT_EQ(b.error.grad_nmse, 0.75);
+    EXPECT_EQ(b.error.grad_pairs, 130560);
+    EXPECT_EQ(b.error.flip, 0.1875);
+    EXPECT_TRUE(std::isnan(back.records[1].error.flip));
+    EXPECT_FALSE(b.extra.contains("flip"));  // a known key, not an unknown one kept aside
     EXPECT_EQ(b.equal_time_to.value_or(""), "cubature:triangulation=delaunay");
     EXPECT_EQ(b.n.value_or(0), 40);
     EXPECT_EQ(b.extra["shard"], 3);
@@ -118,6 +129,27 @@ TEST_F(Results, RecordRoundTripKeepsEveryField)
     EXPECT_FALSE(back.records[1].equal_time_to.has_value());
     EXPECT_EQ(back.context["device"], "cpu-pocl");
     EXPECT_EQ(strays(), 0);
+}
+
+// Records of a runner that had no grad_nmse and flip load with both NaN, and
+// the report says no record carries them instead of printing a table of gaps.
+TEST_F(Results, OlderRecordsWithoutTheNewMetricsLoadAndReport)
+{
+    json rec = json(cell("mc", 0.1, 2.5));
+    rec.erase("grad_nmse");
+    rec.erase("grad_pairs");
+    rec.erase("flip");
+    std::ofstream(file("results.json")) << json{{"context", {{"device", "cpu-pocl"}}}, {"records", {rec}}}.dump();
+    auto doc = results::load(file("results.json"));
+    ASSERT_EQ(doc.records.size(), 1u);
+    EXPECT_TRUE(std::isnan(doc.records[0].error.grad_nmse));
+    EXPECT_TRUE(std::isnan(doc.records[0].error.flip));
+    experiments::writeReport(dir.string(), "test");
+    std::ifstream in(dir / "report.md");
+    std::string report{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    EXPECT_NE(report.find("| ARCOS.ldt | float | 0.1 | 2.500e+00 |"), std::string::npos) << report;
+    EXPECT_NE(report.find("No record carries grad_nmse"), std::string::npos) << report;
+    EXPECT_NE(report.find("No record carries flip"), std::string::npos) << report;
 }
 
 TEST(ResultsContext, HasTheDocumentedKeys)

@@ -5,6 +5,7 @@
 #include "experiments/results.h"
 #include "experiments/runner.h"
 #include "methods/registry.h"
+#include "metrics/flip.h"
 #include "util/error.h"
 
 #include "../testutil.h"
@@ -12,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -224,6 +226,10 @@ void expectSameErrors(const results::Results& a, const results::Results& b)
         EXPECT_EQ(r.error.nmse, it->second.error.nmse) << k;
         EXPECT_EQ(r.error.ueb, it->second.error.ueb) << k;
         EXPECT_EQ(r.error.leb, it->second.error.leb) << k;
+        EXPECT_EQ(r.error.grad_nmse, it->second.error.grad_nmse) << k;
+        // FLIP is deterministic too (null on both sides without flip-evaluator)
+        EXPECT_TRUE(r.error.flip == it->second.error.flip || (std::isnan(r.error.flip) && std::isnan(it->second.error.flip)))
+            << k;
         ++compared;
     }
     EXPECT_EQ(compared + eqA, ma.size());
@@ -265,9 +271,30 @@ TEST_F(ExperimentRun, RecordsAreSaneAndAnInterruptedRunResumes)
     ASSERT_EQ(full.records.size(), 12u * 8u);
     EXPECT_EQ(full.context["experiment"], "tiny");
     EXPECT_FALSE(full.context["device"].get<std::string>().empty());
+    // Every record carries grad_nmse and flip (DESIGN section 5), as written:
+    // flip a FLIP value when flip-evaluator imports, null otherwise.
+    const bool flipOk = metrics::flipAvailable();
+    json raw = json::parse(slurp(dir / "a" / "results.json"));
+    for (const auto& r : raw["records"]) {
+        ASSERT_TRUE(r.contains("grad_nmse")) << r.dump();
+        ASSERT_TRUE(r.contains("flip")) << r.dump();
+        EXPECT_EQ(r["inputs"]["metrics"], "nmse nrmse relmse ueb leb grad_nmse flip");
+        if (flipOk) {
+            ASSERT_TRUE(r["flip"].is_number()) << r.dump();
+            // Every method is an approximation (see NMSE below): some visible error, in (0, 1).
+            EXPECT_GT(r["flip"].get<double>(), 0.0) << r.dump();
+            EXPECT_LT(r["flip"].get<double>(), 1.0) << r.dump();
+        } else {
+            EXPECT_TRUE(r["flip"].is_null()) << r.dump();
+        }
+    }
+    if (!flipOk) std::printf("flip-evaluator is not available: checked that flip is null in every record\n");
     size_t eqOk = 0;
     for (auto& r : full.records) {
         EXPECT_EQ(r.res, 16);
+        EXPECT_GT(r.error.grad_nmse, 0) << r.key();
+        EXPECT_TRUE(std::isfinite(r.error.grad_nmse)) << r.key();
+        EXPECT_EQ(r.error.grad_pairs, 2 * 16 * 15) << r.key();  // every pair of a 16 x 16 image
         EXPECT_EQ(r.error.nonfinite, 0) << r.key();
         EXPECT_GT(r.time_ms.median, 0) << r.key();
         EXPECT_GE(r.time_ms.reps, 5);  // DESIGN section 6: median of >= 5
@@ -419,8 +446,14 @@ TEST_F(ExperimentRun, SmokeExperimentProducesResultsPlotsAndReport)
     EXPECT_NE(report.find("MCI=cubature"), std::string::npos);
     size_t pngs = 0;
     for (auto& f : fs::directory_iterator(out / "plots")) pngs += f.path().extension() == ".png";
-    // 2 NMSE-time figures (one per luminaire), 2 per-height figures, 8 image grids.
-    EXPECT_EQ(pngs, 2u + 2u + 8u);
+    // Per metric 2 metric-time figures (one per luminaire) and 2 per-height
+    // figures: NMSE, grad_nmse and, with flip-evaluator, FLIP; 8 image grids.
+    const size_t metricsPlotted = metrics::flipAvailable() ? 3 : 2;
+    EXPECT_EQ(pngs, metricsPlotted * (2u + 2u) + 8u);
+    for (const char* f : {"grad_nmse_h0.1_float.png", "nmse_h0.1_float.png"})
+        EXPECT_TRUE(fs::exists(out / "plots" / f)) << f;
+    for (const char* t : {"## grad_nmse per luminaire and height", "## FLIP per luminaire and height"})
+        EXPECT_NE(report.find(t), std::string::npos) << t;
 }
 
 } // namespace

@@ -2,6 +2,8 @@
 #include "metrics/metrics.h"
 #include "util/error.h"
 
+#include "testutil.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -116,6 +118,91 @@ TEST(Metrics, NonFiniteTestPixelsAreCountedAndExcluded)
     EXPECT_TRUE(std::isnan(all.mean_ref));
 }
 
+// grad_nmse (DESIGN section 5) on R = [1 2; 3 4], A = [2 2; 2 6]: the pairs
+// right and down have dR = 1, 1 (rows) and 2, 2 (columns), dA = 0, 4 and 0, 4,
+// so (dR - dA)^2 = 1, 9, 4, 4: sum 18 over M = 4 pairs, 4.5 / (mean R mean A)
+// = 4.5 / 7.5 = 0.6.
+TEST(GradNmse, HandComputedTwoByTwo)
+{
+    auto m = metrics::compare(img2x2(1, 2, 3, 4), img2x2(2, 2, 2, 6));
+    EXPECT_EQ(m.grad_pairs, 4);
+    // Sum and quotient of small integers are exact; one rounding in the last division: 4 ulp.
+    EXPECT_DOUBLE_EQ(m.grad_nmse, 0.6);
+}
+
+// Closed form on a W x H ramp: R = 1 + 2x, A = 2 + x (x the column). Every
+// horizontal pair has dR = 2, dA = 1, so (dR - dA)^2 = 1 on its H (W - 1)
+// pairs; every vertical pair has dR = dA = 0. With M = H (W - 1) + W (H - 1)
+// and the means 1 + (W - 1) and 2 + (W - 1) / 2:
+//   grad_nmse = H (W - 1) / M / ((1 + (W - 1)) (2 + (W - 1) / 2)).
+// W = 4, H = 3: 9 / 17 / (4 * 3.5) = 9 / 238. NMSE sees a different number:
+// d = 1 - x = [1 0 -1 -2] per row, mean d^2 = 6 / 4, NMSE = 1.5 / 14.
+TEST(GradNmse, RampsOfTwoSlopesMatchTheClosedForm)
+{
+    const int W = 4, H = 3;
+    Image r(W, H), a(W, H);
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            r.at(y, x) = 1 + 2 * x;
+            a.at(y, x) = 2 + x;
+        }
+    auto m = metrics::compare(r, a);
+    EXPECT_EQ(m.grad_pairs, H * (W - 1) + W * (H - 1));
+    // Integer inputs: the sum of squared differences (9) and the means (4 and
+    // 3.5) are exact; the two divisions round once each, the closed form
+    // once: a few ulp apart, within EXPECT_DOUBLE_EQ's 4 ulp.
+    EXPECT_DOUBLE_EQ(m.grad_nmse, 9.0 / 238.0);
+    EXPECT_DOUBLE_EQ(m.nmse, 1.5 / 14.0);
+}
+
+// A constant offset is a smooth bias: every neighbour difference is the
+// reference's, so grad_nmse is exactly 0, while NMSE is not:
+// A = R + 5 on R = [1 2; 3 4] gives d = 5 everywhere, NMSE = 25 / (2.5 * 7.5).
+TEST(GradNmse, DoesNotSeeAConstantOffsetWhileNmseDoes)
+{
+    auto m = metrics::compare(img2x2(1, 2, 3, 4), img2x2(6, 7, 8, 9));
+    EXPECT_EQ(m.grad_nmse, 0.0);  // integers: every difference is exact
+    EXPECT_DOUBLE_EQ(m.nmse, 25.0 / (2.5 * 7.5));  // one or two roundings: 4 ulp
+    EXPECT_GT(m.nmse, 1.0);
+}
+
+// A bump (one pixel too bright in a smooth ramp) costs grad_nmse on each of
+// its pairs; here R = 1..9 on 3 x 3 (row-major), A = R + 1 at (0, 0) and
+// NaN at the centre (1, 1). The centre is counted as non-finite and its
+// four pairs are left out: M = 12 - 4 = 8. The bump's two pairs each have
+// (dR - dA)^2 = 1: sum 2. Means over the 8 finite pixels: R (45 - 5) / 8 = 5,
+// A (40 + 1) / 8 = 41 / 8, so grad_nmse = (2 / 8) / (5 * 41 / 8) = 2 / 205.
+TEST(GradNmse, NonFinitePixelsAndTheirPairsAreLeftOutAndCounted)
+{
+    Image r(3, 3), a(3, 3);
+    for (size_t i = 0; i < 9; ++i) r.px[i] = a.px[i] = double(i + 1);
+    a.px[0] += 1;
+    a.px[4] = std::numeric_limits<double>::quiet_NaN();
+    auto m = metrics::compare(r, a);
+    EXPECT_EQ(m.nonfinite, 1);
+    EXPECT_EQ(m.grad_pairs, 8);
+    EXPECT_DOUBLE_EQ(m.mean_test, 41.0 / 8);  // exact sums of integers, one division
+    EXPECT_DOUBLE_EQ(m.grad_nmse, 2.0 / 205);  // a few roundings of exact integers: 4 ulp
+    // A corner pixel has two pairs only: M = 12 - 2.
+    Image c = r;
+    c.px[8] = std::numeric_limits<double>::infinity();
+    EXPECT_EQ(metrics::compare(r, c).grad_pairs, 10);
+    // Nothing left to compare: NaN, never 0.
+    EXPECT_TRUE(std::isnan(metrics::compare(Image(1, 1, 2.0), Image(1, 1, 3.0)).grad_nmse));
+}
+
+TEST(Metrics, MinimisableNamesEveryMetricAndRefusesOthers)
+{
+    auto m = metrics::compare(img2x2(1, 2, 3, 4), img2x2(2, 2, 2, 6));
+    EXPECT_EQ(metrics::minimisable(m, "nmse"), m.nmse);
+    EXPECT_EQ(metrics::minimisable(m, "grad_nmse"), m.grad_nmse);
+    EXPECT_EQ(metrics::minimisable(m, "leb"), 1.0);  // the magnitude of LEB = -1
+    for (const auto& k : metrics::minimisableMetrics()) EXPECT_NO_THROW(metrics::minimisable(m, k)) << k;
+    std::string what = test::inputErrorOf([&] { metrics::minimisable(m, "psnr"); });
+    EXPECT_NE(what.find("'psnr'"), std::string::npos) << what;
+    EXPECT_NE(what.find("grad_nmse"), std::string::npos) << what;
+}
+
 TEST(Metrics, BadInputIsAnInputError)
 {
     EXPECT_THROW(metrics::compare(Image(2, 2, 1.0), Image(2, 3, 1.0)), InputError);
@@ -133,9 +220,11 @@ TEST(Metrics, JsonHasTheDocumentedKeysAndRoundTrips)
 {
     auto m = metrics::compare(img2x2(1, 2, 3, 4), img2x2(2, 2, 2, 6));
     nlohmann::json j = m;
-    for (const char* k : {"nmse", "nrmse", "relmse", "ueb", "leb", "nonfinite", "pixels", "mean_ref", "mean_test"})
+    for (const char* k : {"nmse", "nrmse", "relmse", "ueb", "leb", "nonfinite", "pixels", "mean_ref", "mean_test",
+                          "grad_nmse", "grad_pairs", "flip"})
         EXPECT_TRUE(j.contains(k)) << k;
-    EXPECT_EQ(j.size(), 9u);
+    EXPECT_EQ(j.size(), 12u);
+    EXPECT_TRUE(j["flip"].is_null());  // compare() does not compute FLIP: null, not 0
     EXPECT_EQ(j["nmse"].get<double>(), m.nmse);
     // A dump and parse keeps doubles exactly (nlohmann writes 17 significant digits).
     auto back = nlohmann::json::parse(j.dump()).get<metrics::Metrics>();
@@ -143,6 +232,18 @@ TEST(Metrics, JsonHasTheDocumentedKeysAndRoundTrips)
     EXPECT_EQ(back.relmse, m.relmse);
     EXPECT_EQ(back.leb, m.leb);
     EXPECT_EQ(back.pixels, 4);
+    EXPECT_EQ(back.grad_nmse, m.grad_nmse);
+    EXPECT_EQ(back.grad_pairs, 4);
+
+    // A record of an older file has no grad_nmse or flip: they read as NaN.
+    nlohmann::json old = j;
+    old.erase("grad_nmse");
+    old.erase("grad_pairs");
+    old.erase("flip");
+    auto o = old.get<metrics::Metrics>();
+    EXPECT_TRUE(std::isnan(o.grad_nmse));
+    EXPECT_TRUE(std::isnan(o.flip));
+    EXPECT_EQ(o.nmse, m.nmse);
 
     // Undefined values are null, and come back as NaN.
     metrics::Metrics u;
