@@ -108,8 +108,51 @@ std::string readFile(const std::string& path, const std::string& what, size_t ma
     return out;
 }
 
-void writeFilesAtomic(const std::vector<std::pair<std::string, std::string>>& files)
+namespace {
+
+// Where the bytes for `path` go: a symbolic link is followed (its target is
+// replaced, the link stays); an existing device, FIFO or socket (--out
+// /dev/null, a pipe) is written in place, since renaming a temporary over it
+// would replace the device node with a plain file.
+struct Target {
+    std::string path;
+    bool special = false;
+};
+
+Target resolveTarget(const std::string& path)
 {
+    std::error_code ec;
+    Target t{path, false};
+    if (fs::is_symlink(fs::symlink_status(path, ec))) {
+        fs::path real = fs::weakly_canonical(path, ec);
+        if (!ec) t.path = real.string();
+    }
+    fs::file_status st = fs::status(t.path, ec);
+    t.special = !ec && fs::exists(st) && !fs::is_regular_file(st) && !fs::is_directory(st);
+    return t;
+}
+
+void writeInPlace(const std::string& path, const std::string& bytes)
+{
+    int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
+    if (fd < 0) throw Error(fmt::format("{}: cannot write: {}", path, std::strerror(errno)));
+    if (!writeAllAndClose(fd, bytes))
+        throw Error(fmt::format("{}: cannot write {} bytes: {}", path, bytes.size(), std::strerror(errno)));
+}
+
+} // namespace
+
+void writeFilesAtomic(const std::vector<std::pair<std::string, std::string>>& input)
+{
+    std::vector<std::pair<std::string, std::string>> files;
+    std::vector<std::pair<std::string, const std::string*>> special;
+    for (const auto& [path, bytes] : input) {
+        Target t = resolveTarget(path);
+        if (t.special)
+            special.push_back({t.path, &bytes});
+        else
+            files.push_back({t.path, bytes});
+    }
     std::vector<std::string> temps;
     auto removeTemps = [&] {
         for (const auto& t : temps) ::unlink(t.c_str());
@@ -138,6 +181,7 @@ void writeFilesAtomic(const std::vector<std::pair<std::string, std::string>>& fi
                                     std::strerror(e)));
         }
     for (const auto& f : files) syncDirectory(f.first);
+    for (const auto& [path, bytes] : special) writeInPlace(path, *bytes);
 }
 
 void writeFileAtomic(const std::string& path, const std::string& bytes) { writeFilesAtomic({{path, bytes}}); }

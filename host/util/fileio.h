@@ -13,6 +13,10 @@
 // and its side files): all temporaries are written first, so a failure of any
 // leaves none of them.
 //
+// A symbolic link is followed (its target is replaced, the link kept); an
+// existing device, FIFO or socket (--out /dev/null) is written in place: a
+// rename would replace the device node itself.
+//
 // Temporary files are named TARGET.tmp.PID.SEQ. One left behind by a killed
 // process (kill -9 cannot be caught) is removed by removeStaleTemporaries(),
 // which deletes only those whose process no longer runs on this host.

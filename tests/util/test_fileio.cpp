@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -70,6 +71,35 @@ TEST(AtomicWrite, WritesAndReplaces)
     util::writeFileAtomic((d / "a.txt").string(), "two");
     EXPECT_EQ(slurp(d / "a.txt"), "two");
     EXPECT_EQ(entries(d), std::vector<std::string>{"a.txt"});  // no temporary left
+}
+
+// Outputs that are not plain files: a FIFO (as --out /dev/null or a pipe) is
+// written in place and stays a FIFO (a rename would have replaced the node
+// with a plain file: run as root, `--out /dev/full` once turned /dev/full
+// into one); a symbolic link keeps being a link and its target gets the
+// bytes.
+TEST(AtomicWrite, SpecialFilesAndLinksAreWrittenThroughNotReplaced)
+{
+    ASSERT_TRUE(fs::is_character_file("/dev/full")) << "/dev/full is not a device here; the full-disk tests need it";
+    fs::path d = tmpDir("special");
+    fs::path fifo = d / "pipe";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    int rd = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK);  // a reader, so the writer's open does not block
+    ASSERT_GE(rd, 0);
+    util::writeFileAtomic(fifo.string(), "through the pipe");
+    char buf[64] = {};
+    ssize_t n = ::read(rd, buf, sizeof buf);
+    ::close(rd);
+    EXPECT_EQ(std::string(buf, n > 0 ? size_t(n) : 0), "through the pipe");
+    EXPECT_TRUE(fs::is_fifo(fifo));
+    EXPECT_EQ(entries(d), std::vector<std::string>{"pipe"});  // no temporary beside it
+
+    util::writeFileAtomic((d / "real.json").string(), "old");
+    fs::create_symlink("real.json", d / "link.json");
+    util::writeFileAtomic((d / "link.json").string(), "new");
+    EXPECT_TRUE(fs::is_symlink(d / "link.json"));
+    EXPECT_EQ(slurp(d / "real.json"), "new");
+    EXPECT_EQ(entries(d), (std::vector<std::string>{"link.json", "pipe", "real.json"}));
 }
 
 // A full disk: the write fails with an error naming the file, the old
