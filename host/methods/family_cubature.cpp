@@ -105,6 +105,7 @@ void registerCubature(Registry& r)
         c.realArg("dyn_weight", o.dynWeight);
         c.realArg("blend_dist", o.blendDist);
     };
+    f.straightDefines = {"-DLB_CUB_RECT_FAN", "-DLB_CUB_RECT_DEL"};
     f.benchSpecs = {"cubature:lanes=1", "cubature:specialize=none,lookup=exact",
                     "cubature:triangulation=delaunay,dynamic=cp+barycentre",
                     "cubature:triangulation=delaunay,dynamic=cp+np+mrp+barycentre",

@@ -28,6 +28,19 @@ Registry builtinFamilies()
 }
 } // namespace
 
+std::string kernelForm(const Family& f, const std::string& defines)
+{
+    if (f.straightDefines.empty()) return "";
+    for (const auto& d : f.straightDefines) {
+        // whole words only: "-DLB_CUB_RECT_FAN" is not in "-DLB_CUB_RECT_FANX"
+        for (size_t at = defines.find(d); at != std::string::npos; at = defines.find(d, at + 1)) {
+            size_t end = at + d.size();
+            if (end == defines.size() || defines[end] == ' ' || defines[end] == '=') return "straight-line";
+        }
+    }
+    return "general";
+}
+
 std::string precisionName(Precision p) { return p == Precision::Double ? "double" : "float"; }
 
 Precision parsePrecision(const std::string& s)

@@ -108,11 +108,20 @@ struct Family {
     // Specs `lumibench bench` times besides the family's default (and its
     // specialize=none form): the structural variants worth a verdict.
     std::vector<std::string> benchSpecs;
+    // The -D names that mark a straight-line form of this family's kernel
+    // (empty: the family has one form, e.g. mc). kernelForm() reads them.
+    std::vector<std::string> straightDefines;
     // Expensive (the reference): one untimed-warm-up-free run in bands of
     // bandRows rows with progress on stderr, cached on disk.
     bool expensive = false;
     int bandRows = 0;
 };
+
+// "straight-line" when the kernel built with `defines` is one of the family's
+// straight-line forms, "general" when the family has such forms but this
+// build is its general kernel, "" for a family with one form. Records carry
+// it (stats.form), so a report can say which verdicts a general kernel made.
+std::string kernelForm(const Family& f, const std::string& defines);
 
 class Registry {
 public:

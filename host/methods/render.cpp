@@ -268,6 +268,9 @@ RenderResult render(ocl::Runtime& rt, const photometry::Table& table, const Scen
     // which kernel variant ran (structural and scene defines): the records
     // say whether a straight-line form or the general kernel was timed
     result.stats["defines"] = prep.options();
+    // the form of the timed kernel: an equal-time verdict is fair where it is the fast one
+    std::string form = kernelForm(fam, timeDefines.empty() ? prep.options() : timeDefines);
+    if (!form.empty()) result.stats["form"] = form;
     if (!timeDefines.empty()) result.stats["time_defines"] = timeDefines;
     result.nonfinite = countNonfinite(result.image);
     if (fam.expensive) {

@@ -13,6 +13,7 @@ void addStraightLineOptions(Family& f, const std::string& define, StraightApplie
                                      "intensity lookup: trig-free table (photometry/lut.h, as mc) or the exact "
                                      "bilinear one"));
     const bool straight = !define.empty();
+    if (straight) f.straightDefines = {define};
     if (straight) {
         f.params.push_back(Param::choice("specialize", "auto", {"auto", "none"},
                                          "auto: the straight-line form where the scene allows it, 1D table for "

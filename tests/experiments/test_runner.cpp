@@ -454,6 +454,16 @@ TEST_F(ExperimentRun, SmokeExperimentProducesResultsPlotsAndReport)
         EXPECT_TRUE(fs::exists(out / "plots" / f)) << f;
     for (const char* t : {"## grad_nmse per luminaire and height", "## FLIP per luminaire and height"})
         EXPECT_NE(report.find(t), std::string::npos) << t;
+    // every record names the form of its timed kernel; the smoke scenes are
+    // unclipped, so the cubature ran its straight-line fan, and the report says so
+    for (auto& r : doc.records)
+        if (r.method == "cubature") {
+            ASSERT_TRUE(r.extra.contains("stats")) << r.key();
+            EXPECT_EQ(r.extra["stats"].value("form", ""), "straight-line") << r.key();
+        }
+    EXPECT_NE(report.find("| kernel form |"), std::string::npos);
+    EXPECT_NE(report.find("| cubature |"), std::string::npos);
+    EXPECT_EQ(report.find("**general**"), std::string::npos);
 }
 
 } // namespace

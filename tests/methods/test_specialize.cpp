@@ -139,6 +139,28 @@ TEST(Specialize, LutMcCloseToExactMc)
 
 // ---- The cubature's straight-line rectangle fan (rule rectFan) ----
 
+// The form a record names (stats.form): straight-line where the family's
+// define is in the build options (whole word), general where the family has
+// a straight-line form but this build is not it, nothing for one-form families.
+TEST(Specialize, KernelFormNamesStraightLineAndGeneralBuilds)
+{
+    EXPECT_EQ(kernelForm(family("cubature"), " -DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8"), "straight-line");
+    EXPECT_EQ(kernelForm(family("cubature"), " -DLB_CUB_TRI=1 -DLB_CUB_RECT_DEL"), "straight-line");
+    EXPECT_EQ(kernelForm(family("cubature"), " -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=15 -DLB_LUT"), "general");
+    EXPECT_EQ(kernelForm(family("voronoi"), " -DLB_VOR_RECT"), "straight-line");
+    EXPECT_EQ(kernelForm(family("voronoi"), " -DLB_VOR_RECTANGLE"), "general");
+    EXPECT_EQ(kernelForm(family("mc"), " -DLB_LUT"), "");
+    LB_REQUIRE_RUNTIME(rt);
+    RenderOptions opt;
+    opt.reps = 1;
+    Scene s = scene(1.0, 3 * M_PI / 4, 16);
+    auto t = asymmetric();
+    EXPECT_EQ(render(*rt, t, s, parseSpec("cubature"), Precision::Float, opt).stats.value("form", ""), "straight-line");
+    EXPECT_EQ(render(*rt, t, s, parseSpec("cubature:specialize=none"), Precision::Float, opt).stats.value("form", ""),
+              "general");
+    EXPECT_FALSE(render(*rt, t, s, parseSpec("mc:n=2"), Precision::Float, opt).stats.contains("form"));
+}
+
 TEST(Specialize, CubatureRectFanRule)
 {
     auto t = asymmetric();
