@@ -43,17 +43,23 @@ void registerCubature(Registry& r)
                       "light (thesis Eq. 5.11)"),
         Param::list("dynamic", "cp", {"cp", "np", "mrp", "barycentre", "none"},
                     "dynamic points added to the clipped light's corners ('+'-joined; none = corners only)"),
-        Param::real("plane_eps", 1e-3, 1e-6, 0.1, Scale::Log,
+        // Ranges from geometry (a tuner searches them): plane_eps up to 1 m, the
+        // side of the normalized scene's light (a larger shift moves the
+        // receiver farther than the light is wide); corner_inset the whole way
+        // from the corner (0) to the corner mean (1); blend_dist down to 0.4 m,
+        // 2/3 of the nearest light-centre distance of the published scenes
+        // (0.6 m at h = 0.1): below it every pixel is already pure grid MC.
+        Param::real("plane_eps", 1e-3, 1e-6, 1.0, Scale::Log,
                     "receivers closer than this (m) to the light's plane are moved to this distance (paper 5.3)"),
         Param::real("horizon_eps", 0.0, 0.0, 0.5, Scale::Linear,
                     "clip the light at n_x . (p - x) >= this (m): the tilted horizon of thesis 5.2.4 (it used 0.1)"),
-        Param::real("corner_inset", 0.0, 0.0, 0.5, Scale::Linear,
+        Param::real("corner_inset", 0.0, 0.0, 1.0, Scale::Linear,
                     "the corner samples look the radiance up this fraction of the way towards the clipped light's "
                     "corner mean (0 = at the corners; the triangles keep their weights)"),
         Param::real("dyn_weight", 1.0, 0.0, 4.0, Scale::Linear,
                     "scale of the dynamic samples' weights, all weights rescaled to the same sum (1 = the "
                     "triangulation's weights)"),
-        Param::real("blend_dist", 1e6, 0.5, 1e6, Scale::Log,
+        Param::real("blend_dist", 1e6, 0.4, 1e6, Scale::Log,
                     "beyond this distance (m) from the light's centre the result blends linearly into a 3 x 3 grid "
                     "MC estimate, fully MC from 1.5x on (thesis 6.6; the default 1e6 = never: beyond every scene of the "
                     "suite, the h = 1000 far-field stability cases included)"),

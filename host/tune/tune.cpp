@@ -354,6 +354,21 @@ private:
         return p;
     }
 
+    // The parameters of v within 1 % of the search range (in the search's own
+    // scale, as nlopt sees it) from a bound: [{param, value, bound lo|hi, limit}].
+    json atBound(const std::vector<double>& v) const
+    {
+        json out = json::array();
+        for (size_t i = 0; i < dims_.size(); ++i) {
+            const double u = dims_[i].toUnit(v[i]);
+            const auto& p = dims_[i].param;
+            if (u <= 0.01 || u >= 0.99)
+                out.push_back({{"param", p.name}, {"value", v[i]}, {"bound", u <= 0.01 ? "lo" : "hi"},
+                               {"limit", u <= 0.01 ? p.lo : p.hi}});
+        }
+        return out;
+    }
+
     // One nlopt stage from u0; updates best_ and the trace.
     void stage(const std::string& algo, int maxeval, double maxtime, std::vector<double>& u);
 
@@ -469,6 +484,7 @@ json Tuner::run()
         s["nonfinite"] = nfT + nfV;
         s["evaluations"] = evals;
         s["algorithm"] = algo;
+        s["at_bound"] = atBound(v);
         return s;
     };
     const std::string trainKey = "train_" + e_.metric, validationKey = "validation_" + e_.metric;
@@ -496,6 +512,13 @@ json Tuner::run()
     doc["trace"] = trace_;
     doc["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     doc["improved_validation"] = doc["tuned"][validationKey].get<double>() < doc["default"][validationKey].get<double>();
+    if (!opt_.quiet)
+        for (const auto& b : doc["tuned"]["at_bound"])
+            fmt::print(stderr,
+                       "tune: warning: {} = {:.6g} ended within 1 % of the search range from its {} bound {:.6g}: "
+                       "the optimum may lie beyond it (the ranges: tune.json, \"search\")\n",
+                       b["param"].get<std::string>(), b["value"].get<double>(), b["bound"].get<std::string>(),
+                       b["limit"].get<double>());
     if (!opt_.quiet)
         fmt::print(stderr, "tune: tuned {}  train {} {:.6g}  validation {:.6g}  ({} evaluations, {:.1f} s)\n",
                    doc["tuned"]["params"].dump(), e_.metric, doc["tuned"][trainKey].get<double>(),

@@ -141,6 +141,23 @@ TEST(Tune, SmokeImprovesValidation)
     EXPECT_LE(doc["tuned"]["evaluations"].get<int>(), 30);  // the experiment's maxeval
     EXPECT_EQ(doc["trace"].size(), doc["tuned"]["evaluations"].get<size_t>());
     EXPECT_EQ(doc["tuned"]["nonfinite"].get<long>(), 0);
+    // Parameters within 1 % of the search range from a bound are reported: the
+    // defaults have horizon_eps = 0, its lower bound, and plane_eps = 1e-3, the
+    // middle of its log range [1e-6, 1]; every tuned entry really is that close.
+    const auto& db = doc["default"]["at_bound"];
+    ASSERT_EQ(db.size(), 1u) << db.dump();
+    EXPECT_EQ(db[0]["param"], "horizon_eps");
+    EXPECT_EQ(db[0]["bound"], "lo");
+    for (const auto& b : doc["tuned"]["at_bound"]) {
+        const std::string name = b["param"];
+        for (const auto& s : doc["search"])
+            if (s["name"] == name) {
+                const double lo = s["lo"], hi = s["hi"], v = b["value"];
+                const bool log = s["scale"] == "log";
+                const double u = log ? std::log(v / lo) / std::log(hi / lo) : (v - lo) / (hi - lo);
+                EXPECT_TRUE(u <= 0.01 || u >= 0.99) << name << " " << v;
+            }
+    }
     // The convergence plot (plots/tune.py) when the Debian python3 is there.
     if (fs::exists("/usr/bin/python3")) {
         ASSERT_TRUE(fs::exists(out / "tune.png"));
