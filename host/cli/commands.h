@@ -21,9 +21,6 @@ void addTuneCommand(CLI::App& app);
 void addStabilityCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);
 
-// For commands whose issue has not landed: a clear message and exit code 3.
-[[noreturn]] void notImplemented(const std::string& what);
-
 // The normalized scene from the flags render and bench share, each
 // range-checked with a message naming the flag (limits in scene/scene.h;
 // cmd_render.cpp).

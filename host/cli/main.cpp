@@ -7,18 +7,11 @@
 
 #include <iostream>
 
-namespace lb::cli {
-void notImplemented(const std::string& what)
-{
-    throw Error(what + ": not implemented yet", kExitNotImplemented);
-}
-} // namespace lb::cli
-
 int main(int argc, char** argv)
 {
     CLI::App app{"lumibench: a benchmark of real-time approximations of photometric polygonal lights\n"
                  "(scattered sampling / cubature against Monte Carlo integration and a converged reference).\n"
-                 "Conventions: ../shared/DESIGN.md. Exit codes: 0 ok, 1 error, 2 bad input, 3 not implemented.",
+                 "Conventions: ../shared/DESIGN.md. Exit codes: 0 ok, 1 error, 2 bad input.",
                  "lumibench"};
     app.require_subcommand(1);
     app.set_help_all_flag("--help-all", "Print help for every subcommand");

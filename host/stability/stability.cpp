@@ -295,8 +295,6 @@ std::vector<CaseResult> run(ocl::Runtime& rt, const Options& opt)
                 if (row.err.nonfinite > 0) row.failures.push_back(fmt::format("{} non-finite pixels", row.err.nonfinite));
                 if (c.expect == Expect::Zero && row.maxAbs != 0)
                     row.failures.push_back(fmt::format("not exactly zero: max {} lx", row.maxAbs));
-                if (row.err.maxRelErr > c.maxRelErr)
-                    row.failures.push_back(fmt::format("max_rel_err {:.3g} > {:.3g}", row.err.maxRelErr, c.maxRelErr));
                 if (!(row.fdDiff <= c.maxFd))
                     row.failures.push_back(fmt::format("float vs double {:.3g} > {:.3g}", row.fdDiff, c.maxFd));
                 if (c.expect == Expect::PointLimit) {

@@ -39,7 +39,7 @@
 namespace lb::stability {
 
 enum class Expect {
-    Finite,      // finite everywhere, errors reported (and bounded by maxRelErr)
+    Finite,      // finite everywhere; errors reported (max_rel_err is a method's inherent error, not bounded)
     PointLimit,  // far field: every method within pointBound of the point light
     Zero,        // the luminaire sends nothing towards the receiver: all pixels exactly 0
     Rejected,    // degenerate light: render() must throw lb::InputError
@@ -54,8 +54,6 @@ struct Case {
     Expect expect = Expect::Finite;
     bool oddRes = false;       // force an odd resolution (a pixel row exactly at y = 0)
     bool quick = false;        // part of the --quick subset (CI)
-    double maxRelErr = 1e30;   // Finite / PointLimit: bound on max_rel_err of every method (inherent error)
-    double pointBound = 0;     // PointLimit: bound on point_diff
     double maxFd = 0.05;       // bound on fd_diff (float vs double of one method)
 };
 

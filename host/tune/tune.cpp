@@ -229,9 +229,6 @@ TuneExperiment loadTuneExperiment(const std::string& path)
     auto checkAlgo = [&](const std::string& k, const std::string& name) {
         if (nlopt_algorithm_from_string(name.c_str()) < 0)
             fail(path, k, fmt::format("unknown nlopt algorithm '{}' (e.g. LN_SBPLX, LN_NELDERMEAD, GN_DIRECT_L)", name));
-        nlopt_algorithm a = nlopt_algorithm_from_string(name.c_str());
-        std::string full = nlopt_algorithm_name(a);
-        (void)full;
     };
     if (j.contains("algorithm")) e.algorithm = str("algorithm");
     checkAlgo("algorithm", e.algorithm);

@@ -7,8 +7,8 @@
 namespace lb {
 
 // Exit codes of build/lumibench (documented in --help):
-//   1 internal or device error, 2 bad input (file, arguments), 3 not implemented.
-enum ExitCode { kExitError = 1, kExitInput = 2, kExitNotImplemented = 3 };
+//   1 internal or device error, 2 bad input (file, arguments).
+enum ExitCode { kExitError = 1, kExitInput = 2 };
 
 struct Error : std::runtime_error {
     int code;
