@@ -38,6 +38,7 @@ except ImportError:
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import image_grid  # noqa: E402
+from atomic import save_figure  # noqa: E402
 
 
 def finite(v):
@@ -144,7 +145,7 @@ def metric_time(records, out, dpi, key, name):
         fig.suptitle("{} ({}): {} against run time".format(stem(lum), prec, name))
         fig.tight_layout(rect=(0, min(0.4, 0.035 * rows / max(1, len(heights)) * 4), 1, 0.97))
         path = os.path.join(out, "{}_time_{}_{}.png".format(key, safe(stem(lum)), prec))
-        fig.savefig(path, dpi=dpi)
+        save_figure(fig, path, dpi=dpi)
         plt.close(fig)
         files.append(path)
     return files
@@ -184,7 +185,7 @@ def metric_per_height(records, out, dpi, key, name):
         ax.legend(fontsize=7)
         fig.tight_layout()
         path = os.path.join(out, "{}_h{}_{}.png".format(key, h, prec))
-        fig.savefig(path, dpi=dpi)
+        save_figure(fig, path, dpi=dpi)
         plt.close(fig)
         files.append(path)
     return files

@@ -28,6 +28,7 @@ matplotlib.use("Agg")  # files only, no display
 import matplotlib.image as mpimg  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.patches import Patch  # noqa: E402
+from atomic import save_figure  # noqa: E402
 
 # The colours of host/metrics/tonemap.h (kOrange, kBlue, kNonFinite), for the legend.
 ORANGE, BLUE, MAGENTA = (1.0, 128 / 255, 0.0), (0.0, 102 / 255, 1.0), (1.0, 0.0, 1.0)
@@ -106,7 +107,7 @@ def main(argv=None):
                   Patch(color=BLUE, label="too dark (full at |LEB|)"),
                   Patch(color=MAGENTA, label="non-finite")]
         fig.legend(handles=legend, loc="lower center", ncol=4, fontsize=7, frameon=False)
-    fig.savefig(args.out, dpi=args.dpi)
+    save_figure(fig, args.out, dpi=args.dpi)
     print(args.out)
 
 

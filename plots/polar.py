@@ -22,6 +22,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+from atomic import save_figure  # noqa: E402
 
 
 def load(src, binary):
@@ -68,7 +69,7 @@ def main():
     ax.set_title(a.title or os.path.basename(d.get("file") or "luminaire"), fontsize=10)
     ax.legend(loc="upper right", fontsize=8, bbox_to_anchor=(1.15, 1.1))
     fig.text(0.02, 0.02, f"cd, max {d['max_cd']:.0f}; flux {d['flux_lm']:.0f} lm", fontsize=8)
-    fig.savefig(a.out, dpi=120, bbox_inches="tight")
+    save_figure(fig, a.out, dpi=120, bbox_inches="tight")
 
 
 if __name__ == "__main__":

@@ -10,6 +10,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from atomic import save_figure  # noqa: E402
 
 
 def main():
@@ -31,7 +32,7 @@ def main():
                  fontsize=9)
     ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(sys.argv[2], dpi=120)
+    save_figure(fig, sys.argv[2], dpi=120)
 
 
 if __name__ == "__main__":

@@ -51,5 +51,51 @@ TEST(Plots, ImageGridOfComparePictures)
     fs::remove_all(dir);
 }
 
+// Plot files are written atomically (plots/atomic.py): a savefig that fails
+// half-way (here it writes some bytes and then raises ENOSPC) leaves the old
+// figure and no temporary; a successful one leaves the PNG and no temporary.
+TEST(Plots, FiguresAreWrittenAtomically)
+{
+    if (sh(python() + " -c 'import matplotlib' 2>/dev/null") != 0 && !test::deviceRequired())
+        GTEST_SKIP() << python() << " has no matplotlib";
+    fs::path dir = fs::temp_directory_path() / ("lb_atomic_plot_" + std::to_string(getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string script = (dir / "t.py").string();
+    FILE* f = std::fopen(script.c_str(), "w");
+    ASSERT_NE(f, nullptr);
+    std::fprintf(f, R"(import errno, os, sys
+sys.path.insert(0, %s)
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+from atomic import save_figure
+d = %s
+target = os.path.join(d, "fig.png")
+open(target, "w").write("old")
+fig = plt.figure()
+def broken(path, **kw):
+    open(path, "wb").write(b"half a png")
+    raise OSError(errno.ENOSPC, "No space left on device")
+real = fig.savefig
+fig.savefig = broken
+try:
+    save_figure(fig, target, dpi=50)
+    sys.exit("no error")
+except OSError:
+    pass
+assert open(target).read() == "old", "the old figure was replaced"
+assert sorted(os.listdir(d)) == ["fig.png", "t.py"], os.listdir(d)
+fig.savefig = real
+save_figure(fig, target, dpi=50)
+assert open(target, "rb").read(8) == b"\x89PNG\r\n\x1a\n", "not a PNG"
+assert sorted(os.listdir(d)) == ["fig.png", "t.py"], os.listdir(d)
+)",
+                 ("'" + test::sourceDir() + "/plots'").c_str(), ("'" + dir.string() + "'").c_str());
+    std::fclose(f);
+    EXPECT_EQ(sh(python() + " " + script), 0);
+    fs::remove_all(dir);
+}
+
 } // namespace
 } // namespace lb
