@@ -58,11 +58,11 @@
 #if defined(LB_CUB_RECT_DEL)
 #define LB_CUB_RECT_CALL(s, nt, nf)                                                                             \
     lb_cub_rect_del##s(lum, ou, v0c, hc, P[LB_P_W], lc, R(1) / (P[LB_P_W] * P[LB_P_L]), au, av, an, LB_CUB_WEIGHT,          \
-                       LB_CUB_NORMALIZE, plane_eps, corner_inset, dyn_weight, &nt, &nf)
+                       LB_CUB_NORMALIZE, corner_inset, dyn_weight, &nt, &nf)
 #elif defined(LB_CUB_RECT_FAN)
 #define LB_CUB_RECT_CALL(s, nt, nf)                                                                             \
     lb_cub_rect_fan##s(lum, ou, v0c, hc, P[LB_P_W], lc, R(1) / (P[LB_P_W] * P[LB_P_L]), au, av, an, LB_CUB_WEIGHT,          \
-                       (LB_CUB_DYNAMIC & LB_CUB_CP) != 0, LB_CUB_NORMALIZE, plane_eps, corner_inset, dyn_weight, \
+                       (LB_CUB_DYNAMIC & LB_CUB_CP) != 0, LB_CUB_NORMALIZE, corner_inset, dyn_weight,            \
                        &nt);                                                                                     \
     nf = 0
 #endif
