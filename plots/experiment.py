@@ -1,7 +1,8 @@
 #!/usr/bin/python3
-"""Figures of an experiment run: reads DIR/results.json, writes DIR/plots/*.png.
+"""Figures of an experiment run: reads DIR/results.json (or DIR/results.csv),
+writes DIR/plots/*.png.
 
-    /usr/bin/python3 plots/experiment.py DIR [--max-grids K]
+    /usr/bin/python3 plots/experiment.py DIR|DIR/results.json|DIR/results.csv [--max-grids K]
 
 - nmse_time_<luminaire>_<precision>.png: NMSE against median kernel time,
   log-log, one panel per height (rows) and rotation (columns): the MCI curve
@@ -21,7 +22,6 @@ when matplotlib is missing (lumibench then still writes report.md).
 """
 import argparse
 import collections
-import json
 import math
 import os
 import sys
@@ -39,6 +39,7 @@ except ImportError:
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import image_grid  # noqa: E402
 from atomic import save_figure  # noqa: E402
+from results_io import load_records  # noqa: E402
 
 
 def finite(v):
@@ -216,13 +217,17 @@ def grids(records, dir_, out, max_grids):
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("dir", help="results directory (with results.json)")
+    ap.add_argument("dir", help="results directory (with results.json or results.csv), or one of those files; "
+                    "the figures go to plots/ beside it")
     ap.add_argument("--max-grids", type=int, default=8, help="image grids for at most this many scenes")
     ap.add_argument("--dpi", type=int, default=110)
     args = ap.parse_args(argv)
-    with open(os.path.join(args.dir, "results.json")) as f:
-        doc = json.load(f)
-    records = doc["records"]
+    try:
+        records = load_records(args.dir)
+    except (OSError, ValueError) as e:
+        sys.exit("experiment.py: {}".format(e))
+    if not os.path.isdir(args.dir):
+        args.dir = os.path.dirname(os.path.abspath(args.dir))
     out = os.path.join(args.dir, "plots")
     os.makedirs(out, exist_ok=True)
     files = []

@@ -48,19 +48,32 @@ def fmt(v, spec):
 
 
 def caption(prefix):
-    """NMSE / UEB / LEB (and grad_nmse / FLIP where the file has them) from PREFIX.json, or ''."""
+    """NMSE / UEB / LEB (and grad_nmse / FLIP where the file has them) from PREFIX.json, or ''.
+    Short lines (at most about 24 characters), so that the caption fits under a picture."""
     path = prefix + ".json"
     if not os.path.exists(path):
         return ""
     with open(path) as f:
         m = json.load(f)
-    text = "NMSE {}  UEB {} lx  LEB {} lx".format(
-        fmt(m.get("nmse"), ".3g"), fmt(m.get("ueb"), "+.3g"), fmt(m.get("leb"), "+.3g"))
+    lines = ["NMSE {}".format(fmt(m.get("nmse"), ".3g")),
+             "UEB {} lx".format(fmt(m.get("ueb"), "+.3g")),
+             "LEB {} lx".format(fmt(m.get("leb"), "+.3g"))]
     if "grad_nmse" in m or "flip" in m:
-        text += "\ngrad_nmse {}  FLIP {}".format(fmt(m.get("grad_nmse"), ".3g"), fmt(m.get("flip"), ".3g"))
+        lines.append("grad_nmse {}".format(fmt(m.get("grad_nmse"), ".3g")))
+        lines.append("FLIP {}".format(fmt(m.get("flip"), ".3g")))
     if m.get("nonfinite"):
-        text += "\n{} non-finite pixels".format(m["nonfinite"])
-    return text
+        lines.append("{} non-finite px".format(m["nonfinite"]))
+    # two per line where they fit side by side
+    return "\n".join("   ".join(lines[i:i + 2]) if len(" ".join(lines[i:i + 2])) <= 26 else
+                     "\n".join(lines[i:i + 2]) for i in range(0, len(lines), 2))
+
+
+def inside(fig, artist):
+    """Whether `artist`'s drawn extent lies within the figure (after a draw)."""
+    fig.canvas.draw()
+    box = artist.get_window_extent(renderer=fig.canvas.get_renderer())
+    W, H = fig.canvas.get_width_height()
+    return box.x0 >= -0.5 and box.y0 >= -0.5 and box.x1 <= W + 0.5 and box.y1 <= H + 0.5
 
 
 def main(argv=None):
@@ -84,7 +97,8 @@ def main(argv=None):
                 sys.exit(f"image_grid: {prefix + suffix} not found (write it with lumibench compare --png {prefix})")
 
     n = len(rows)
-    height = n * (args.size + 0.35) + (0 if args.no_legend else 0.3)
+    lines = max([caption(p).count("\n") + 1 for _, p in rows if caption(p)] + [0])
+    height = n * (args.size + 0.35 + 0.14 * lines) + (0 if args.no_legend else 0.3)
     fig, axes = plt.subplots(n, 3, figsize=(3 * args.size, height), squeeze=False)
     for i, (label, prefix) in enumerate(rows):
         for j, suffix in enumerate(("_ref.png", "_test.png", "_err.png")):
@@ -95,7 +109,7 @@ def main(argv=None):
             if i == 0:
                 ax.set_title(columns[j])
         axes[i][0].set_ylabel(label)
-        axes[i][2].set_xlabel(caption(prefix), fontsize=8)
+        axes[i][2].set_xlabel(caption(prefix), fontsize=7)
     if args.title:
         fig.suptitle(args.title)
     # Room at the bottom for the legend of the error colours (0.3 inch).
@@ -107,8 +121,13 @@ def main(argv=None):
                   Patch(color=BLUE, label="too dark (full at |LEB|)"),
                   Patch(color=MAGENTA, label="non-finite")]
         fig.legend(handles=legend, loc="lower center", ncol=4, fontsize=7, frameon=False)
+    for ax in axes[:, 2]:
+        if ax.xaxis.label.get_text() and not inside(fig, ax.xaxis.label):
+            sys.stderr.write("image_grid: warning: a caption does not fit the figure (--size larger?)\n")
     save_figure(fig, args.out, dpi=args.dpi)
+    plt.close(fig)
     print(args.out)
+    return fig
 
 
 if __name__ == "__main__":

@@ -12,14 +12,20 @@ its time with the mean N over the rotations in parentheses. Below the table:
 in how many single scenes and stitched rows each method beats its equal-time
 MCI, and how many equal-time pairs missed the tolerance. Standard library only.
 
-Usage: python3 plots/stitched_table.py DIR/results.json[.xz] [--methods A,B,...]
+Usage: python3 plots/stitched_table.py DIR/results.json[.xz]|DIR/results.csv|DIR [--methods A,B,...]
+
+(lumibench's own report computes the same quantity for its tables,
+metrics::pooled in host/metrics/metrics.h, weighting each rotation by its
+pixels; for equal pixel counts, as here, the two forms are one.)
 """
 import argparse
 import collections
-import json
 import lzma
 import os
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from results_io import load_records  # noqa: E402
 
 
 def stitched(recs):
@@ -39,14 +45,9 @@ def main():
     ap.add_argument("--methods", help="comma-separated method labels to show (default: all, in file order)")
     a = ap.parse_args()
     try:
-        opener = lzma.open if a.results.endswith(".xz") else open
-        with opener(a.results, "rt") as f:
-            doc = json.load(f)
+        recs = load_records(a.results)
     except (OSError, ValueError, lzma.LZMAError) as e:
         sys.exit(f"{a.results}: {e}")
-    recs = doc.get("records")
-    if not isinstance(recs, list):
-        sys.exit(f"{a.results}: no 'records' list (not a lumibench results file)")
     methods, eq_labels = [], []
     groups = collections.defaultdict(list)   # (lum, h, column) -> records
     for r in recs:

@@ -1,19 +1,36 @@
 #!/usr/bin/env bash
-# Installs the dependencies, builds, lists the OpenCL devices and runs the
-# published evaluation (experiments/paper.json) at a resolution that finishes
-# in minutes on 2 cores (RES, default 32, about 23 min on the 7 Zumtobel files;
-# the published figures use 512), every method timed at TIME_RES x TIME_RES
-# pixels (default 128 here; the equal-time protocol's own default is 512).
+# The main job: installs the dependencies, builds, lists the OpenCL devices
+# and runs an evaluation of SCT (cubature) against MCI at equal time on the
+# seven luminaires, then names the report.
+#
+#   bash scripts/run-main.sh           experiments/main.json: a subset of the
+#                                      published evaluation that answers in
+#                                      minutes (4 heights x 3 rotations, 32 x 32
+#                                      pixels, timed at 128 x 128)
+#   FULL=1 bash scripts/run-main.sh    experiments/paper.json: the whole
+#                                      published evaluation (6 heights x 5
+#                                      rotations, MCI curve to N = 1024)
+#
 # Luminaires: the seven Zumtobel files of the paper in ../shared/luminaires/zumtobel
-# when present, else the suite's own in luminaires/. Results, report and plots:
-# OUT (default out/paper)/{results.json,report.md,plots/}. Rerunning resumes.
+# when present, else the suite's own in luminaires/. RES (default 32) and
+# TIME_RES (default 128; the equal-time protocol's own default is 512) set the
+# error images' and the timed launches' pixels per side. Results, table and
+# report: OUT (default out/main, with FULL=1 out/paper)/{results.json,
+# results.csv,report.html,report.md,plots/,images/}. Rerunning resumes.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 bash scripts/build.sh
 ./build/lumibench devices
-out=${OUT:-out/paper}
+if [ "${FULL:-0}" = 1 ]; then
+  exp=experiments/paper.json
+  out=${OUT:-out/paper}
+else
+  exp=experiments/main.json
+  out=${OUT:-out/main}
+fi
 lum=()
 if [ -d ../shared/luminaires/zumtobel ]; then lum=(--luminaires ../shared/luminaires/zumtobel); fi
-./build/lumibench run experiments/paper.json --out "$out" --res "${RES:-32}" --time-res "${TIME_RES:-128}" "${lum[@]}"
-echo "report: $out/report.md"
+echo "run-main: $exp -> $out (progress with ETA below, one line per scene)"
+./build/lumibench run "$exp" --out "$out" --res "${RES:-32}" --time-res "${TIME_RES:-128}" "${lum[@]}"
+echo "report: $out/report.html (open it in a browser; also $out/report.md, the records as a table: $out/results.csv)"

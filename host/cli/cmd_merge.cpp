@@ -1,6 +1,7 @@
 // lumibench merge --out DIR IN... : merges the results of shards (directories
 // holding results.json, or results files) into DIR/results.json, then writes
-// DIR/report.md and DIR/plots/ (unless --no-report).
+// DIR/results.csv, DIR/report.md, DIR/report.html and DIR/plots/ (unless
+// --no-report).
 #include "cli/commands.h"
 
 #include "experiments/report.h"
@@ -30,8 +31,8 @@ void addMergeCommand(CLI::App& app)
                  "wins. An equal-time MCI partner's cell is its scene, device and matched method, so each method "
                  "keeps one partner per scene: the later input's.");
     cmd->add_option("inputs", o->inputs, "Result directories (with results.json) or results files")->required();
-    cmd->add_option("--out", o->out, "Output directory (DIR/results.json, report.md, plots/)")->required();
-    cmd->add_flag("--no-report", o->noReport, "Do not write report.md and plots");
+    cmd->add_option("--out", o->out, "Output directory (DIR/results.json, results.csv, report.md, report.html, plots/)")->required();
+    cmd->add_flag("--no-report", o->noReport, "Do not write report.md, report.html and plots");
     cmd->add_flag("--force", o->force, "Write into a non-empty --out directory (its results.json is replaced)");
     cmd->callback([o] {
         namespace fs = std::filesystem;
@@ -58,6 +59,7 @@ void addMergeCommand(CLI::App& app)
         fs::create_directories(o->out);
         util::removeStaleTemporaries(o->out);
         results::save((fs::path(o->out) / "results.json").string(), doc);
+        results::saveCsv((fs::path(o->out) / "results.json").string(), doc);
         // Saved pictures come along, so the merged report can show them.
         for (const auto& in : o->inputs) {
             fs::path img = fs::path(in) / "images";
@@ -69,10 +71,12 @@ void addMergeCommand(CLI::App& app)
                                  "cell) -> {}/results.json\n",
                                  st.files,
                                  st.records_in, st.records_out, st.replaced, o->out);
+        std::cerr << fmt::format("table: {}/results.csv\n", o->out);
         if (!o->noReport) {
             std::string note = experiments::makePlots(o->out);
             if (!note.empty()) std::cerr << "lumibench: warning: plots not made: " << note << '\n';
             experiments::writeReport(o->out, note);
+            std::cerr << fmt::format("report: {}/report.html (and report.md)\n", o->out);
         }
     });
 }

@@ -1,6 +1,7 @@
 // lumibench run EXP --out DIR [--luminaires DIR] [--shard K/N] [--res N] [--reps K]
-// [--device I] [--no-report]: runs an experiment file into DIR/results.json,
-// then writes DIR/report.md and DIR/plots/ (host/experiments/runner.h).
+// [--device I] [--no-report]: runs an experiment file into DIR/results.json
+// and DIR/results.csv, then writes DIR/report.md, DIR/report.html and
+// DIR/plots/ (host/experiments/runner.h, report.h).
 #include "cli/commands.h"
 
 #include "experiments/report.h"
@@ -23,7 +24,7 @@ void addRunCommand(CLI::App& app)
     auto o = std::make_shared<Opts>();
     auto* cmd = app.add_subcommand("run", "Run an experiment file (experiments/*.json) into a results directory");
     cmd->add_option("experiment", o->exp, "Experiment file, e.g. experiments/smoke.json")->required();
-    cmd->add_option("--out", o->out, "Results directory (results.json, report.md, plots/, images/); "
+    cmd->add_option("--out", o->out, "Results directory (results.json, results.csv, report.md, report.html, plots/, images/); "
                                      "a rerun resumes: it skips the cells already there and recomputes those "
                                      "whose inputs changed (scene, method, reference, luminaire file content, "
                                      "kernel sources, reps, time_res)")
@@ -37,7 +38,7 @@ void addRunCommand(CLI::App& app)
                     "Override the experiment's timing resolution: every method is timed at N x N pixels "
                     "(default 512, DESIGN 6; 0 .. 16384, 0 = at --res), whatever the error image's --res");
     cmd->add_option("--device", o->device, "OpenCL device index >= 0 (lumibench devices)");
-    cmd->add_flag("--no-report", o->noReport, "Do not write report.md and plots (e.g. for shards)");
+    cmd->add_flag("--no-report", o->noReport, "Do not write report.md, report.html and plots (e.g. for shards)");
     cmd->add_flag("--quiet", o->quiet, "No progress lines on stderr");
     cmd->callback([o, cmd] {
         experiments::Overrides ov;  // range-checked by loadExperiment like the keys they replace
@@ -54,14 +55,14 @@ void addRunCommand(CLI::App& app)
         auto s = experiments::run(e, ro);
         std::cerr << fmt::format("[{}] shard {}/{}: {} scenes, {} cells ({} computed, {} of them recomputed because "
                                  "their inputs changed, {} already done), {} equal-time partners off, {:.1f} s -> "
-                                 "{}/results.json\n",
+                                 "{}/results.json and results.csv\n",
                                  e.name, ro.shardK, ro.shardN, s.scenes, s.cells, s.computed, s.stale, s.skipped,
                                  s.equalTimeOff, s.seconds, o->out);
         if (!o->noReport) {
             std::string note = experiments::makePlots(o->out);
             if (!note.empty()) std::cerr << "lumibench: warning: plots not made: " << note << '\n';
             experiments::writeReport(o->out, note);
-            std::cerr << fmt::format("[{}] report: {}/report.md\n", e.name, o->out);
+            std::cerr << fmt::format("[{}] report: {}/report.html (and report.md)\n", e.name, o->out);
         }
     });
 }

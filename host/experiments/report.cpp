@@ -1,7 +1,11 @@
 #include "experiments/report.h"
 
+#include "experiments/report_page.h"
 #include "experiments/results.h"
+#include "experiments/runner.h"
+#include "metrics/image.h"
 #include "metrics/metrics.h"
+#include "metrics/tonemap.h"
 #include "util/error.h"
 #include "util/fileio.h"
 
@@ -10,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -49,6 +54,205 @@ std::string sceneKey(const results::Record& r)
     return fmt::format("{}|{}|{}|{}|{}|{}", r.luminaire, r.height, r.rotation, r.res, r.precision, r.device);
 }
 
+// One table of the report, rendered as Markdown and as HTML from the same
+// cells. A cell's `sort` is the number the HTML table sorts by (NaN: by text).
+struct Cell {
+    std::string text;
+    double sort = NAN;
+};
+struct Table {
+    std::string title, note;  // note: Markdown inline (`code`, **bold**)
+    std::vector<std::string> head;
+    std::vector<std::vector<Cell>> rows;
+    std::string empty;  // said instead of the table when it has no rows
+};
+
+Cell num(double v, std::string text) { return {std::move(text), std::isfinite(v) ? v : NAN}; }
+
+std::string htmlEscape(const std::string& s)
+{
+    std::string o;
+    for (char c : s) {
+        switch (c) {
+        case '&': o += "&amp;"; break;
+        case '<': o += "&lt;"; break;
+        case '>': o += "&gt;"; break;
+        case '"': o += "&quot;"; break;
+        default: o += c;
+        }
+    }
+    return o;
+}
+
+// The Markdown the notes use (`code`, **bold**), as HTML.
+std::string inlineHtml(const std::string& md)
+{
+    std::string e = htmlEscape(md), o;
+    bool code = false, bold = false;
+    for (size_t i = 0; i < e.size(); ++i) {
+        if (e[i] == '`') {
+            o += code ? "</code>" : "<code>";
+            code = !code;
+        } else if (!code && e.compare(i, 2, "**") == 0) {
+            o += bold ? "</b>" : "<b>";
+            bold = !bold;
+            ++i;
+        } else {
+            o += e[i];
+        }
+    }
+    return o;
+}
+
+std::string mdTable(const Table& t)
+{
+    std::ostringstream o;
+    o << "\n## " << t.title << "\n\n";
+    if (!t.note.empty()) o << t.note << "\n\n";
+    if (t.rows.empty()) {
+        o << t.empty << '\n';
+        return o.str();
+    }
+    o << '|';
+    for (const auto& h : t.head) o << ' ' << h << " |";
+    o << "\n|";
+    for (size_t i = 0; i < t.head.size(); ++i) o << "---|";
+    o << '\n';
+    for (const auto& row : t.rows) {
+        o << '|';
+        for (const auto& c : row) o << ' ' << c.text << (c.text.empty() ? "|" : " |");
+        o << '\n';
+    }
+    return o.str();
+}
+
+std::string htmlTable(const Table& t)
+{
+    std::ostringstream o;
+    o << "<h2>" << htmlEscape(t.title) << "</h2>\n";
+    if (!t.note.empty()) o << "<p>" << inlineHtml(t.note) << "</p>\n";
+    if (t.rows.empty()) {
+        o << "<p>" << inlineHtml(t.empty) << "</p>\n";
+        return o.str();
+    }
+    o << "<table class=\"sortable\"><thead><tr>";
+    for (const auto& h : t.head) o << "<th title=\"sort\">" << inlineHtml(h) << "</th>";
+    o << "</tr></thead><tbody>\n";
+    for (const auto& row : t.rows) {
+        o << "<tr>";
+        for (const auto& c : row) {
+            o << "<td";
+            if (std::isfinite(c.sort)) o << fmt::format(" data-sort=\"{}\"", c.sort);
+            o << '>' << inlineHtml(c.text) << "</td>";
+        }
+        o << "</tr>\n";
+    }
+    o << "</tbody></table>\n";
+    return o.str();
+}
+
+const char kB64[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+
+std::string base64(const void* data, size_t n)
+{
+    const auto* p = static_cast<const unsigned char*>(data);
+    std::string o;
+    o.reserve((n + 2) / 3 * 4);
+    for (size_t i = 0; i < n; i += 3) {
+        unsigned v = unsigned(p[i]) << 16 | (i + 1 < n ? unsigned(p[i + 1]) << 8 : 0u) | (i + 2 < n ? p[i + 2] : 0u);
+        o += kB64[v >> 18 & 63];
+        o += kB64[v >> 12 & 63];
+        o += i + 1 < n ? kB64[v >> 6 & 63] : '=';
+        o += i + 2 < n ? kB64[v & 63] : '=';
+    }
+    return o;
+}
+
+std::string dataUri(const fs::path& png)
+{
+    std::string bytes = util::readFile(png.string(), "a PNG picture", size_t(64) << 20);
+    return "data:image/png;base64," + base64(bytes.data(), bytes.size());
+}
+
+// Float32 little-endian samples of an image, base64 (the viewer tone maps them).
+std::string floatsB64(const Image& img)
+{
+    std::vector<float> v(img.px.begin(), img.px.end());
+    return base64(v.data(), v.size() * sizeof(float));
+}
+
+std::string caption(const metrics::Metrics& m)
+{
+    std::string s = fmt::format("NMSE {:.3g}, UEB {:+.3g} lx, LEB {:+.3g} lx", m.nmse, m.ueb, m.leb);
+    if (std::isfinite(m.grad_nmse)) s += fmt::format(", grad_nmse {:.3g}", m.grad_nmse);
+    if (std::isfinite(m.flip)) s += fmt::format(", FLIP {:.3g}", m.flip);
+    if (m.nonfinite) s += fmt::format(", {} non-finite pixels", m.nonfinite);
+    return s;
+}
+
+// The viewer's data: per scene with saved pictures, the reference and every
+// method's and equal-time partner's image as floats, their error pictures as
+// PNG, captions. Returns the JSON and sets `left` to the scenes left out by
+// the size limit.
+json viewerData(const std::string& dir, const std::vector<results::Record>& recs, size_t& shown, size_t& left)
+{
+    std::vector<std::string> order;
+    std::map<std::string, std::vector<const results::Record*>> byScene;
+    for (const auto& r : recs) {
+        const std::string s = str(r.extra, "scene");
+        if (s.empty() || role(r) == "mci_curve") continue;
+        if (!byScene.count(s)) order.push_back(s);
+        byScene[s].push_back(&r);
+    }
+    json scenes = json::array();
+    size_t bytes = 0;
+    shown = left = 0;
+    for (const auto& s : order) {
+        fs::path idir = fs::path(dir) / "images" / s;
+        if (!fs::is_regular_file(idir / "reference.exr")) continue;
+        if (bytes > kMaxInlineBytes) {
+            ++left;
+            continue;
+        }
+        Image ref = readExr((idir / "reference.exr").string());
+        const results::Record& r0 = *byScene[s].front();
+        double k = 1;
+        try {
+            k = tonemap::defaultK(ref);
+        } catch (const InputError&) {
+        }
+        json sc = {{"label", s},         {"luminaire", r0.luminaire}, {"height", r0.height},
+                   {"rotation", r0.rotation}, {"precision", r0.precision}, {"width", ref.width},
+                   {"height_px", ref.height}, {"k", k},                    {"ref", floatsB64(ref)}};
+        json methods = json::array(), mci = json::object();
+        for (const auto* r : byScene[s]) {
+            const bool eq = role(*r) == "equal_time";
+            const std::string spec = eq ? str(r->extra, "equal_time_label", *r->equal_time_to) : label(*r);
+            fs::path stem = idir / cellImageName(role(*r), spec);
+            fs::path exr = stem.string() + ".exr", err = stem.string() + "_err.png";
+            if (!fs::is_regular_file(exr)) continue;
+            Image img = readExr(exr.string());
+            if (img.width != ref.width || img.height != ref.height) continue;
+            json m = {{"label", eq ? fmt::format("MCI at the time of {} (N = {})", spec, r->n ? *r->n : 0) : spec},
+                      {"img", floatsB64(img)},
+                      {"err", fs::is_regular_file(err) ? dataUri(err) : ""},
+                      {"caption", caption(r->error)},
+                      {"ms", r->time_ms.median}};
+            if (eq)
+                mci[spec] = m;
+            else
+                methods.push_back(m);
+        }
+        sc["methods"] = methods;
+        sc["mci"] = mci;
+        std::string dump = sc.dump();
+        bytes += dump.size();
+        scenes.push_back(std::move(sc));
+        ++shown;
+    }
+    return scenes;
+}
+
 } // namespace
 
 std::string makePlots(const std::string& dir)
@@ -72,24 +276,24 @@ void writeReport(const std::string& dir, const std::string& plotNote)
     results::Results doc = results::load(path);
     results::dedupe(doc.records);  // files of older versions may hold two partners of one method
     const json& c = doc.context;
-    std::ostringstream o;
+    const std::string title = fmt::format("Experiment `{}`", str(c, "experiment", "?"));
 
-    o << fmt::format("# Experiment `{}`\n\n", str(c, "experiment", "?"));
-    o << "| | |\n|---|---|\n";
+    Table info{"Run", "", {"", ""}, {}, ""};
     for (const char* k : {"device", "driver", "platform", "commit", "date", "host", "os", "lumibench_version", "shard",
                           "experiment_file", "luminaire_dir"})
-        if (c.contains(k)) o << fmt::format("| {} | {} |\n", k, c[k].is_string() ? c[k].get<std::string>() : c[k].dump());
+        if (c.contains(k)) info.rows.push_back({{k}, {c[k].is_string() ? c[k].get<std::string>() : c[k].dump()}});
     std::set<std::string> devices, drivers;
     for (const auto& r : doc.records) {
         devices.insert(r.device);
         drivers.insert(r.driver);
     }
     if (devices.size() > 1) {
-        o << "| devices in the records |";
-        for (const auto& d : devices) o << ' ' << d << ';';
-        o << " |\n";
+        std::string d;
+        for (const auto& x : devices) d += x + "; ";
+        info.rows.push_back({{"devices in the records"}, {d}});
     }
-    if (c.contains("merged_from")) o << fmt::format("| merged from | {} files |\n", c["merged_from"].size());
+    if (c.contains("merged_from"))
+        info.rows.push_back({{"merged from"}, {fmt::format("{} files", c["merged_from"].size())}});
 
     // Columns: methods in the order first met, then their equal-time partners.
     std::vector<std::string> cols;
@@ -109,69 +313,70 @@ void writeReport(const std::string& dir, const std::string& plotNote)
     int res = doc.records.empty() ? 0 : doc.records.front().res;
     int timeRes = doc.records.empty() ? 0 : doc.records.front().time_ms.res;
     double tol = doc.context.value("equal_time_tolerance", NAN);
-    o << fmt::format("\n{} records, {} scenes, {} x {} pixels{}; {} of {} equal-time MCI partners ({:.0f} %) within "
-                     "{} of the matched method's median time, {} ({:.0f} %) within or at the closest integer N.\n",
-                     doc.records.size(), scenes.size(), res, res,
-                     timeRes > 0 ? fmt::format(", timed at {} x {}", timeRes, timeRes) : std::string(), eqOk, eqAll,
-                     eqAll ? 100.0 * eqOk / eqAll : 0.0,
-                     std::isfinite(tol) ? fmt::format("+-{:g} %", 100 * tol) : std::string("the tolerance"), eqClosest,
-                     eqAll ? 100.0 * eqClosest / eqAll : 0.0);
-    o << "Times are OpenCL profiling-event medians (DESIGN section 6); errors against the reference (section 5).\n";
+    const std::string summary = fmt::format(
+        "{} records, {} scenes, {} x {} pixels{}; {} of {} equal-time MCI partners ({:.0f} %) within "
+        "{} of the matched method's median time, {} ({:.0f} %) within or at the closest integer N.\n"
+        "Times are OpenCL profiling-event medians (DESIGN section 6); errors against the reference (section 5). "
+        "The same records as a table: `results.csv`.\n",
+        doc.records.size(), scenes.size(), res, res,
+        timeRes > 0 ? fmt::format(", timed at {} x {}", timeRes, timeRes) : std::string(), eqOk, eqAll,
+        eqAll ? 100.0 * eqOk / eqAll : 0.0,
+        std::isfinite(tol) ? fmt::format("+-{:g} %", 100 * tol) : std::string("the tolerance"), eqClosest,
+        eqAll ? 100.0 * eqClosest / eqAll : 0.0);
 
-    // Main tables: the mean of each error metric over the rotations per
-    // luminaire and height (NMSE, then grad_nmse and flip of DESIGN section 5).
-    auto table = [&](const std::string& key, const std::string& title, const std::string& note) {
+    std::vector<Table> tables;
+    // Main tables: per luminaire, precision and height, the rotations' images
+    // pooled into one (metrics::pooled: the thesis' stitched image).
+    auto mainTable = [&](const std::string& key, const std::string& heading, const std::string& note) {
         struct Acc {
-            double sum = 0;
-            int n = 0;
+            std::vector<metrics::Metrics> parts;
             double nsum = 0;
-            int records = 0;
         };
         std::map<std::tuple<std::string, std::string, double>, std::map<std::string, Acc>> rows;
         size_t carried = 0;
         for (const auto& r : doc.records) {
             if (role(r) == "mci_curve") continue;
             auto& a = rows[{r.luminaire, r.precision, r.height}][label(r)];
-            const double v = metrics::minimisable(r.error, key);
-            if (std::isfinite(v)) {
-                a.sum += v;
-                ++a.n;
-                ++carried;
-            }
+            a.parts.push_back(r.error);
+            carried += std::isfinite(metrics::minimisable(r.error, key));
             if (r.n) a.nsum += double(*r.n);
-            ++a.records;
         }
-        o << fmt::format("\n## {} per luminaire and height (mean over the rotations)\n\n{}", title, note);
+        Table t{heading, note, {"luminaire", "precision", "h"}, {}, ""};
         if (carried == 0) {
-            o << fmt::format("No record carries {} (records of an older lumibench{}).\n", key,
-                             key == "flip" ? ", or flip-evaluator was not available: scripts/install-deps.sh" : "");
+            t.empty = fmt::format("No record carries {} (records of an older lumibench{}).", key,
+                                  key == "flip" ? ", or flip-evaluator was not available: scripts/install-deps.sh" : "");
+            tables.push_back(t);
             return;
         }
-        o << "MCI=M is Monte Carlo at the time of method M (its mean N in brackets).\n\n";
-        o << "| luminaire | precision | h |";
-        for (const auto& col : cols) o << ' ' << col << " |";
-        o << "\n|---|---|---|";
-        for (size_t i = 0; i < cols.size(); ++i) o << "---|";
-        o << '\n';
+        t.note += "MCI=M is Monte Carlo at the time of method M (its mean N over the rotations in brackets).";
+        for (const auto& col : cols) t.head.push_back(col);
         for (const auto& [k, m] : rows) {
-            o << fmt::format("| {} | {} | {} |", std::get<0>(k), std::get<1>(k), std::get<2>(k));
+            std::vector<Cell> row = {{std::get<0>(k)}, {std::get<1>(k)}, num(std::get<2>(k), fmt::format("{}", std::get<2>(k)))};
             for (const auto& col : cols) {
                 auto it = m.find(col);
-                if (it == m.end() || it->second.n == 0) {
-                    o << " |";
+                if (it == m.end()) {
+                    row.push_back({});
                     continue;
                 }
-                o << ' ' << sci(it->second.sum / it->second.n);
-                if (col.rfind("MCI=", 0) == 0) o << fmt::format(" ({:.0f})", it->second.nsum / it->second.records);
-                o << " |";
+                const double v = metrics::minimisable(metrics::pooled(it->second.parts), key);
+                std::string text = sci(v);
+                if (col.rfind("MCI=", 0) == 0)
+                    text += fmt::format(" ({:.0f})", it->second.nsum / double(it->second.parts.size()));
+                row.push_back(num(v, text));
             }
-            o << '\n';
+            t.rows.push_back(std::move(row));
         }
+        tables.push_back(t);
     };
-    table("nmse", "NMSE", "");
-    table("grad_nmse", "grad_nmse",
-          "NMSE of the neighbouring-pixel differences: ripples and bumps, not a smooth bias.\n");
-    table("flip", "FLIP", "Mean HDR-FLIP (NVIDIA flip-evaluator), in [0, 1].\n");
+    const std::string pooledNote =
+        "Each cell is the error of the rotations' images stitched into one, as in the thesis: squared errors summed "
+        "over all rotations' pixels, against the pooled means (`metrics::pooled`; docs/thesis-sct-vs-mci.md), not "
+        "the mean of the rotations' values, which one nearly dark rotation can dominate. ";
+    mainTable("nmse", "NMSE per luminaire and height (rotations stitched)", pooledNote);
+    mainTable("grad_nmse", "grad_nmse per luminaire and height (rotations stitched)",
+              "NMSE of the neighbouring-pixel differences: ripples and bumps, not a smooth bias. " + pooledNote);
+    mainTable("flip", "FLIP per luminaire and height (pixel mean over the rotations)",
+              "Mean HDR-FLIP (NVIDIA flip-evaluator), in [0, 1], over all rotations' pixels. ");
 
     // Relative times (paper Table 1): geometric mean over scenes of the median over point's median.
     std::map<std::string, double> pointMs;
@@ -194,11 +399,14 @@ void writeReport(const std::string& dir, const std::string& plotNote)
             ++a.second;
         }
     }
-    o << "\n## Run time (paper Table 1)\n\nMean median kernel time over the scenes, and the geometric mean over "
-         "the scenes of the time relative to `point`. Kernel form: whether the timed kernel was the method's "
-         "straight-line form or its general kernel (records' `stats.form`; blank for methods with one form). "
-         "An equal-time verdict is fair only where the method ran its fastest form.\n\n"
-         "| method | time (ms) | relative to point | kernel form |\n|---|---|---|---|\n";
+    Table times{"Run time (paper Table 1)",
+                "Mean median kernel time over the scenes, and the geometric mean over the scenes of the time relative "
+                "to `point`. Kernel form: whether the timed kernel was the method's straight-line form or its general "
+                "kernel (records' `stats.form`; blank for methods with one form). An equal-time verdict is fair only "
+                "where the method ran its fastest form.",
+                {"method", "time (ms)", "relative to point", "kernel form"},
+                {},
+                ""};
     for (const auto& col : cols) {
         auto a = abs[col];
         auto rr = rel.find(col);
@@ -206,46 +414,109 @@ void writeReport(const std::string& dir, const std::string& plotNote)
         std::string form = general == 0 ? (straight ? "straight-line" : "")
                            : straight == 0 ? "**general**"
                                            : fmt::format("**general** in {} of {} scenes", general, straight + general);
-        o << fmt::format("| {} | {:.4f} | {} | {} |\n", col, a.second ? a.first / a.second : NAN,
-                         rr != rel.end() && rr->second.second ? fmt::format("{:.2f}", std::exp(rr->second.first / rr->second.second))
-                                                               : "n/a",
-                         form);
+        const double ms = a.second ? a.first / a.second : NAN;
+        const double relv = rr != rel.end() && rr->second.second ? std::exp(rr->second.first / rr->second.second) : NAN;
+        times.rows.push_back({{col}, num(ms, fmt::format("{:.4f}", ms)),
+                              num(relv, std::isfinite(relv) ? fmt::format("{:.2f}", relv) : "n/a"), {form}});
     }
+    tables.push_back(times);
 
     // Equal-time pairs.
     if (eqAll) {
         std::map<std::string, metrics::Metrics> errBy;  // scene|label -> errors
         for (const auto& r : doc.records) errBy[sceneKey(r) + "|" + str(r.extra, "spec", r.method)] = r.error;
-        o << "\n## Equal-time pairs\n\n| luminaire | h | R (rad) | method | t method (ms) | N | t MCI (ms) | ratio | "
-             "NMSE method | NMSE MCI | grad_nmse method | grad_nmse MCI | FLIP method | FLIP MCI |\n"
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+        Table pairs{"Equal-time pairs",
+                    "",
+                    {"luminaire", "h", "R (rad)", "method", "t method (ms)", "N", "t MCI (ms)", "ratio", "NMSE method",
+                     "NMSE MCI", "grad_nmse method", "grad_nmse MCI", "FLIP method", "FLIP MCI"},
+                    {},
+                    ""};
         for (const auto& r : doc.records) {
             if (!r.equal_time_to) continue;
             std::string m = str(r.extra, "equal_time_label", *r.equal_time_to);
             auto it = errBy.find(sceneKey(r) + "|" + m);
-            auto of = [&](double metrics::Metrics::*f) { return it != errBy.end() ? sci(it->second.*f) : "n/a"; };
-            o << fmt::format("| {} | {} | {:.4f} | {} | {:.4f} | {} | {:.4f} | {:.3f}{} | {} | {} | {} | {} | {} | {} |\n",
-                             r.luminaire, r.height, r.rotation, m, r.extra.value("equal_time_target_ms", NAN),
-                             r.n ? *r.n : 0, r.time_ms.median, r.extra.value("equal_time_ratio", NAN),
-                             r.extra.value("equal_time_ok", false) ? "" : " (!)", of(&metrics::Metrics::nmse),
-                             sci(r.error.nmse), of(&metrics::Metrics::grad_nmse), sci(r.error.grad_nmse),
-                             of(&metrics::Metrics::flip), sci(r.error.flip));
+            auto of = [&](double metrics::Metrics::*f) {
+                double v = it != errBy.end() ? it->second.*f : NAN;
+                return num(v, sci(v));
+            };
+            const double tm = r.extra.value("equal_time_target_ms", NAN), ratio = r.extra.value("equal_time_ratio", NAN);
+            const double n = r.n ? double(*r.n) : 0;
+            pairs.rows.push_back(
+                {{r.luminaire}, num(r.height, fmt::format("{}", r.height)),
+                 num(r.rotation, fmt::format("{:.4f}", r.rotation)), {m}, num(tm, fmt::format("{:.4f}", tm)),
+                 num(n, fmt::format("{}", r.n ? *r.n : 0)), num(r.time_ms.median, fmt::format("{:.4f}", r.time_ms.median)),
+                 num(ratio, fmt::format("{:.3f}{}", ratio, r.extra.value("equal_time_ok", false) ? "" : " (!)")),
+                 of(&metrics::Metrics::nmse), num(r.error.nmse, sci(r.error.nmse)), of(&metrics::Metrics::grad_nmse),
+                 num(r.error.grad_nmse, sci(r.error.grad_nmse)), of(&metrics::Metrics::flip),
+                 num(r.error.flip, sci(r.error.flip))});
         }
+        tables.push_back(pairs);
     }
 
     // Plots.
-    o << "\n## Plots\n\n";
     std::vector<std::string> pngs;
     fs::path pd = fs::path(dir) / "plots";
     if (fs::is_directory(pd))
         for (const auto& e : fs::directory_iterator(pd))
             if (e.path().extension() == ".png") pngs.push_back(e.path().filename().string());
     std::sort(pngs.begin(), pngs.end());
-    if (!plotNote.empty()) o << "Plots not made: " << plotNote << ".\n\n";
-    for (const auto& p : pngs) o << fmt::format("![{}](plots/{})\n\n", p, p);
-    if (pngs.empty() && plotNote.empty()) o << "No plots in `plots/` (run `lumibench report DIR`).\n";
+    std::string plotsMissing;
+    if (!plotNote.empty()) plotsMissing = "Plots not made: " + plotNote + ".";
+    else if (pngs.empty()) plotsMissing = "No plots in `plots/` (run `lumibench report DIR`).";
 
-    util::writeFileAtomic((fs::path(dir) / "report.md").string(), o.str());
+    // report.md
+    {
+        std::ostringstream o;
+        o << "# " << title << "\n\n| | |\n|---|---|\n";
+        for (const auto& row : info.rows) o << "| " << row[0].text << " | " << row[1].text << " |\n";
+        o << '\n' << summary;
+        for (const auto& t : tables) o << mdTable(t);
+        o << "\n## Plots\n\n";
+        if (!plotsMissing.empty()) o << plotsMissing << "\n\n";
+        for (const auto& p : pngs) o << fmt::format("![{}](plots/{})\n\n", p, p);
+        util::writeFileAtomic((fs::path(dir) / "report.md").string(), o.str());
+    }
+
+    // report.html
+    {
+        size_t shown = 0, left = 0;
+        json viewer = viewerData(dir, doc.records, shown, left);
+        std::ostringstream o;
+        o << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>" << inlineHtml(title)
+          << "</title>\n<style>" << report_page::kCss << "</style></head>\n<body>\n<h1>" << inlineHtml(title)
+          << "</h1>\n<table class=\"info\">";
+        for (const auto& row : info.rows)
+            o << "<tr><th>" << htmlEscape(row[0].text) << "</th><td>" << htmlEscape(row[1].text) << "</td></tr>";
+        o << "</table>\n<p>" << inlineHtml(summary) << " Click a column head to sort.</p>\n";
+        o << "<nav>Sections: <a href=\"#viewer\">pictures</a>";
+        for (size_t i = 0; i < tables.size(); ++i) o << fmt::format(" · <a href=\"#t{}\">{}</a>", i, htmlEscape(tables[i].title));
+        o << " · <a href=\"#plots\">plots</a></nav>\n";
+        o << "<section id=\"viewer\"><h2>Pictures</h2>\n";
+        if (shown == 0)
+            o << "<p>No saved pictures (the experiment's <code>save_images</code> is off, or <code>images/</code> is "
+                 "missing).</p>\n";
+        else
+            o << report_page::kViewerHtml;
+        if (left)
+            o << fmt::format("<p>{} more scenes with pictures are not inlined (the page holds at most {} MB of "
+                             "pictures); they are in <code>images/</code>.</p>\n",
+                             left, kMaxInlineBytes >> 20);
+        o << "</section>\n";
+        for (size_t i = 0; i < tables.size(); ++i)
+            o << fmt::format("<section id=\"t{}\">", i) << htmlTable(tables[i]) << "</section>\n";
+        o << "<section id=\"plots\"><h2>Plots</h2>\n";
+        if (!plotsMissing.empty()) o << "<p>" << inlineHtml(plotsMissing) << "</p>\n";
+        for (const auto& p : pngs)
+            o << "<figure><img alt=\"" << htmlEscape(p) << "\" src=\"" << dataUri(pd / p) << "\"><figcaption>"
+              << htmlEscape(p) << "</figcaption></figure>\n";
+        o << "</section>\n";
+        // JSON inside <script>: "</" would end the element; JSON allows "<\/".
+        std::string data = viewer.dump();
+        for (size_t pos = 0; (pos = data.find("</", pos)) != std::string::npos; pos += 3) data.replace(pos, 2, "<\\/");
+        o << "<script type=\"application/json\" id=\"lbdata\">" << data << "</script>\n<script>"
+          << report_page::kScript << "</script>\n</body></html>\n";
+        util::writeFileAtomic((fs::path(dir) / "report.html").string(), o.str());
+    }
 }
 
 } // namespace lb::experiments

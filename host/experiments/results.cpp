@@ -297,4 +297,97 @@ Results mergeResults(const std::vector<std::string>& paths, MergeStats* stats)
     return out;
 }
 
+namespace {
+
+std::string csvField(const std::string& s)
+{
+    if (s.find_first_of(",\"\r\n") == std::string::npos) return s;
+    std::string q = "\"";
+    for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return q + '"';
+}
+
+// A JSON scalar as a CSV field: null and non-finite numbers empty, strings
+// as they are, numbers in their shortest round-trip form.
+std::string csvValue(const json& v)
+{
+    if (v.is_null()) return "";
+    if (v.is_string()) return csvField(v.get<std::string>());
+    if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
+    if (v.is_number_float()) {
+        double d = v.get<double>();
+        return std::isfinite(d) ? fmt::format("{}", d) : "";
+    }
+    return csvField(v.dump());
+}
+
+} // namespace
+
+std::string toCsv(const Results& doc)
+{
+    const std::vector<std::string> head = {"method", "spec", "role", "scene", "luminaire", "height", "rotation", "res",
+                                           "precision", "device", "driver", "time_ms_median", "time_ms_min",
+                                           "time_ms_max", "time_ms_reps", "time_ms_res"};
+    std::vector<std::string> metricCols;
+    const json metricKeys = metrics::Metrics{};
+    for (auto it = metricKeys.begin(); it != metricKeys.end(); ++it) metricCols.push_back(it.key());
+    std::set<std::string> params, extras;
+    for (const auto& r : doc.records) {
+        for (auto it = r.params.begin(); it != r.params.end(); ++it) params.insert(it.key());
+        for (auto it = r.extra.begin(); it != r.extra.end(); ++it)
+            if (!it.value().is_structured() && it.key() != "spec" && it.key() != "role" && it.key() != "scene")
+                extras.insert(it.key());
+    }
+    std::vector<std::string> cols = head;
+    cols.insert(cols.end(), metricCols.begin(), metricCols.end());
+    cols.push_back("equal_time_to");
+    cols.push_back("n");
+    for (const auto& p : params) cols.push_back("param_" + p);
+    cols.insert(cols.end(), extras.begin(), extras.end());
+
+    std::string out;
+    for (size_t i = 0; i < cols.size(); ++i) out += (i ? "," : "") + csvField(cols[i]);
+    out += "\n";
+    for (const auto& r : doc.records) {
+        json j = r;  // the record's JSON form: one serialisation of every field
+        const json& t = j["time_ms"];
+        std::vector<std::string> f = {csvValue(j["method"]),
+                                      csvValue(j.value("spec", json(nullptr))),
+                                      csvValue(j.value("role", json(r.equal_time_to ? "equal_time" : "method"))),
+                                      csvValue(j.value("scene", json(nullptr))),
+                                      csvValue(j["luminaire"]),
+                                      csvValue(j["height"]),
+                                      csvValue(j["rotation"]),
+                                      csvValue(j["res"]),
+                                      csvValue(j["precision"]),
+                                      csvValue(j["device"]),
+                                      csvValue(j["driver"]),
+                                      csvValue(t["median"]),
+                                      csvValue(t["min"]),
+                                      csvValue(t["max"]),
+                                      csvValue(t["reps"]),
+                                      csvValue(t["res"])};
+        for (const auto& m : metricCols) f.push_back(csvValue(j.value(m, json(nullptr))));
+        f.push_back(csvValue(j.value("equal_time_to", json(nullptr))));
+        f.push_back(csvValue(j.value("n", json(nullptr))));
+        for (const auto& p : params) f.push_back(r.params.contains(p) && !r.params[p].is_structured()
+                                                     ? csvValue(r.params[p])
+                                                     : (r.params.contains(p) ? csvField(r.params[p].dump()) : ""));
+        for (const auto& x : extras) f.push_back(csvValue(r.extra.value(x, json(nullptr))));
+        for (size_t i = 0; i < f.size(); ++i) out += (i ? "," : "") + f[i];
+        out += "\n";
+    }
+    return out;
+}
+
+std::string csvPathFor(const std::string& resultsJsonPath)
+{
+    return std::filesystem::path(resultsJsonPath).replace_extension(".csv").string();
+}
+
+void saveCsv(const std::string& resultsJsonPath, const Results& doc)
+{
+    util::writeFileAtomic(csvPathFor(resultsJsonPath), toCsv(doc));
+}
+
 } // namespace lb::results

@@ -119,4 +119,26 @@ struct MergeStats {
 // every input. Throws lb::InputError for an unreadable input.
 Results mergeResults(const std::vector<std::string>& paths, MergeStats* stats = nullptr);
 
+// The records as CSV (RFC 4180 with \n line ends: a header line, then one
+// flat row per record;
+// fields with a comma, quote or line break are quoted, quotes doubled;
+// undefined numbers are empty fields). Columns, in this order:
+//   method, spec, role, scene, luminaire, height, rotation, res, precision,
+//   device, driver, time_ms_median, time_ms_min, time_ms_max, time_ms_reps,
+//   time_ms_res, the metrics of metrics::to_json (nmse, ...), equal_time_to, n,
+//   param_<name> for every method parameter met in any record (empty where a
+//   record's method has no such parameter), then every other key a record
+//   carries whose value is a number, string, boolean or null (build_s,
+//   equal_time_ratio, ..., and keys of later versions), sorted by name.
+// Objects and arrays (params, inputs, stats, equal_time_candidates) are left
+// out, params flattened as above. README "Results as a table" documents them.
+std::string toCsv(const Results& doc);
+
+// DIR/results.csv beside DIR/results.json: the path with its extension
+// replaced by .csv.
+std::string csvPathFor(const std::string& resultsJsonPath);
+
+// Writes toCsv(doc) atomically to csvPathFor(resultsJsonPath).
+void saveCsv(const std::string& resultsJsonPath, const Results& doc);
+
 } // namespace lb::results

@@ -64,6 +64,13 @@ double interpolateMs(std::vector<std::pair<long, double>> pts, long n)
     return pts.back().second * double(n) / double(pts.back().first);
 }
 
+std::string cellImageName(const std::string& role, const std::string& spec)
+{
+    std::string out = role == "equal_time" ? "mci_eq_" : "";
+    for (char c : spec) out += (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-') ? c : '_';
+    return out;
+}
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -96,12 +103,6 @@ std::vector<Cell> cellsOf(const Experiment& e)
     return cells;
 }
 
-std::string fileSafe(const std::string& s)
-{
-    std::string out;
-    for (char c : s) out += (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-') ? c : '_';
-    return out;
-}
 
 std::string hms(double s)
 {
@@ -357,7 +358,7 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
             if (c.role != "equal_time") {
                 auto rr = sr.render(c.parsed);
                 remember(c.parsed, rr.timing.median_ms);
-                results::Record r = sr.record(c.parsed, rr, c, fileSafe(c.spec));
+                results::Record r = sr.record(c.parsed, rr, c, cellImageName(c.role, c.spec));
                 r.inputs = cellInputs[i];
                 results::appendRecord(resultsPath, context, r);
             } else {
@@ -464,7 +465,7 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
                 r1.timeRes = ts.res;
                 json fitJson = json::array();
                 for (auto [n, t] : pts) fitJson.push_back({n, t});
-                results::Record r = sr.record(s1, r1, c, "mci_eq_" + fileSafe(c.spec));
+                results::Record r = sr.record(s1, r1, c, cellImageName(c.role, c.spec));
                 r.equal_time_to = target;
                 r.n = n1;
                 r.extra["equal_time_candidates"] = candJson;
@@ -503,6 +504,7 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
     }
     sum.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     if (!fs::exists(resultsPath)) results::save(resultsPath, results::Results{context, {}});
+    results::saveCsv(resultsPath, results::load(resultsPath));  // DIR/results.csv, the same records as a table
     return sum;
 }
 

@@ -73,6 +73,12 @@ struct RunSummary {
 
 RunSummary run(const Experiment& e, const RunOptions& opt);
 
+// The file name stem of a cell's saved pictures in DIR/images/<scene>/:
+// the SPEC as the experiment wrote it with every character but letters,
+// digits, '.' and '-' replaced by '_'; "mci_eq_" + that of the matched
+// SPEC for an equal-time partner (role "equal_time").
+std::string cellImageName(const std::string& role, const std::string& spec);
+
 // The equal-time solve on its own (tests): N with t(N) = targetMs on the
 // piecewise-linear interpolation of the measured (N, median ms) points,
 // sorted by N; below the smallest time 1, above the largest extrapolated

@@ -61,6 +61,12 @@ def main():
     out = os.fdopen(os.dup(1), "w")  # the answers
     os.dup2(2, 1)                    # whatever else writes to stdout lands on stderr
     sys.stdout = sys.stderr
+    # flip-evaluator runs on OpenMP (libgomp), whose idle threads spin by
+    # default: on a machine with few cores they took the CPU from the OpenCL
+    # kernels being timed next, and each FLIP of a 32 x 32 image took 0.3 s
+    # instead of 7 ms on 2 busy cores. Passive waiting, unless the user chose
+    # a policy; libgomp reads it when the package's library loads, below.
+    os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
     try:
         import numpy as np
         import flip_evaluator

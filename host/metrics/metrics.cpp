@@ -82,6 +82,39 @@ Metrics compare(const Image& R, const Image& A)
     return m;
 }
 
+Metrics pooled(const std::vector<Metrics>& parts)
+{
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    Metrics o;
+    o.ueb = parts.empty() ? nan : 0;
+    o.leb = parts.empty() ? nan : 0;
+    double p = 0, sr = 0, st = 0, sse = 0, pairs = 0, gsse = 0, fsum = 0, fp = 0;
+    for (const auto& m : parts) {
+        const double pi = double(m.pixels - m.nonfinite);
+        o.pixels += m.pixels;
+        o.nonfinite += m.nonfinite;
+        o.grad_pairs += m.grad_pairs;
+        p += pi;
+        sr += pi * m.mean_ref;
+        st += pi * m.mean_test;
+        sse += m.nmse * pi * m.mean_ref * m.mean_test;
+        gsse += m.grad_nmse * double(m.grad_pairs) * m.mean_ref * m.mean_test;
+        pairs += double(m.grad_pairs);
+        fsum += m.flip * pi;  // NaN in any part: NaN (not available)
+        fp += pi;
+        o.ueb = std::isnan(m.ueb) ? nan : std::max(o.ueb, m.ueb);
+        o.leb = std::isnan(m.leb) ? nan : std::min(o.leb, m.leb);
+    }
+    o.mean_ref = sr / p;
+    o.mean_test = st / p;
+    o.nmse = sse / p / (o.mean_ref * o.mean_test);
+    o.nrmse = std::sqrt(sse / p) / o.mean_ref;
+    o.relmse = nan;
+    o.grad_nmse = gsse / pairs / (o.mean_ref * o.mean_test);
+    o.flip = fsum / fp;
+    return o;
+}
+
 const std::vector<std::string>& minimisableMetrics()
 {
     static const std::vector<std::string> keys = {"nmse", "nrmse", "relmse", "grad_nmse", "flip", "ueb", "leb"};

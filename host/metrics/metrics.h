@@ -62,6 +62,22 @@ void checkComparable(const Image& reference, const Image& test);
 // Every metric but flip; throws as checkComparable.
 Metrics compare(const Image& reference, const Image& test);
 
+// The metrics of several images of equal kind pooled into one, as if they
+// were stitched side by side into one image (the thesis computes its figures
+// and appendix B on the rotations of a scene stitched this way; docs/
+// thesis-sct-vs-mci.md): with P_i the finite pixels of part i,
+//   mean_ref, mean_test = the pixel-weighted means sum P_i mean_i / sum P_i,
+//   SSE_i = nmse_i P_i mean_ref_i mean_test_i (Eq. 6.7 solved for the sum),
+//   nmse  = (sum SSE_i / sum P_i) / (mean_ref mean_test),
+//   nrmse = sqrt(sum SSE_i / sum P_i) / mean_ref,
+//   grad_nmse the same over the neighbour pairs of each part (pairs across
+//   the seams are not made up), flip the pixel-weighted mean, ueb the
+//   largest, leb the smallest, pixels, nonfinite and grad_pairs summed.
+// relmse, which divides by each part's own mean, is not poolable: NaN.
+// Parts with equal pixel counts give mean(SSE/P) / (mean(mean_ref)
+// mean(mean_test)), the form plots/stitched_table.py computes.
+Metrics pooled(const std::vector<Metrics>& parts);
+
 // The record keys of the metrics a search can minimise (tune's "metric"):
 // nmse, nrmse, relmse, grad_nmse, flip, ueb, leb.
 const std::vector<std::string>& minimisableMetrics();

@@ -225,12 +225,13 @@ TEST(MergeCli, RefusesANonEmptyOutputUnlessForced)
     // The inputs themselves inside --out are fine (experiments/run-parallel.sh).
     auto c = test::runCli("merge --no-report --out " + (d / "out").string() + " " + (d / "out" / "shard-1").string());
     EXPECT_EQ(c.code, 0) << c.err;
-    // Now --out holds a results.json: refused, and the file is untouched.
+    // Now --out holds results.json and results.csv: refused (naming one of
+    // them), and the file is untouched.
     const auto before = fs::last_write_time(d / "out" / "results.json");
     c = test::runCli("merge --no-report --out " + (d / "out").string() + " " + (d / "out" / "shard-1").string());
     EXPECT_EQ(c.code, 2);
     EXPECT_NE(c.err.find("--out " + (d / "out").string() +
-                         ": expected an empty or new directory, got one holding results.json"),
+                         ": expected an empty or new directory, got one holding results."),
               std::string::npos)
         << c.err;
     EXPECT_EQ(fs::last_write_time(d / "out" / "results.json"), before);

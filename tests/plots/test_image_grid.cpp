@@ -26,10 +26,10 @@ int sh(const std::string& cmd)
     return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
 }
 
-TEST(Plots, ImageGridOfComparePictures)
+// Writes DIR/r.exr, DIR/a.exr and `lumibench compare` of the two with --png
+// DIR/row (plus `extra` flags); returns the prefix DIR/row.
+std::string comparePictures(const fs::path& dir, const std::string& extra)
 {
-    fs::path dir = fs::temp_directory_path() / ("lb_grid_" + std::to_string(getpid()));
-    fs::create_directories(dir);
     Image r(16, 16), a(16, 16);
     for (size_t i = 0; i < r.px.size(); ++i) {
         r.px[i] = 1.0 + 0.1 * static_cast<double>(i % 16);
@@ -38,9 +38,17 @@ TEST(Plots, ImageGridOfComparePictures)
     writeExr((dir / "r.exr").string(), r);
     writeExr((dir / "a.exr").string(), a);
     const std::string prefix = (dir / "row").string();
-    ASSERT_EQ(sh(test::binary() + " compare " + (dir / "r.exr").string() + " " + (dir / "a.exr").string() +
-                 " --json --png " + prefix + " > " + prefix + ".json"),
+    EXPECT_EQ(sh(test::binary() + " compare " + (dir / "r.exr").string() + " " + (dir / "a.exr").string() +
+                 " --png " + prefix + extra),
               0);
+    return prefix;
+}
+
+TEST(Plots, ImageGridOfComparePictures)
+{
+    fs::path dir = fs::temp_directory_path() / ("lb_grid_" + std::to_string(getpid()));
+    fs::create_directories(dir);
+    const std::string prefix = comparePictures(dir, " --json > " + (dir / "row.json").string());
     const std::string script = test::sourceDir() + "/plots/image_grid.py";
     const std::string out = (dir / "grid.png").string();
     ASSERT_EQ(sh(python() + " " + script + " --out " + out + " 'test row=" + prefix + "' > /dev/null"), 0);
@@ -48,6 +56,53 @@ TEST(Plots, ImageGridOfComparePictures)
     EXPECT_GT(g.width, g.height);
     // A missing picture is a clear error, not a traceback.
     EXPECT_NE(sh(python() + " " + script + " --out " + out + " " + (dir / "nothing").string() + " 2> /dev/null"), 0);
+    fs::remove_all(dir);
+}
+
+// The captions under the error pictures (NMSE, UEB, LEB, grad_nmse, FLIP)
+// lie inside the figure at the size plots/experiment.py uses (2 inch
+// pictures), with the widest numbers; and the check itself sees a caption
+// that sticks out.
+TEST(Plots, ImageGridCaptionsFitTheFigure)
+{
+    if (sh(python() + " -c 'import matplotlib' 2>/dev/null") != 0 && !test::deviceRequired())
+        GTEST_SKIP() << python() << " has no matplotlib";
+    fs::path dir = fs::temp_directory_path() / ("lb_grid_caption_" + std::to_string(getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string prefix = comparePictures(dir, " > /dev/null");
+    // the widest values a caption shows
+    FILE* j = std::fopen((prefix + ".json").c_str(), "w");
+    ASSERT_NE(j, nullptr);
+    std::fprintf(j, R"({"nmse": 1.23456e-05, "ueb": 12345.6, "leb": -12345.6, "grad_nmse": 1.23456e-05,
+                        "flip": 0.123456, "nonfinite": 123456})");
+    std::fclose(j);
+    const std::string script = (dir / "t.py").string();
+    FILE* f = std::fopen(script.c_str(), "w");
+    ASSERT_NE(f, nullptr);
+    std::fprintf(f, R"(import sys
+sys.path.insert(0, %s)
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import image_grid
+d, prefix = %s, %s
+for size in (2.0, 2.6):
+    fig = image_grid.main(["MCI=cubature N=12=" + prefix, "cubature=" + prefix, "--out", d + "/g.png",
+                           "--size", str(size), "--dpi", "100"])
+    for ax in fig.axes:
+        if ax.xaxis.label.get_text():
+            assert image_grid.inside(fig, ax.xaxis.label), (size, ax.xaxis.label.get_text())
+# the check can fail: the one-line caption of before sticks out at 2 inch
+fig = image_grid.main([prefix, "--out", d + "/g.png", "--size", "2.0", "--dpi", "100"])
+ax = [a for a in fig.axes if a.xaxis.label.get_text()][0]
+ax.set_xlabel("NMSE 1.23e-05  UEB +1.23e+04 lx  LEB -1.23e+04 lx", fontsize=8)
+assert not image_grid.inside(fig, ax.xaxis.label), "inside() cannot fail"
+)",
+                 ("'" + test::sourceDir() + "/plots'").c_str(), ("'" + dir.string() + "'").c_str(),
+                 ("'" + prefix + "'").c_str());
+    std::fclose(f);
+    EXPECT_EQ(sh(python() + " " + script + " > /dev/null"), 0);
     fs::remove_all(dir);
 }
 

@@ -1,5 +1,6 @@
 // plots/stitched_table.py: the thesis' stitched NMSE from a results file,
 // checked on two hand-made rotations (no device needed).
+#include "experiments/results.h"
 #include "testutil.h"
 
 #include <nlohmann/json.hpp>
@@ -98,6 +99,28 @@ TEST(Plots, StitchedTableReproducesTheCommittedRuns)
         EXPECT_NE(out.find(r.sct), std::string::npos) << r.file << "\n" << out;
         EXPECT_NE(out.find(r.voronoi), std::string::npos) << r.file << "\n" << out;
     }
+}
+
+// results.csv gives the same table as results.json (plots/results_io.py reads both).
+TEST(Plots, StitchedTableReadsTheCsvAsTheJson)
+{
+    fs::path dir = fs::temp_directory_path() / ("lb_stitch_csv_" + std::to_string(getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string xz = test::sourceDir() + "/experiments/results/thesis-sct-pocl-epyc.json.xz";
+    const std::string jsonPath = (dir / "results.json").string();
+    int code = -1;
+    capture("xz -dc '" + xz + "' > '" + jsonPath + "'", &code);
+    if (code != 0) GTEST_SKIP() << "no xz to unpack " << xz;
+    results::saveCsv(jsonPath, results::load(jsonPath));
+    std::string script = test::sourceDir() + "/plots/stitched_table.py";
+    std::string fromJson = capture("python3 " + script + " " + jsonPath + " 2>&1", &code);
+    EXPECT_EQ(code, 0) << fromJson;
+    std::string fromCsv = capture("python3 " + script + " " + (dir / "results.csv").string() + " 2>&1", &code);
+    EXPECT_EQ(code, 0) << fromCsv;
+    EXPECT_NE(fromJson.find("cubature: beats its equal-time MCI in 107 of 140"), std::string::npos) << fromJson;
+    EXPECT_EQ(fromCsv, fromJson);
+    fs::remove_all(dir);
 }
 
 } // namespace

@@ -1,0 +1,245 @@
+// report_page.h -- the fixed parts of report.html (report.h): style, the
+// picture viewer's controls and the script. The report inlines them, so the
+// page needs nothing from the network or beside it.
+#pragma once
+
+namespace lb::experiments::report_page {
+
+inline constexpr const char* kCss = R"CSS(
+body { font: 14px/1.4 system-ui, sans-serif; margin: 1em 2em; color: #222; background: #fff; }
+h1 { font-size: 1.5em; } h2 { font-size: 1.2em; margin-top: 1.6em; }
+table { border-collapse: collapse; margin: 0.5em 0; }
+th, td { border: 1px solid #ccc; padding: 2px 6px; text-align: right; }
+td:first-child, th:first-child, table.info td, table.info th { text-align: left; }
+table.sortable th { cursor: pointer; background: #f0f0f0; user-select: none; }
+table.sortable th[data-dir="asc"]::after { content: " \25B2"; }
+table.sortable th[data-dir="desc"]::after { content: " \25BC"; }
+table.sortable tbody tr:hover { background: #f6f6ff; }
+code { background: #f3f3f3; padding: 0 2px; }
+nav { margin: 0.8em 0; }
+figure { display: inline-block; margin: 0.5em; } figure img { max-width: 100%; }
+figcaption { font-size: 0.85em; color: #555; }
+#lbv .ctl { display: flex; flex-wrap: wrap; gap: 0.4em 1.2em; align-items: center; margin-bottom: 0.5em; }
+#lbv .ctl button { font: inherit; padding: 1px 8px; }
+#lbv .ctl button.on { background: #333; color: #fff; }
+#lbCanvas { border: 1px solid #888; image-rendering: pixelated; cursor: pointer; background: #000; }
+#lbCap { margin: 0.3em 0; font-weight: 600; }
+#lbv .help { color: #555; font-size: 0.9em; max-width: 60em; }
+)CSS";
+
+inline constexpr const char* kViewerHtml = R"HTML(<div id="lbv">
+<div class="ctl">
+<label>Scene <select id="lbScene"></select></label>
+<label>Method <select id="lbMethod"></select></label>
+<span id="lbViews"></span>
+<label>Exposure <input id="lbExp" type="range" min="-12" max="12" step="0.5" value="0"> <span id="lbExpV">0</span> stops</label>
+<label>Zoom <select id="lbZoom"><option>1</option><option>2</option><option>4</option><option>8</option><option>16</option></select> x</label>
+</div>
+<canvas id="lbCanvas" width="512" height="512"></canvas>
+<div id="lbCap"></div>
+<p class="help">Keys: <b>1</b> reference, <b>2</b> method, <b>3</b> its error, <b>4</b> MCI at equal time,
+<b>5</b> MCI's error; <b>space</b> or a click on the picture: the next one; <b>&larr; &rarr;</b> scene;
+<b>&uarr; &darr;</b> method; <b>+ &minus;</b> zoom on the near field (the image centre, under the light);
+<b>[ ]</b> exposure by half a stop; <b>0</b> resets zoom and exposure. Pictures: L/(1+L) of L = k 2<sup>exposure</sup> E,
+k = 1/mean(reference) per scene (as <code>lumibench compare --png</code>), magenta where a pixel is not finite;
+error pictures: orange too bright, blue too dark, white no error, saturated at UEB and |LEB|.
+The URL fragment holds the view (e.g. <code>#scene=3&amp;view=mci&amp;zoom=4</code>): copy the address to share it.</p>
+</div>
+)HTML";
+
+// One function, show(), applies every change of view: the URL fragment at
+// load, keys, clicks and the controls all call it.
+inline constexpr const char* kScript = R"JS(
+(function () {
+  "use strict";
+  var VIEWS = ["reference", "method", "error", "mci", "mci_error"];
+  var NAMES = { reference: "Reference", method: "Method", error: "Method's error",
+                mci: "MCI at equal time", mci_error: "MCI's error" };
+  var ZOOMS = [1, 2, 4, 8, 16];
+  var el = document.getElementById("lbdata");
+  var D = el ? JSON.parse(el.textContent) : [];
+  var S = { scene: 0, method: 0, view: "reference", exposure: 0, zoom: 1 };
+  var canvas = document.getElementById("lbCanvas");
+
+  // --- sortable tables ---------------------------------------------------
+  function sortBy(th) {
+    var table = th.closest("table"), body = table.tBodies[0];
+    var idx = Array.prototype.indexOf.call(th.parentNode.children, th);
+    var dir = th.getAttribute("data-dir") === "asc" ? "desc" : "asc";
+    Array.prototype.forEach.call(th.parentNode.children, function (h) { h.removeAttribute("data-dir"); });
+    th.setAttribute("data-dir", dir);
+    var rows = Array.prototype.slice.call(body.rows);
+    rows.sort(function (a, b) {
+      var x = a.cells[idx], y = b.cells[idx];
+      var xs = x ? x.getAttribute("data-sort") : null, ys = y ? y.getAttribute("data-sort") : null;
+      var c;
+      if (xs !== null && ys !== null) c = parseFloat(xs) - parseFloat(ys);
+      else if (xs !== null) return -1;  // blank cells last either way
+      else if (ys !== null) return 1;
+      else c = (x ? x.textContent : "").localeCompare(y ? y.textContent : "", undefined, { numeric: true });
+      return dir === "asc" ? c : -c;
+    });
+    rows.forEach(function (r) { body.appendChild(r); });
+  }
+  Array.prototype.forEach.call(document.querySelectorAll("table.sortable th"), function (th) {
+    th.addEventListener("click", function () { sortBy(th); });
+  });
+
+  if (!canvas || !D.length) return;
+
+  // --- pictures -------------------------------------------------------------
+  var floatCache = {}, pngCache = {};
+  function floats(key, b64) {
+    if (!floatCache[key]) {
+      var bin = atob(b64), u = new Uint8Array(bin.length);
+      for (var i = 0; i < bin.length; i++) u[i] = bin.charCodeAt(i);
+      floatCache[key] = new Float32Array(u.buffer);
+    }
+    return floatCache[key];
+  }
+  // The tone map of host/metrics/tonemap.h (tonemapValue, toByte, kNonFinite),
+  // with the exposure as a factor 2^exposure on k.
+  function toned(f, w, h, k) {
+    var c = document.createElement("canvas");
+    c.width = w; c.height = h;
+    var ctx = c.getContext("2d"), img = ctx.createImageData(w, h), d = img.data;
+    for (var i = 0; i < w * h; i++) {
+      var e = f[i], r, g, b;
+      if (!isFinite(e)) { r = 255; g = 0; b = 255; }
+      else {
+        var L = k * Math.max(e, 0), v = Math.round(Math.min(Math.max(L / (1 + L), 0), 1) * 255);
+        r = g = b = v;
+      }
+      d[4 * i] = r; d[4 * i + 1] = g; d[4 * i + 2] = b; d[4 * i + 3] = 255;
+    }
+    ctx.putImageData(img, 0, 0);
+    return c;
+  }
+  function png(uri) {
+    if (!pngCache[uri]) {
+      var im = new Image();
+      im.onload = function () { draw(); };
+      im.src = uri;
+      pngCache[uri] = im;
+    }
+    return pngCache[uri];
+  }
+  function current() {
+    var sc = D[S.scene], m = sc.methods[S.method] || null;
+    var mci = m && sc.mci[m.label] ? sc.mci[m.label] : null;
+    if (!mci) for (var key in sc.mci) { mci = sc.mci[key]; break; }
+    return { sc: sc, m: m, mci: mci };
+  }
+  function draw() {
+    var c = current(), sc = c.sc, w = sc.width, h = sc.height_px, k = sc.k * Math.pow(2, S.exposure);
+    var src = null, cap = NAMES[S.view] + ": ", item = null;
+    if (S.view === "reference") { src = toned(floats(S.scene + "/ref", sc.ref), w, h, k); cap += sc.label; }
+    else {
+      item = S.view.indexOf("mci") === 0 ? c.mci : c.m;
+      if (!item) cap += "none in this scene";
+      else {
+        cap += item.label + " (" + item.caption + (item.ms ? ", " + item.ms.toPrecision(3) + " ms" : "") + ")";
+        if (S.view === "error" || S.view === "mci_error") {
+          var im = item.err ? png(item.err) : null;
+          if (im && im.complete && im.naturalWidth) src = im;
+          else if (!item.err) cap += ": no error picture saved";
+        } else {
+          src = toned(floats(S.scene + "/" + item.label, item.img), w, h, k);
+        }
+      }
+    }
+    var W = 512, H = Math.round(512 * h / w);
+    canvas.width = W; canvas.height = H;
+    var ctx = canvas.getContext("2d");
+    ctx.imageSmoothingEnabled = false;
+    ctx.fillStyle = "#444"; ctx.fillRect(0, 0, W, H);
+    if (src) {
+      var sw = w / S.zoom, sh = h / S.zoom;
+      ctx.drawImage(src, (w - sw) / 2, (h - sh) / 2, sw, sh, 0, 0, W, H);
+    }
+    document.getElementById("lbCap").textContent = cap + (S.zoom > 1 ? " - zoom " + S.zoom + "x on the centre" : "");
+  }
+  function fragment() {
+    return "scene=" + S.scene + "&method=" + S.method + "&view=" + S.view + "&zoom=" + S.zoom + "&exposure=" + S.exposure;
+  }
+  function parseFragment(h) {
+    var p = {};
+    h.replace(/^#/, "").split("&").forEach(function (kv) {
+      var i = kv.indexOf("="); if (i < 0) return;
+      var k = decodeURIComponent(kv.slice(0, i)), v = decodeURIComponent(kv.slice(i + 1));
+      if (k === "view") p.view = v;
+      else if (k in S) p[k] = parseFloat(v);
+    });
+    return p;
+  }
+  // Every change of view goes through here: fragment, keys, clicks, controls.
+  function show(p) {
+    for (var k in p) if (k in S) S[k] = p[k];
+    S.scene = Math.min(Math.max(Math.round(S.scene) || 0, 0), D.length - 1);
+    S.method = Math.min(Math.max(Math.round(S.method) || 0, 0), Math.max(D[S.scene].methods.length - 1, 0));
+    if (VIEWS.indexOf(S.view) < 0) S.view = "reference";
+    S.zoom = ZOOMS.reduce(function (a, z) { return Math.abs(z - S.zoom) < Math.abs(a - S.zoom) ? z : a; }, 1);
+    S.exposure = Math.min(Math.max(isFinite(S.exposure) ? S.exposure : 0, -12), 12);
+    sync();
+    draw();
+    try { history.replaceState(null, "", "#" + fragment()); } catch (e) { /* file: URLs in some browsers */ }
+  }
+  function next(step) { return VIEWS[(VIEWS.indexOf(S.view) + step + VIEWS.length) % VIEWS.length]; }
+
+  var sceneSel = document.getElementById("lbScene"), methodSel = document.getElementById("lbMethod");
+  var expIn = document.getElementById("lbExp"), zoomSel = document.getElementById("lbZoom");
+  var views = document.getElementById("lbViews");
+  D.forEach(function (sc, i) { sceneSel.add(new Option(sc.label, i)); });
+  VIEWS.forEach(function (v, i) {
+    var b = document.createElement("button");
+    b.textContent = (i + 1) + " " + NAMES[v];
+    b.setAttribute("data-view", v);
+    b.addEventListener("click", function () { show({ view: v }); });
+    views.appendChild(b);
+  });
+  function sync() {
+    sceneSel.value = String(S.scene);
+    methodSel.innerHTML = "";
+    D[S.scene].methods.forEach(function (m, i) { methodSel.add(new Option(m.label, i)); });
+    methodSel.value = String(S.method);
+    expIn.value = String(S.exposure);
+    document.getElementById("lbExpV").textContent = (S.exposure > 0 ? "+" : "") + S.exposure;
+    zoomSel.value = String(S.zoom);
+    Array.prototype.forEach.call(views.children, function (b) {
+      b.className = b.getAttribute("data-view") === S.view ? "on" : "";
+    });
+  }
+  sceneSel.addEventListener("change", function () { show({ scene: +sceneSel.value }); });
+  methodSel.addEventListener("change", function () { show({ method: +methodSel.value }); });
+  expIn.addEventListener("input", function () { show({ exposure: +expIn.value }); });
+  zoomSel.addEventListener("change", function () { show({ zoom: +zoomSel.value }); });
+  canvas.addEventListener("click", function () { show({ view: next(1) }); });
+  var KEYS = {
+    " ": function () { return { view: next(1) }; },
+    "ArrowRight": function () { return { scene: S.scene + 1 }; },
+    "ArrowLeft": function () { return { scene: S.scene - 1 }; },
+    "ArrowDown": function () { return { method: S.method + 1 }; },
+    "ArrowUp": function () { return { method: S.method - 1 }; },
+    "+": function () { return { zoom: S.zoom * 2 }; },
+    "=": function () { return { zoom: S.zoom * 2 }; },
+    "-": function () { return { zoom: S.zoom / 2 }; },
+    "]": function () { return { exposure: S.exposure + 0.5 }; },
+    "[": function () { return { exposure: S.exposure - 0.5 }; },
+    "0": function () { return { zoom: 1, exposure: 0 }; }
+  };
+  document.addEventListener("keydown", function (ev) {
+    var t = ev.target && ev.target.tagName;
+    if (t === "INPUT" || t === "SELECT" || t === "TEXTAREA" || ev.ctrlKey || ev.metaKey || ev.altKey) return;
+    var i = "12345".indexOf(ev.key), p = i >= 0 && ev.key.length === 1 ? { view: VIEWS[i] } : KEYS[ev.key] && KEYS[ev.key]();
+    if (p) { ev.preventDefault(); show(p); }
+  });
+  window.addEventListener("hashchange", function () { show(parseFragment(location.hash)); });
+  // Without a method in the fragment: the first that has an MCI partner.
+  var init = parseFragment(location.hash), sc0 = D[Math.min(Math.max(Math.round(init.scene) || 0, 0), D.length - 1)];
+  if (!("method" in init))
+    sc0.methods.some(function (m, i) { if (sc0.mci[m.label]) { init.method = i; return true; } return false; });
+  show(init);
+})();
+)JS";
+
+} // namespace lb::experiments::report_page

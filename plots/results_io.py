@@ -1,0 +1,75 @@
+"""Reading the records of a `lumibench run` / `merge` result, from either of
+the two files it writes: results.json (the document: context and records,
+also .json.xz) or results.csv (one flat row per record, README "Results as a
+table"). Both give the same list of record dicts, shaped as in results.json:
+`time_ms` a dict (median, min, max, reps, res), `params` a dict, keys a record
+does not have (empty CSV fields) absent, undefined metrics None. Standard
+library only.
+"""
+import csv
+import json
+import lzma
+import os
+
+# CSV columns that hold text even when they look like a number.
+TEXT = {"method", "spec", "role", "scene", "luminaire", "precision", "device", "driver", "equal_time_to",
+        "equal_time_label"}
+# Metric columns: an empty field is an undefined value (null in the JSON), kept as None.
+METRICS = {"nmse", "nrmse", "relmse", "ueb", "leb", "mean_ref", "mean_test", "grad_nmse", "flip"}
+
+
+def _value(s):
+    if s in ("true", "false"):
+        return s == "true"
+    for conv in (int, float):
+        try:
+            return conv(s)
+        except ValueError:
+            pass
+    return s
+
+
+def _record(row):
+    r, params, time_ms = {}, {}, {}
+    for col, s in row.items():
+        if col is None:
+            continue
+        if s == "":
+            if col in METRICS:
+                r[col] = None
+            continue
+        if col.startswith("param_"):
+            params[col[len("param_"):]] = _value(s)
+        elif col.startswith("time_ms_"):
+            time_ms[col[len("time_ms_"):]] = _value(s)
+        else:
+            r[col] = s if col in TEXT else _value(s)
+    r["params"] = params
+    r["time_ms"] = time_ms
+    return r
+
+
+def results_file(path):
+    """A results directory's results.json (else its results.csv), or the file itself."""
+    if os.path.isdir(path):
+        for name in ("results.json", "results.csv"):
+            if os.path.exists(os.path.join(path, name)):
+                return os.path.join(path, name)
+        raise OSError("{}: neither results.json nor results.csv".format(path))
+    return path
+
+
+def load_records(path):
+    """The records of a results directory or file (.json, .json.xz or .csv).
+    Raises OSError or ValueError when it cannot be read or is not a results file."""
+    path = results_file(path)
+    if path.endswith(".csv"):
+        with open(path, newline="") as f:
+            return [_record(row) for row in csv.DictReader(f)]
+    opener = lzma.open if path.endswith(".xz") else open
+    with opener(path, "rt") as f:
+        doc = json.load(f)
+    recs = doc.get("records") if isinstance(doc, dict) else None
+    if not isinstance(recs, list):
+        raise ValueError("{}: no 'records' list (not a lumibench results file)".format(path))
+    return recs

@@ -1,0 +1,244 @@
+// The report of a results directory: results.csv (and pandas reading it), the
+// stitched-rotation tables, and report.html opened in a real browser
+// (headless Chromium) with two views told apart by their screenshots.
+#include "experiments/report.h"
+#include "experiments/results.h"
+#include "metrics/image.h"
+#include "metrics/png.h"
+#include "metrics/tonemap.h"
+#include "testutil.h"
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <string>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace lb {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using results::Record;
+
+std::string slurp(const fs::path& p)
+{
+    std::ifstream in(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+int sh(const std::string& cmd)
+{
+    int st = std::system(cmd.c_str());
+    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+struct Report : ::testing::Test {
+    fs::path dir;
+    void SetUp() override
+    {
+        dir = fs::temp_directory_path() / ("lb_report_" + std::to_string(getpid()) + "_" +
+                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+    }
+    void TearDown() override { fs::remove_all(dir); }
+};
+
+// A record of scene `scene` with the errors of `test` against `ref`.
+Record rec(const std::string& spec, const std::string& role, double rotation, const Image& ref, const Image& test)
+{
+    Record r;
+    r.method = spec.substr(0, spec.find(':'));
+    r.params = r.method == "mc" ? json{{"n", 4}, {"pattern", "poisson"}} : json{{"triangulation", "fan"}};
+    r.luminaire = "A, \"quoted\".ldt";  // a comma and quotes: the CSV must quote it
+    r.height = 1.1;
+    r.rotation = rotation;
+    r.res = ref.width;
+    r.precision = "float";
+    r.device = "dev";
+    r.driver = "drv";
+    r.time_ms = {2.5, 2.25, 3.0, 5, 128};
+    r.error = metrics::compare(ref, test);
+    r.extra["spec"] = spec;
+    r.extra["role"] = role;
+    r.extra["scene"] = "S" + std::to_string(int(rotation * 100));
+    if (role == "equal_time") {
+        r.equal_time_to = "cubature";
+        r.n = 4;
+        r.extra["equal_time_label"] = "cubature";
+        r.extra["equal_time_ratio"] = 1.02;
+        r.extra["equal_time_ok"] = true;
+    }
+    return r;
+}
+
+Image ramp(int n, double scale)
+{
+    Image im(n, n);
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) im.at(y, x) = scale * (1 + x + 3 * y + (x == n / 2 && y == n / 2 ? 40 : 0));
+    return im;
+}
+
+// results.csv: one flat row per record, every parameter and metric a column,
+// undefined numbers empty, odd strings quoted; pandas reads it back.
+TEST_F(Report, CsvHasOneFlatRowPerRecordAndLoadsWithPandas)
+{
+    Image ref = ramp(8, 1), a = ramp(8, 1.25);
+    results::Results doc;
+    doc.records = {rec("cubature", "method", 1.5, ref, a), rec("mc:n=4", "equal_time", 1.5, ref, ramp(8, 0.5))};
+    doc.records[0].extra["stats"] = {{"form", "straight-line"}};  // objects stay out of the table
+    doc.records[1].error.flip = NAN;                                // undefined: an empty field
+    const std::string csv = results::toCsv(doc);
+    const std::string head = csv.substr(0, csv.find('\n'));
+    EXPECT_EQ(head.rfind("method,spec,role,scene,luminaire,height,rotation,res,precision,device,driver,time_ms_median,"
+                         "time_ms_min,time_ms_max,time_ms_reps,time_ms_res,",
+                         0),
+              0u)
+        << head;
+    for (const char* c : {",nmse,", ",flip,", ",grad_nmse,", ",equal_time_to,", ",n,", ",param_n,", ",param_pattern,",
+                          ",param_triangulation,", ",equal_time_ratio", ",equal_time_ok"})
+        EXPECT_NE(head.find(c), std::string::npos) << c << " in " << head;
+    EXPECT_EQ(head.find("stats"), std::string::npos) << head;
+    EXPECT_NE(csv.find("\"A, \"\"quoted\"\".ldt\""), std::string::npos) << csv;
+    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3);
+
+    // written beside results.json by saveCsv; pandas (python3-pandas, scripts/install-deps.sh) reads it
+    const std::string jsonPath = (dir / "results.json").string();
+    results::save(jsonPath, doc);
+    results::saveCsv(jsonPath, doc);
+    ASSERT_TRUE(fs::exists(dir / "results.csv"));
+    EXPECT_EQ(slurp(dir / "results.csv"), csv);
+    if (sh("/usr/bin/python3 -c 'import pandas' 2>/dev/null") != 0)
+        GTEST_SKIP() << "/usr/bin/python3 has no pandas (Debian: apt-get install python3-pandas; "
+                        "scripts/install-deps.sh installs it)";
+    std::ofstream(dir / "check.py") << R"PY(
+import math, sys
+import pandas as pd
+df = pd.read_csv(sys.argv[1])
+assert len(df) == 2, len(df)
+assert list(df["method"]) == ["cubature", "mc"], list(df["method"])
+assert df["luminaire"][0] == 'A, "quoted".ldt', df["luminaire"][0]
+assert df["nmse"].dtype.kind == "f" and (df["nmse"] > 0).all()
+assert df["time_ms_median"][1] == 2.5 and df["time_ms_res"][0] == 128
+assert df["param_n"][1] == 4 and math.isnan(df["param_n"][0])
+assert df["param_triangulation"][0] == "fan"
+assert math.isnan(df["flip"][1])
+assert df["equal_time_to"][1] == "cubature" and df["n"][1] == 4
+assert df["equal_time_ok"][1] == True
+print("pandas ok", df.shape)
+)PY";
+    EXPECT_EQ(sh("/usr/bin/python3 " + (dir / "check.py").string() + " " + (dir / "results.csv").string()), 0);
+}
+
+// The report's main table is the NMSE of the rotations stitched into one
+// image (metrics::pooled), not the mean of the rotations' NMSE: a nearly dark
+// rotation with a large NMSE but tiny squared errors does not dominate it.
+TEST_F(Report, MainTableStitchesTheRotations)
+{
+    // rotation 1: bright, 10 % off everywhere: NMSE = 0.01 / 1.1
+    // rotation 2: nearly dark (1e-3 of the light), 100 % off: NMSE = 1 / 2
+    Image bright(4, 4, 100.0), brightTest(4, 4, 110.0), dark(4, 4, 0.1), darkTest(4, 4, 0.2);
+    results::Results doc;
+    doc.records = {rec("cubature", "method", 1.5, bright, brightTest), rec("cubature", "method", 3.0, dark, darkTest)};
+    results::save((dir / "results.json").string(), doc);
+    experiments::writeReport(dir.string(), "test");
+    const std::string md = slurp(dir / "report.md");
+    // stitched: SSE = 16 (100 + 0.01), P = 32, means 50.05 and 55.1:
+    // (1600.16 / 32) / (50.05 * 55.1) = 1.81324e-2; the mean of the two NMSE would be 0.2545
+    const double want = (16 * (100.0 + 0.01) / 32) / (50.05 * 55.1);
+    EXPECT_NE(md.find(fmt::format("| {:.3e} |", want)), std::string::npos) << want << "\n" << md;
+    EXPECT_EQ(md.find("2.545e-01"), std::string::npos) << md;
+    EXPECT_NE(md.find("rotations stitched"), std::string::npos) << md;
+}
+
+// Pixels of two screenshots that differ.
+size_t differing(const tonemap::Picture& a, const tonemap::Picture& b)
+{
+    if (a.width != b.width || a.height != b.height) return size_t(-1);
+    size_t n = 0;
+    for (size_t i = 0; i < a.px.size(); ++i) n += !(a.px[i] == b.px[i]);
+    return n;
+}
+
+// report.html: self-contained (no URL outside the file), tables and viewer
+// data inline; opened in headless Chromium at two fragments the picture
+// differs (the fragment goes through the same show() as keys and clicks).
+TEST_F(Report, HtmlIsSelfContainedAndSwitchesViewsInChromium)
+{
+    const int n = 16;
+    Image ref = ramp(n, 1), method(n, n), mci(n, n);
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            method.at(y, x) = 1.3 * ref.at(y, x);
+            mci.at(y, x) = ref.at(y, x) * (((x + y) & 1) ? 0.2 : 1.8);  // noisy: a checkerboard
+        }
+    results::Results doc;
+    doc.context = {{"device", "dev"}, {"commit", "abc123"}, {"date", "2026-11-30T00:00:00Z"}, {"experiment", "t"}};
+    doc.records = {rec("cubature", "method", 1.5, ref, method), rec("mc:n=4", "equal_time", 1.5, ref, mci)};
+    results::save((dir / "results.json").string(), doc);
+    fs::path img = dir / "images" / "S150";
+    fs::create_directories(img);
+    writeExr((img / "reference.exr").string(), ref);
+    writeExr((img / "cubature.exr").string(), method);
+    writeExr((img / "mci_eq_cubature.exr").string(), mci);
+    writePng((img / "cubature_err.png").string(), tonemap::errorPicture(ref, method, 20, 1));
+    writePng((img / "mci_eq_cubature_err.png").string(), tonemap::errorPicture(ref, mci, 20, 20));
+    experiments::writeReport(dir.string(), "test");
+
+    const std::string html = slurp(dir / "report.html");
+    for (const char* s : {"abc123", "2026-11-30T00:00:00Z", "class=\"sortable\"", "rotations stitched",
+                          "id=\"lbdata\"", "id=\"lbCanvas\"", "function show("})
+        EXPECT_NE(html.find(s), std::string::npos) << s;
+    // nothing fetched: no http(s) URL in a src or href, no external script or style
+    for (const char* s : {"src=\"http", "href=\"http", "src=\"//", "<link", "@import", "fetch("})
+        EXPECT_EQ(html.find(s), std::string::npos) << s;
+
+    const char* found = nullptr;
+    for (const char* c : {"chromium", "chromium-browser", "google-chrome"})
+        if (sh(std::string("command -v ") + c + " >/dev/null 2>&1") == 0) {
+            found = c;
+            break;
+        }
+    if (!found)
+        GTEST_SKIP() << "no Chromium on this machine (Debian: apt-get install chromium; scripts/install-deps.sh "
+                        "installs it): the browser part of this test is skipped";
+    fs::path profile = dir / "chromium-profile";
+    auto shot = [&](const std::string& fragment) {
+        fs::path out = dir / ("shot_" + std::to_string(std::hash<std::string>{}(fragment)) + ".png");
+        std::string cmd = fmt::format(
+            "timeout 120 {} --headless --disable-gpu {} --user-data-dir='{}' --hide-scrollbars --window-size=1000,1500 "
+            "--virtual-time-budget=3000 --screenshot='{}' 'file://{}#{}' >'{}/chromium.log' 2>&1",
+            found, getuid() == 0 ? "--no-sandbox" : "", profile.string(), out.string(),
+            fs::absolute(dir / "report.html").string(), fragment, dir.string());
+        EXPECT_EQ(sh(cmd), 0) << cmd << "\n" << slurp(dir / "chromium.log");
+        EXPECT_TRUE(fs::exists(out)) << cmd << "\n" << slurp(dir / "chromium.log");
+        return fs::exists(out) ? readPng(out.string()) : tonemap::Picture{};
+    };
+    tonemap::Picture r = shot("view=reference"), m = shot("view=mci"), e = shot("view=error"),
+                     z = shot("view=reference&zoom=4"), x = shot("view=reference&exposure=3");
+    ASSERT_GT(r.width, 0);
+    // not blank: many colours (the ramp's greys at least)
+    std::set<int> colours;
+    for (const auto& p : r.px) colours.insert(p.r << 16 | p.g << 8 | p.b);
+    EXPECT_GT(colours.size(), 40u);
+    // The canvas is 512 x 512 screen pixels; the caption's text changes a few
+    // thousand: switching the picture must change far more than that.
+    const size_t kCaption = 20000;
+    EXPECT_GT(differing(r, m), kCaption) << "reference and MCI look alike";
+    EXPECT_GT(differing(r, e), kCaption) << "reference and error picture look alike";
+    EXPECT_GT(differing(r, z), kCaption) << "zoom changed nothing";
+    EXPECT_GT(differing(r, x), kCaption) << "exposure changed nothing";
+    // the same fragment twice: the same picture (the comparison can tell)
+    EXPECT_EQ(differing(r, shot("view=reference")), 0u);
+}
+
+} // namespace
+} // namespace lb
