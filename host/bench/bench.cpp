@@ -84,12 +84,13 @@ struct Bench {
 
 // The specs one run times: per family of the registry (the expensive
 // reference aside) its default, its specialize=none form where it has one,
-// and its Family::benchSpecs. --quick keeps the defaults.
+// and its Family::benchSpecs. --quick keeps the defaults. The diffuse scene's
+// families only: the bench scene is the diffuse one.
 std::vector<std::string> benchSpecs(bool quick)
 {
     std::vector<std::string> v;
     for (const auto& f : methods::registry().all()) {
-        if (f.expensive) continue;
+        if (f.expensive || !methods::renders(f, SceneKind::Diffuse)) continue;
         v.push_back(f.name);
         if (quick) continue;
         for (const auto& p : f.params)

@@ -16,6 +16,19 @@
 
 namespace lb::cli {
 
+nlohmann::json sceneJson(const Scene& scene)
+{
+    nlohmann::json j = {{"kind", sceneKindName(scene.kind)}, {"height", scene.height}, {"rotation", scene.rotation},
+                        {"width", scene.width},  {"length", scene.length},                {"extent", scene.extent},
+                        {"res", scene.res}};
+    if (scene.kind == SceneKind::Specular) {
+        j["alpha"] = scene.alpha;
+        j["eye"] = {scene.eye.x, scene.eye.y, scene.eye.z};
+    }
+    if (scene.kind == SceneKind::Indirect) j["albedo"] = scene.albedo;
+    return j;
+}
+
 Scene sceneFromFlags(double height, const std::string& rotation, const std::string& size, double extent, int res)
 {
     Scene scene;
@@ -32,6 +45,35 @@ Scene sceneFromFlags(double height, const std::string& rotation, const std::stri
     return scene;
 }
 
+void sceneKindFromFlags(const CLI::App& cmd, const std::string& kind, double alpha, const std::string& eye,
+                        double albedo, Scene& scene)
+{
+    try {
+        scene.kind = parseSceneKind(kind);
+    } catch (const InputError&) {
+        throw InputError(fmt::format("--scene: expected diffuse, specular or indirect, got '{}'", kind));
+    }
+    const bool spec = scene.kind == SceneKind::Specular, ind = scene.kind == SceneKind::Indirect;
+    for (const char* f : {"--alpha", "--eye"})
+        if (cmd.count(f) && !spec) throw InputError(fmt::format("{}: only the specular scene has it (--scene specular)", f));
+    if (cmd.count("--albedo") && !ind) throw InputError("--albedo: only the indirect scene has it (--scene indirect)");
+    scene.alpha = util::checkRange("--alpha", alpha, kMinAlpha, kMaxAlpha);
+    scene.albedo = util::checkRange("--albedo", albedo, 0.0, 1.0);
+    if (cmd.count("--eye")) {
+        std::vector<double> v;
+        size_t b = 0;
+        while (true) {
+            size_t c = eye.find(',', b);
+            v.push_back(util::parseReal("--eye", eye.substr(b, c == std::string::npos ? c : c - b)));
+            if (c == std::string::npos) break;
+            b = c + 1;
+        }
+        if (v.size() != 3) throw InputError(fmt::format("--eye: expected X,Y,Z in metres, got '{}'", eye));
+        for (int k = 0; k < 3; ++k) scene.eye[k] = util::checkRange("--eye", v[k], -kMaxSceneLength, kMaxSceneLength, "m");
+        if (!(scene.eye.z > 0)) throw InputError(fmt::format("--eye: the eye must be above the floor (Z > 0), got '{}'", eye));
+    }
+}
+
 int deviceFlag(const CLI::App& cmd, int device)
 {
     // -1 is "not given" (the default device); an explicit index must exist,
@@ -42,17 +84,28 @@ int deviceFlag(const CLI::App& cmd, int device)
 void addRenderCommand(CLI::App& app)
 {
     struct Opts {
-        std::string luminaire, method, rotation, size = "1x1", precision = "float", out;
-        double height = 0, extent = 5;
+        std::string luminaire, method, rotation, size = "1x1", precision = "float", out, scene = "diffuse", eye;
+        double height = 0, extent = 5, alpha = Scene{}.alpha, albedo = Scene{}.albedo;
         int res = 256, device = -1, reps = 5;
         bool json = false, noCache = false;
     };
     auto o = std::make_shared<Opts>();
     auto* cmd = app.add_subcommand("render", "Render the normalized evaluation scene with one method to OpenEXR");
     cmd->add_option("--luminaire", o->luminaire, "IES or LDT file (or analytic:cos<n>[:two])")->required();
-    cmd->add_option("--method", o->method,
-                    "Method SPEC name:key=value,..., e.g. mc:n=24; methods: " + methods::registry().names())
-        ->required();
+    std::string methodHelp = "Method SPEC name:key=value,..., e.g. mc:n=24; methods: " + methods::registry().names();
+    for (SceneKind k : {SceneKind::Specular, SceneKind::Indirect})
+        if (!methods::registry().names(k).empty())
+            methodHelp += "; --scene " + sceneKindName(k) + ": " + methods::registry().names(k);
+    cmd->add_option("--method", o->method, methodHelp)->required();
+    cmd->add_option("--scene", o->scene,
+                    "What the image shows: diffuse (direct irradiance on the floor, lux), specular (luminance of a "
+                    "glossy GGX floor towards --eye, cd/m^2), indirect (one-bounce irradiance from the walls and "
+                    "ceiling of a 5 x 5 x 3 m room, lux)")
+        ->capture_default_str();
+    cmd->add_option("--alpha", o->alpha, "Specular scene: GGX roughness alpha (0.01 .. 1)")->capture_default_str();
+    cmd->add_option("--eye", o->eye, "Specular scene: eye point X,Y,Z in metres (Z > 0; default 0,4,2)");
+    cmd->add_option("--albedo", o->albedo, "Indirect scene: albedo of walls and ceiling (0 .. 1)")
+        ->capture_default_str();
     cmd->add_option("--height", o->height, "Height h of the light (m, 0 .. 1e4)")->required();
     cmd->add_option("--rotation", o->rotation, "Rotation R in radians (0 .. 2pi; pi/2 .. pi in the papers), e.g. 2.356 "
                                                "or 3pi/4")->required();
@@ -68,9 +121,10 @@ void addRenderCommand(CLI::App& app)
     cmd->add_flag("--no-cache", o->noCache, "Do not read or write the reference cache ($LUMIBENCH_CACHE)");
     cmd->callback([o, cmd] {
         if (o->method.empty()) throw InputError("--method: expected a SPEC such as mc:n=24, got an empty value");
-        methods::MethodSpec spec = methods::parseSpec(o->method);
-        methods::Precision prec = methods::parsePrecision(o->precision);
         Scene scene = sceneFromFlags(o->height, o->rotation, o->size, o->extent, o->res);
+        sceneKindFromFlags(*cmd, o->scene, o->alpha, o->eye, o->albedo, scene);
+        methods::MethodSpec spec = methods::parseSpec(o->method, scene.kind);
+        methods::Precision prec = methods::parsePrecision(o->precision);
         util::checkRange("--reps", o->reps, 1, ocl::kMaxReps);
         const int device = deviceFlag(*cmd, o->device);
 
@@ -101,9 +155,7 @@ void addRenderCommand(CLI::App& app)
                 {"spec", spec.canonical()},
                 {"params", spec.paramsJson()},
                 {"luminaire", o->luminaire},
-                {"scene",
-                 {{"height", scene.height}, {"rotation", scene.rotation}, {"width", scene.width},
-                  {"length", scene.length}, {"extent", scene.extent}, {"res", scene.res}}},
+                {"scene", sceneJson(scene)},
                 {"device", rt.info().name},
                 {"driver", rt.info().driver},
                 {"platform", rt.info().platform},

@@ -5,6 +5,7 @@
 #include "scene/scene.h"
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include <string>
 
@@ -28,5 +29,10 @@ Scene sceneFromFlags(double height, const std::string& rotation, const std::stri
 
 // The --device flag: -1 (the default device) when not given, else an index >= 0.
 int deviceFlag(const CLI::App& cmd, int device);
+// --scene, --alpha, --eye, --albedo into scene (a flag of another kind is an error).
+void sceneKindFromFlags(const CLI::App& cmd, const std::string& kind, double alpha, const std::string& eye,
+                        double albedo, Scene& scene);
+// The scene as `render --json` prints it (kind and the kind's values included).
+nlohmann::json sceneJson(const Scene& scene);
 
 } // namespace lb::cli

@@ -86,7 +86,8 @@ struct Reader {
 const std::set<std::string> kKeys = {"name",      "description", "luminaire_dir", "luminaires", "heights",
                                      "rotations", "methods",     "equal_time",    "mci_curve",  "mc",
                                      "equal_time_fit", "reference", "res",        "precision",  "size",
-                                     "extent",    "reps",        "equal_time_tolerance", "save_images", "time_res"};
+                                     "extent",    "reps",        "equal_time_tolerance", "save_images", "time_res",
+                                     "scene",     "alpha",       "eye",           "albedo"};
 
 // Every .ldt / .ies file of a directory, sorted; of a .ldt and a .ies with the
 // same stem only the .ldt (the suite ships both forms of each luminaire).
@@ -142,7 +143,7 @@ Experiment loadExperiment(const std::string& path, const Overrides& ov)
         if (!kKeys.count(it.key()))
             r.fail(it.key(), "unknown key (known: name, description, luminaire_dir, luminaires, heights, rotations, "
                              "methods, equal_time, mci_curve, mc, equal_time_fit, reference, res, precision, size, "
-                             "extent, reps, equal_time_tolerance, save_images, time_res)");
+                             "extent, reps, equal_time_tolerance, save_images, time_res, scene, alpha, eye, albedo)");
 
     Experiment e;
     e.path = path;
@@ -184,10 +185,11 @@ Experiment loadExperiment(const std::string& path, const Overrides& ov)
         e.rotationText.push_back(text);
     }
 
+    e.sceneKeys = SceneKindKeys::read(j, path);
     // Methods are checked against the registry now, not after an hour of references.
     auto checkSpec = [&](const std::string& key, const std::string& s) {
         try {
-            return methods::parseSpec(s);
+            return methods::parseSpec(s, e.kind());
         } catch (const InputError& err) {
             r.fail(key, err.what());
         }
@@ -252,14 +254,15 @@ Scene SceneId::scene() const
     s.width = width;
     s.length = length;
     s.extent = extent;
-    return s;
+    return kindKeys.applied(s, alpha);
 }
 
 std::string SceneId::label() const
 {
     std::string rot;
     for (char c : rotationText) rot += (std::isalnum(static_cast<unsigned char>(c)) || c == '.') ? c : '-';
-    return fmt::format("{}_h{}_r{}_{}", fs::path(luminaire).stem().string(), height, rot, precision);
+    const std::string a = kindKeys.kind == SceneKind::Specular ? fmt::format("_a{}", alpha) : "";
+    return fmt::format("{}_h{}_r{}{}_{}", fs::path(luminaire).stem().string(), height, rot, a, precision);
 }
 
 std::vector<SceneId> scenes(const Experiment& e)
@@ -268,20 +271,23 @@ std::vector<SceneId> scenes(const Experiment& e)
     for (const auto& lum : e.luminaires)
         for (double h : e.heights)
             for (size_t ri = 0; ri < e.rotations.size(); ++ri)
-                for (const auto& p : e.precisions) {
-                    SceneId s;
-                    s.luminaire = lum;
-                    s.height = h;
-                    s.rotation = e.rotations[ri];
-                    s.rotationText = e.rotationText[ri];
-                    s.precision = p;
-                    s.res = e.res;
-                    s.width = e.width;
-                    s.length = e.length;
-                    s.extent = e.extent;
-                    s.index = out.size();
-                    out.push_back(s);
-                }
+                for (double a : e.sceneKeys.alphas)
+                    for (const auto& p : e.precisions) {
+                        SceneId s;
+                        s.luminaire = lum;
+                        s.height = h;
+                        s.rotation = e.rotations[ri];
+                        s.rotationText = e.rotationText[ri];
+                        s.precision = p;
+                        s.res = e.res;
+                        s.width = e.width;
+                        s.length = e.length;
+                        s.extent = e.extent;
+                        s.kindKeys = e.sceneKeys;
+                        s.alpha = a;
+                        s.index = out.size();
+                        out.push_back(s);
+                    }
     return out;
 }
 

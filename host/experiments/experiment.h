@@ -12,18 +12,21 @@
 //    "reference": "reference",               // the reference SPEC
 //    "res": 64, "precision": ["float"], "size": [1, 1], "extent": 5,
 //    "reps": 5, "equal_time_tolerance": 0.10, "save_images": true,   // reps: 5 .. 1000
-//    "time_res": 512}                        // every method is timed at time_res^2 pixels,
+//    "time_res": 512,                        // every method is timed at time_res^2 pixels,
 //                                            // whatever res the error image has (DESIGN 6)
+//    "scene": "specular", "alpha": [0.1, 0.5], "eye": [0, 4, 2]}   // scene/scene_keys.h
 //
-// A scene is (luminaire, height, rotation, precision); its cells are the
+// A scene is (luminaire, height, rotation, alpha, precision); its cells are the
 // methods, the MCI curve points and the equal-time partners, in that order.
-// Scenes are enumerated luminaire-major, then height, rotation, precision, in
+// Methods are parsed for the file's scene kind (methods::family(name, kind)).
+// Scenes are enumerated luminaire-major, then height, rotation, alpha, precision, in
 // the order of the file (luminaires from a directory sorted by name), so the
 // order, and with it the shard assignment, is deterministic.
 #pragma once
 
 #include "methods/registry.h"
 #include "scene/scene.h"
+#include "scene/scene_keys.h"
 
 #include <nlohmann/json.hpp>
 
@@ -51,6 +54,8 @@ struct Experiment {
     int timeRes = 512;  // methods are timed at time_res^2 pixels (DESIGN 6); 0 = at the image's res
     double equalTimeTolerance = 0.10;
     bool saveImages = false;
+    SceneKindKeys sceneKeys;  // scene, alpha, eye, albedo
+    SceneKind kind() const { return sceneKeys.kind; }
     nlohmann::json raw;  // the file as read
 };
 
@@ -78,9 +83,13 @@ struct SceneId {
     std::string precision;
     int res = 0;
     double width = 1, length = 1, extent = 5;
+    SceneKindKeys kindKeys;  // the experiment's scene kind and its values
+    double alpha = 0.25;     // specular: this scene's alpha (one of kindKeys.alphas)
     size_t index = 0;  // position in the enumeration (shard assignment)
     Scene scene() const;
-    std::string label() const;  // short, file-name safe: "lambert_h0.1_r3pi-4_float"
+    // short, file-name safe: "lambert_h0.1_r3pi-4_float", specular scenes
+    // "lambert_h0.1_r3pi-4_a0.1_float"
+    std::string label() const;
 };
 
 // Every scene of the experiment in the deterministic order described above,

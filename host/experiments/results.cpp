@@ -69,6 +69,8 @@ const std::set<std::string> kKnownKeys = {
     "method", "params", "luminaire", "height", "rotation", "res", "precision", "device", "driver", "time_ms",
     "nmse", "nrmse", "relmse", "ueb", "leb", "nonfinite", "pixels", "mean_ref", "mean_test", "grad_nmse",
     "grad_pairs", "flip", "equal_time_to", "n", "inputs"};
+// The scene-kind keys (scene/scene_keys.h), collected into Record::sceneKeys.
+const std::set<std::string> kSceneKeys = {"scene_kind", "alpha", "eye", "albedo"};
 
 // Output of a shell command with surrounding white space trimmed, "" on failure.
 std::string capture(const std::string& cmd)
@@ -92,6 +94,7 @@ std::string Record::key() const
     json k = json::array({partner ? std::string("equal_time") : method, partner ? json::object() : params, luminaire,
                           num(height), num(rotation), res, precision, device,
                           partner ? json(*equal_time_to) : json(nullptr)});
+    if (!sceneKeys.empty()) k.push_back(sceneKeys);  // diffuse keys stay as they were
     return k.dump();  // objects dump with sorted keys: a canonical string
 }
 
@@ -129,6 +132,7 @@ void to_json(json& j, const Record& r)
     if (r.equal_time_to) j["equal_time_to"] = *r.equal_time_to;
     if (r.n) j["n"] = *r.n;
     if (r.inputs.is_object() && !r.inputs.empty()) j["inputs"] = r.inputs;
+    if (r.sceneKeys.is_object()) j.update(r.sceneKeys);
 }
 
 void from_json(const json& j, Record& r)
@@ -174,8 +178,12 @@ void from_json(const json& j, Record& r)
         r.inputs = j["inputs"];
         if (!r.inputs.is_object()) throw InputError(fmt::format("key \"inputs\": expected an object, found {}", r.inputs.dump()));
     }
-    for (auto it = j.begin(); it != j.end(); ++it)
-        if (!kKnownKeys.count(it.key())) r.extra[it.key()] = it.value();
+    for (auto it = j.begin(); it != j.end(); ++it) {
+        if (kSceneKeys.count(it.key()))
+            r.sceneKeys[it.key()] = it.value();
+        else if (!kKnownKeys.count(it.key()))
+            r.extra[it.key()] = it.value();
+    }
 }
 
 void to_json(json& j, const Results& d)

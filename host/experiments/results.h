@@ -55,6 +55,11 @@ struct Record {
     // digests of the luminaire file and of the kernel sources. Empty in
     // records of older files: resume treats those as stale.
     nlohmann::json inputs = nlohmann::json::object();
+    // The scene's kind and its values, flat at the record's top level
+    // (SceneKindKeys::recordKeys): empty for the diffuse scene, else
+    // scene_kind with alpha and eye (specular) or albedo (indirect). Part of
+    // the cell key when not empty.
+    nlohmann::json sceneKeys = nlohmann::json::object();
     nlohmann::json extra = nlohmann::json::object();  // any other keys, kept as they are
 
     // The cell key: method, params, luminaire, height, rotation, res,

@@ -92,14 +92,14 @@ std::vector<Cell> cellsOf(const Experiment& e)
     std::vector<Cell> cells;
     std::set<std::string> seen;  // canonical SPECs: "mc:n=8" and the curve's N = 8 are one cell
     auto add = [&](const std::string& role, const std::string& spec) {
-        methods::MethodSpec p = methods::parseSpec(spec);
+        methods::MethodSpec p = methods::parseSpec(spec, e.kind());
         if (!seen.insert(p.canonical()).second) return;
         cells.push_back({role, spec, p});
     };
     for (const auto& m : e.methods) add("method", m);
     std::string mcBase = e.mc.find(':') == std::string::npos ? e.mc + ":" : e.mc + ",";
     for (long n : e.mciCurve) add("mci_curve", mcBase + "n=" + std::to_string(n));
-    for (const auto& m : e.equalTime) cells.push_back({"equal_time", m, methods::parseSpec(m)});
+    for (const auto& m : e.equalTime) cells.push_back({"equal_time", m, methods::parseSpec(m, e.kind())});
     return cells;
 }
 
@@ -146,6 +146,7 @@ results::Record baseRecord(const SceneId& sid, ocl::Runtime& rt)
     r.device = rt.info().name;
     r.driver = rt.info().driver;
     r.extra["scene"] = sid.label();
+    r.sceneKeys = SceneKindKeys::recordKeys(sid.scene());
     return r;
 }
 
@@ -246,7 +247,7 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
     // What every record depends on besides its cell key (results.h).
     std::map<std::string, std::string> kernelDigests;  // kernel file -> digest of it and its headers
     auto kernelDigest = [&](const std::string& method) {
-        const std::string& file = methods::family(method).file;
+        const std::string& file = methods::family(method, e.kind()).file;
         auto it = kernelDigests.find(file);
         if (it == kernelDigests.end()) it = kernelDigests.emplace(file, ocl::kernelSourceDigest(file)).first;
         return it->second;
@@ -261,7 +262,7 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
     sum.cells = mine.size() * cells.size();
 
     std::map<std::string, photometry::Table> tables;
-    const methods::MethodSpec refSpec = methods::parseSpec(e.reference);
+    const methods::MethodSpec refSpec = methods::parseSpec(e.reference, e.kind());
     size_t cellsSeen = 0;
     double computeSeconds = 0;
 
@@ -293,7 +294,7 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
             if (c.role == "equal_time") {
                 in["kernel"] = kernelDigest("mc");
                 in["target_kernel"] = kernelDigest(c.parsed.name);
-                in["mc"] = methods::parseSpec(e.mc).canonical();
+                in["mc"] = methods::parseSpec(e.mc, e.kind()).canonical();
                 in["equal_time_tolerance"] = e.equalTimeTolerance;
             } else {
                 in["kernel"] = kernelDigest(c.parsed.name);
@@ -341,7 +342,7 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
             times[s.canonical()] = ms;
             if (s.name == "mc" && s.given.count("n")) {
                 // Only curve points of the experiment's MC pattern enter the fit.
-                methods::MethodSpec base = methods::parseSpec(e.mc);
+                methods::MethodSpec base = methods::parseSpec(e.mc, e.kind());
                 json pa = s.paramsJson(), pb = base.paramsJson();
                 pa.erase("n");
                 pb.erase("n");
@@ -372,13 +373,15 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
                     pts.clear();
                     for (long n : e.equalTimeFit) {
                         auto s = methods::parseSpec(e.mc + (e.mc.find(':') == std::string::npos ? ":" : ",") +
-                                                    "n=" + std::to_string(n));
+                                                        "n=" + std::to_string(n),
+                                                    e.kind());
                         pts.emplace_back(n, sr.render(s).timing.median_ms);
                     }
                 }
                 auto mcAt = [&](long n) {
                     return methods::parseSpec(e.mc + (e.mc.find(':') == std::string::npos ? ":" : ",") + "n=" +
-                                              std::to_string(n));
+                                                  std::to_string(n),
+                                              e.kind());
                 };
                 // N on the measured t(N), then it and its neighbour on the
                 // method's side timed against the method in alternating

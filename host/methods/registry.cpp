@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace lb::methods {
 
 // One line per family (host/methods/family_*.cpp).
@@ -50,23 +52,31 @@ Precision parsePrecision(const std::string& s)
     throw InputError(fmt::format("--precision: expected float or double, got '{}'", s));
 }
 
+bool renders(const Family& f, SceneKind kind)
+{
+    return std::find(f.scenes.begin(), f.scenes.end(), kind) != f.scenes.end();
+}
+
 void Registry::add(Family f)
 {
-    if (find(f.name)) throw Error("method registered twice: " + f.name);
+    for (SceneKind k : f.scenes)
+        if (find(f.name, k))
+            throw Error(fmt::format("method {} registered twice for the {} scene", f.name, sceneKindName(k)));
     families_.push_back(std::move(f));
 }
 
-const Family* Registry::find(const std::string& name) const
+const Family* Registry::find(const std::string& name, SceneKind kind) const
 {
     for (auto& f : families_)
-        if (f.name == name) return &f;
+        if (f.name == name && renders(f, kind)) return &f;
     return nullptr;
 }
 
-std::string Registry::names() const
+std::string Registry::names(SceneKind kind) const
 {
     std::vector<std::string> n;
-    for (auto& f : families_) n.push_back(f.name);
+    for (auto& f : families_)
+        if (renders(f, kind)) n.push_back(f.name);
     return fmt::format("{}", fmt::join(n, "|"));
 }
 
@@ -76,12 +86,21 @@ const Registry& registry()
     return r;
 }
 
-const Family& family(const std::string& name)
+const Family& family(const std::string& name, SceneKind kind)
 {
-    const Family* f = registry().find(name);
-    if (!f)
-        throw InputError(fmt::format("unknown method '{}'; valid methods: {}", name, registry().names()));
-    return *f;
+    const Family* f = registry().find(name, kind);
+    if (f) return *f;
+    if (kind != SceneKind::Diffuse || registry().find(name, SceneKind::Specular) ||
+        registry().find(name, SceneKind::Indirect)) {
+        bool known = false;
+        for (auto& g : registry().all()) known = known || g.name == name;
+        if (known)
+            throw InputError(fmt::format("method '{}' does not render the {} scene (methods that do: {})", name,
+                                         sceneKindName(kind), registry().names(kind)));
+    }
+    throw InputError(fmt::format("unknown method '{}'; valid methods{}: {}", name,
+                                 kind == SceneKind::Diffuse ? "" : " for the " + sceneKindName(kind) + " scene",
+                                 registry().names(kind)));
 }
 
 cl::Buffer LaunchContext::realBuffer(const std::vector<double>& v)

@@ -76,6 +76,10 @@ struct LaunchContext {
 struct Family {
     std::string name;
     std::string summary;                 // one line for --help and README
+    // The scenes it renders (DESIGN 2, 8, 9). A name may be registered once per
+    // scene kind: e.g. a "reference" for the specular scene in its own family
+    // file and kernel, beside the diffuse one.
+    std::vector<SceneKind> scenes{SceneKind::Diffuse};
     std::string file;                    // kernels/<file>
     std::string kernelName = "render";
     std::vector<Param> params;
@@ -125,10 +129,10 @@ std::string kernelForm(const Family& f, const std::string& defines);
 
 class Registry {
 public:
-    void add(Family f);
-    const Family* find(const std::string& name) const;
+    void add(Family f);  // Error when a name is registered twice for one scene kind
+    const Family* find(const std::string& name, SceneKind kind = SceneKind::Diffuse) const;
     const std::vector<Family>& all() const { return families_; }
-    std::string names() const;  // "reference|point|..."
+    std::string names(SceneKind kind = SceneKind::Diffuse) const;  // "reference|point|..."
 
 private:
     std::vector<Family> families_;
@@ -136,7 +140,9 @@ private:
 
 // The registry with every built-in family (built once, on first use).
 const Registry& registry();
-// The family of `name`; InputError listing the valid names when unknown.
-const Family& family(const std::string& name);
+// The family of `name` for scenes of `kind`; InputError listing the valid
+// names for that kind when unknown.
+const Family& family(const std::string& name, SceneKind kind = SceneKind::Diffuse);
+bool renders(const Family& f, SceneKind kind);
 
 } // namespace lb::methods

@@ -135,14 +135,17 @@ std::string cacheKey(const photometry::Table& table, const Scene& scene, const M
     f.bytes(lum.data(), lum.size() * sizeof(float));
     f.str(precisionName(p));
     f.str(spec.canonical());
-    f.str(ocl::kernelSourceDigest(family(spec.name).file));  // the kernel and every header it includes
+    f.str(ocl::kernelSourceDigest(family(spec.name, spec.kind).file));  // the kernel and every header it includes
     return f.hex();
 }
 
 Prepared::Prepared(ocl::Runtime& rt, const photometry::Table& table, const Scene& scene, const MethodSpec& spec,
                    Precision precision)
-    : fam_(methods::family(spec.name)), spec_(spec), scene_(scene)
+    : fam_(methods::family(spec.name, scene.kind)), spec_(spec), scene_(scene)
 {
+    if (spec.kind != scene.kind)
+        throw InputError(fmt::format("method {} was given for the {} scene, not the {} scene it renders here",
+                                     spec.name, sceneKindName(spec.kind), sceneKindName(scene.kind)));
     util::checkRange("--res", scene_.res, 1, kMaxRes);
     scene_.validate();
     table.validate();
@@ -213,7 +216,7 @@ Image Prepared::image()
 RenderResult render(ocl::Runtime& rt, const photometry::Table& table, const Scene& scene, const MethodSpec& spec,
                     Precision precision, const RenderOptions& opt)
 {
-    const Family& fam = family(spec.name);
+    const Family& fam = family(spec.name, scene.kind);
     RenderResult result;
     std::string base, key;
     if (fam.expensive && opt.useCache) {

@@ -21,12 +21,13 @@ const Param& paramOf(const Family& f, const std::string& key)
 }
 } // namespace
 
-MethodSpec parseSpec(const std::string& text)
+MethodSpec parseSpec(const std::string& text, SceneKind kind)
 {
     MethodSpec s;
     size_t colon = text.find(':');
     s.name = text.substr(0, colon);
-    const Family& f = family(s.name);
+    s.kind = kind;
+    const Family& f = family(s.name, kind);
     for (auto& p : f.params) s.values[p.name] = p.def;
     std::string rest = colon == std::string::npos ? std::string() : text.substr(colon + 1);
     size_t b = 0;
@@ -86,7 +87,7 @@ std::string MethodSpec::canonical() const
 nlohmann::json MethodSpec::paramsJson() const
 {
     nlohmann::json j = nlohmann::json::object();
-    const Family& f = family(name);
+    const Family& f = family(name, kind);
     for (auto& p : f.params) {
         const std::string& v = str(p.name);
         if (p.kind == Kind::Int)

@@ -1,6 +1,8 @@
 // spec.h -- SPEC strings `name:key=value,key=value` (DESIGN section 7).
 #pragma once
 
+#include "scene/scene.h"
+
 #include <nlohmann/json.hpp>
 
 #include <map>
@@ -12,6 +14,7 @@ namespace lb::methods {
 
 struct MethodSpec {
     std::string name;
+    SceneKind kind = SceneKind::Diffuse;        // the scene its family renders (family(name, kind))
     std::map<std::string, std::string> values;  // every parameter, canonical text, defaults filled in
     std::set<std::string> given;                // the keys the SPEC named
 
@@ -27,8 +30,10 @@ struct MethodSpec {
     nlohmann::json paramsJson() const;
 };
 
-// Parses and validates against the registry; throws InputError on an unknown
-// method, an unknown key (listing the valid ones), a repeated key or a bad value.
-MethodSpec parseSpec(const std::string& text);
+// Parses and validates against the registry's family of that name for scenes
+// of `kind`; throws InputError on an unknown method (or one that does not
+// render that scene), an unknown key (listing the valid ones), a repeated key
+// or a bad value.
+MethodSpec parseSpec(const std::string& text, SceneKind kind = SceneKind::Diffuse);
 
 } // namespace lb::methods

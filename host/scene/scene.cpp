@@ -13,6 +13,23 @@
 
 namespace lb {
 
+std::string sceneKindName(SceneKind k)
+{
+    switch (k) {
+    case SceneKind::Diffuse: return "diffuse";
+    case SceneKind::Specular: return "specular";
+    case SceneKind::Indirect: return "indirect";
+    }
+    return "?";
+}
+
+SceneKind parseSceneKind(const std::string& s)
+{
+    for (SceneKind k : {SceneKind::Diffuse, SceneKind::Specular, SceneKind::Indirect})
+        if (s == sceneKindName(k)) return k;
+    throw InputError(fmt::format("scene: expected diffuse, specular or indirect, got '{}'", s));
+}
+
 glm::dvec3 Scene::n() const { return {0.0, std::sin(rotation), std::cos(rotation)}; }
 glm::dvec3 Scene::u() const { return {1.0, 0.0, 0.0}; }
 glm::dvec3 Scene::v() const { return glm::cross(u(), n()); }
@@ -41,6 +58,12 @@ std::vector<double> Scene::params() const
     P[LB_P_EXTENT] = extent;
     P[LB_P_RES] = static_cast<double>(res);
     put3(LB_P_NX, {0.0, 0.0, 1.0});  // the receiver plane z = 0, seen from above
+    P[LB_P_KIND] = kind == SceneKind::Specular ? LB_KIND_SPECULAR
+                   : kind == SceneKind::Indirect ? LB_KIND_INDIRECT
+                                                 : LB_KIND_DIFFUSE;
+    put3(LB_P_EYE, eye);
+    P[LB_P_ALPHA] = alpha;
+    P[LB_P_ALBEDO] = albedo;
     return P;
 }
 
@@ -52,7 +75,12 @@ glm::dvec3 Scene::pixel(int row, int col) const
 
 std::string Scene::describe() const
 {
-    return fmt::format("h={} R={} size={}x{} extent={} res={}", height, rotation, width, length, extent, res);
+    std::string d = fmt::format("h={} R={} size={}x{} extent={} res={}", height, rotation, width, length, extent, res);
+    if (kind == SceneKind::Specular)
+        d += fmt::format(" scene=specular alpha={} eye={},{},{}", alpha, eye.x, eye.y, eye.z);
+    else if (kind == SceneKind::Indirect)
+        d += fmt::format(" scene=indirect albedo={}", albedo);
+    return d;
 }
 
 void Scene::validate() const
@@ -77,6 +105,34 @@ void Scene::validate() const
         throw InputError(fmt::format("scene {}: degenerate light {} x {}: a side below 1e-6 of the scene scale {} "
                                      "makes corners coincide or collinear in float",
                                      describe(), width, length, scale));
+    validateKind();
+}
+
+void Scene::validateKind() const
+{
+    switch (kind) {
+    case SceneKind::Diffuse: return;
+    case SceneKind::Specular:
+        if (!(alpha >= kMinAlpha && alpha <= kMaxAlpha))
+            throw InputError(fmt::format("scene {}: alpha {} outside {} .. {}", describe(), alpha, kMinAlpha,
+                                         kMaxAlpha));
+        for (int k = 0; k < 3; ++k)
+            if (!std::isfinite(eye[k]) || std::fabs(eye[k]) > kMaxSceneLength)
+                throw InputError(fmt::format("scene {}: eye coordinates must be finite and within {} m",
+                                             describe(), kMaxSceneLength));
+        if (!(eye.z > 0)) throw InputError(fmt::format("scene {}: the eye must be above the floor (z > 0)", describe()));
+        return;
+    case SceneKind::Indirect:
+        if (!(albedo >= 0 && albedo <= 1))
+            throw InputError(fmt::format("scene {}: albedo {} outside 0 .. 1", describe(), albedo));
+        for (const auto& c : corners())
+            if (!(std::fabs(c.x) < kRoomHalf && std::fabs(c.y) < kRoomHalf && c.z > 0 && c.z < kRoomHeight))
+                throw InputError(fmt::format("scene {}: the light's corner ({:.3g}, {:.3g}, {:.3g}) lies outside "
+                                             "the room [-{}, {}]^2 x [0, {}] m (choose a height with the light "
+                                             "inside it)",
+                                             describe(), c.x, c.y, c.z, kRoomHalf, kRoomHalf, kRoomHeight));
+        return;
+    }
 }
 
 } // namespace lb

@@ -19,6 +19,20 @@ constexpr double kMaxSceneLength = 1e4;
 // Pixels per side: 16384^2 doubles are 2 GiB, the largest buffer we ask of a device.
 constexpr int kMaxRes = 16384;
 
+// What the image shows (DESIGN sections 2, 8, 9): the floor's direct
+// irradiance, the luminance a glossy floor reflects towards an eye, or the
+// floor's one-bounce indirect irradiance inside a room.
+enum class SceneKind { Diffuse, Specular, Indirect };
+std::string sceneKindName(SceneKind k);            // "diffuse" | "specular" | "indirect"
+SceneKind parseSceneKind(const std::string& s);    // InputError naming the three otherwise
+
+// GGX roughness range of the specular scene: below 0.01 the lobe is narrower
+// than a float-resolved direction near grazing and no reference resolves it;
+// above 1 the Trowbridge-Reitz lobe is wider than any real glossy floor.
+constexpr double kMinAlpha = 0.01, kMaxAlpha = 1.0;
+// The room of the indirect scene (DESIGN 9): [-half, half]^2 x [0, height] m.
+constexpr double kRoomHalf = 2.5, kRoomHeight = 3.0;
+
 struct Scene {
     double height = 1.0;                 // h: lower edge at R = pi/2; centre at h + L/2
     double rotation = 3.14159265358979;  // R: angle between n_L and n_x, pi/2 .. pi
@@ -26,6 +40,11 @@ struct Scene {
     double length = 1.0;                 // L along v
     double extent = 5.0;                 // S: side of the imaged square
     int res = 256;                       // N x N pixels
+
+    SceneKind kind = SceneKind::Diffuse;
+    double alpha = 0.25;                 // specular: GGX roughness, kMinAlpha .. kMaxAlpha
+    glm::dvec3 eye{0.0, 4.0, 2.0};       // specular: eye point (m), z > 0
+    double albedo = 0.5;                 // indirect: albedo of walls and ceiling, 0 .. 1
 
     glm::dvec3 center() const;
     glm::dvec3 u() const;
@@ -44,8 +63,14 @@ struct Scene {
     // against the scene's coordinates (>= 1e-6 of max(W, L, h + L, S), i.e.
     // ~8 float ulps). A narrower light has coincident or collinear corners in
     // the kernels (zero area, undefined L_e = I / (A cos)): a clear error, not
-    // NaN or a silent zero image. render() calls it.
+    // NaN or a silent zero image. The kind's own values too: alpha in
+    // kMinAlpha .. kMaxAlpha, the eye finite and above the floor (z > 0), the
+    // albedo in 0 .. 1, and in the room the light's corners inside it.
+    // render() calls it.
     void validate() const;
+
+private:
+    void validateKind() const;
 };
 
 } // namespace lb

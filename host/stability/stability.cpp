@@ -196,6 +196,10 @@ Scene sceneOf(const Case& c, int res)
     s.extent = c.extent;
     s.res = std::max(res, 3);
     if (c.oddRes && s.res % 2 == 0) ++s.res;
+    s.kind = c.kind;
+    s.alpha = c.alpha;
+    s.eye = c.eye;
+    s.albedo = c.albedo;
     return s;
 }
 
@@ -224,7 +228,8 @@ std::vector<CaseResult> run(ocl::Runtime& rt, const Options& opt)
     std::vector<const methods::Family*> fams;
     for (auto& f : methods::registry().all())
         if (opt.methods.empty() || std::count(opt.methods.begin(), opt.methods.end(), f.name)) fams.push_back(&f);
-    for (auto& m : opt.methods) methods::family(m);  // InputError on an unknown name
+    for (auto& m : opt.methods)  // InputError on a name no scene kind knows
+        if (std::none_of(fams.begin(), fams.end(), [&](auto* f) { return f->name == m; })) methods::family(m);
     for (auto& n : opt.cases)
         if (std::none_of(catalogue().begin(), catalogue().end(), [&](const Case& c) { return c.name == n; }))
             throw InputError(fmt::format("stability: unknown case '{}'", n));
@@ -248,15 +253,20 @@ std::vector<CaseResult> run(ocl::Runtime& rt, const Options& opt)
         if (opt.progress) std::cerr << fmt::format("stability: {} ({})\n", c.name, s.describe());
         photometry::Table table = luminaire(c.luminaire);
 
+        // The methods that render this case's kind of scene.
+        std::vector<const methods::Family*> caseFams;
+        for (auto* f : fams)
+            if (methods::renders(*f, c.kind)) caseFams.push_back(f);
+
         if (c.expect == Expect::Rejected) {
             // Every method and precision must refuse the light with an InputError.
-            for (auto* f : fams)
+            for (auto* f : caseFams)
                 for (Precision p : precs) {
                     Row row;
                     row.method = f->name;
                     row.precision = methods::precisionName(p);
                     try {
-                        methods::render(rt, table, s, methods::parseSpec(f->name), p, ro);
+                        methods::render(rt, table, s, methods::parseSpec(f->name, c.kind), p, ro);
                         row.failures.push_back("rendered a degenerate light instead of an InputError");
                     } catch (const InputError& e) {
                         if (cr.rejected.empty()) cr.rejected = e.what();
@@ -269,16 +279,16 @@ std::vector<CaseResult> run(ocl::Runtime& rt, const Options& opt)
 
         // The ground truth: the reference in double (float when the device has none).
         Precision best = precs.back();
-        auto ref = methods::render(rt, table, s, methods::parseSpec("reference"), best, ro);
+        auto ref = methods::render(rt, table, s, methods::parseSpec("reference", c.kind), best, ro);
         cr.reference = ref.image;
         cr.refMax = maxAbs(ref.image);
         if (ref.stats.contains("max_err_est")) cr.refErrEst = ref.stats["max_err_est"].get<double>();
         Image point;
         if (c.expect == Expect::PointLimit)
-            point = methods::render(rt, table, s, methods::parseSpec("point"), best, ro).image;
+            point = methods::render(rt, table, s, methods::parseSpec("point", c.kind), best, ro).image;
 
-        for (auto* f : fams) {
-            auto spec = methods::parseSpec(f->name);
+        for (auto* f : caseFams) {
+            auto spec = methods::parseSpec(f->name, c.kind);
             Image dbl;
             // Double first, so float rows can be compared with it.
             for (auto it = precs.rbegin(); it != precs.rend(); ++it) {

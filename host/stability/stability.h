@@ -55,6 +55,12 @@ struct Case {
     bool oddRes = false;       // force an odd resolution (a pixel row exactly at y = 0)
     bool quick = false;        // part of the --quick subset (CI)
     double maxFd = 0.05;       // bound on fd_diff (float vs double of one method)
+    // The scene's kind and its values (scene/scene.h); each case runs the
+    // methods that render its kind (methods::renders).
+    SceneKind kind = SceneKind::Diffuse;
+    double alpha = Scene{}.alpha;
+    glm::dvec3 eye = Scene{}.eye;
+    double albedo = Scene{}.albedo;
 };
 
 // The catalogue of extreme scenes (stability.cpp).

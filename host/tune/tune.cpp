@@ -143,7 +143,8 @@ TuneExperiment loadTuneExperiment(const std::string& path)
     static const std::set<std::string> keys = {
         "name",      "description", "method",    "params",   "reference", "luminaire_dir", "res",
         "precision", "size",        "extent",    "train",    "validation", "objective",    "algorithm", "metric",
-        "global",    "global_maxeval", "maxeval", "maxtime", "seed"};
+        "global",    "global_maxeval", "maxeval", "maxtime", "seed",  "scene",     "alpha",      "eye",
+        "albedo"};
     for (auto it = j.begin(); it != j.end(); ++it)
         if (!keys.count(it.key())) fail(path, it.key(), fmt::format("unknown key (known: {})", fmt::join(keys, ", ")));
 
@@ -165,13 +166,15 @@ TuneExperiment loadTuneExperiment(const std::string& path)
     e.name = j.contains("name") ? str("name") : fs::path(path).stem().string();
     if (!j.contains("method")) fail(path, "method", "missing (a SPEC, e.g. \"cubature:triangulation=fan\")");
     e.method = str("method");
+    e.sceneKeys = SceneKindKeys::read(j, path);
+    const SceneKind kind = e.sceneKeys.kind;
     methods::MethodSpec base;
     try {
-        base = methods::parseSpec(e.method);
+        base = methods::parseSpec(e.method, kind);
     } catch (const InputError& err) {
         fail(path, "method", err.what());
     }
-    const auto& fam = methods::family(base.name);
+    const auto& fam = methods::family(base.name, kind);
     if (j.contains("params")) {
         e.params = strings(path, "params", j["params"]);
         for (const auto& n : e.params) {
@@ -189,7 +192,8 @@ TuneExperiment loadTuneExperiment(const std::string& path)
     if (j.contains("reference")) {
         e.reference = str("reference");
         try {
-            if (methods::parseSpec(e.reference).name != "reference") fail(path, "reference", "expected a reference SPEC");
+            if (methods::parseSpec(e.reference, kind).name != "reference")
+                fail(path, "reference", "expected a reference SPEC");
         } catch (const InputError& err) {
             fail(path, "reference", err.what());
         }
@@ -246,9 +250,10 @@ TuneExperiment loadTuneExperiment(const std::string& path)
     return e;
 }
 
-std::string specWith(const std::string& base, const std::vector<std::string>& names, const std::vector<double>& values)
+std::string specWith(const std::string& base, const std::vector<std::string>& names, const std::vector<double>& values,
+                     SceneKind kind)
 {
-    methods::MethodSpec s = methods::parseSpec(base);
+    methods::MethodSpec s = methods::parseSpec(base, kind);
     std::map<std::string, std::string> kv;
     for (const auto& k : s.given) kv[k] = s.values.at(k);
     for (size_t i = 0; i < names.size(); ++i) kv[names[i]] = fmt::format("{}", values[i]);
@@ -268,8 +273,8 @@ public:
     Tuner(const TuneExperiment& e, const TuneOptions& o) : e_(e), opt_(o), rt_(o.device)
     {
         prec_ = methods::parsePrecision(e.precision);
-        base_ = methods::parseSpec(e.method);
-        const auto& fam = methods::family(base_.name);
+        base_ = methods::parseSpec(e.method, e.sceneKeys.kind);
+        const auto& fam = methods::family(base_.name, e.sceneKeys.kind);
         for (const auto& n : e.params)
             for (const auto& p : fam.params)
                 if (p.name == n) dims_.push_back({p});
@@ -283,26 +288,29 @@ private:
     std::vector<Case> cases(const SceneSet& s, const std::string& what)
     {
         std::vector<Case> out;
-        methods::MethodSpec ref = methods::parseSpec(e_.reference);
+        methods::MethodSpec ref = methods::parseSpec(e_.reference, e_.sceneKeys.kind);
         methods::RenderOptions ro;
         ro.progress = !opt_.quiet;
         for (const auto& lum : s.luminaires) {
             auto table = std::make_shared<photometry::Table>(photometry::load(lum));
             for (double h : s.heights)
-                for (size_t r = 0; r < s.rotations.size(); ++r) {
-                    Case c;
-                    c.table = table;
-                    c.scene.height = h;
-                    c.scene.rotation = s.rotations[r];
-                    c.scene.res = e_.res;
-                    c.scene.width = e_.width;
-                    c.scene.length = e_.length;
-                    c.scene.extent = e_.extent;
-                    c.label = fmt::format("{} h={} R={}", fs::path(lum).stem().string(), h, s.rotationText[r]);
-                    if (!opt_.quiet) fmt::print(stderr, "tune: {} reference {}\n", what, c.label);
-                    c.ref = methods::render(rt_, *table, c.scene, ref, prec_, ro).image;
-                    out.push_back(std::move(c));
-                }
+                for (size_t r = 0; r < s.rotations.size(); ++r)
+                    for (double alpha : e_.sceneKeys.alphas) {
+                        Case c;
+                        c.table = table;
+                        c.scene.height = h;
+                        c.scene.rotation = s.rotations[r];
+                        c.scene.res = e_.res;
+                        c.scene.width = e_.width;
+                        c.scene.length = e_.length;
+                        c.scene.extent = e_.extent;
+                        c.scene = e_.sceneKeys.applied(c.scene, alpha);
+                        c.label = fmt::format("{} h={} R={}", fs::path(lum).stem().string(), h, s.rotationText[r]);
+                        if (c.scene.kind == SceneKind::Specular) c.label += fmt::format(" alpha={}", alpha);
+                        if (!opt_.quiet) fmt::print(stderr, "tune: {} reference {}\n", what, c.label);
+                        c.ref = methods::render(rt_, *table, c.scene, ref, prec_, ro).image;
+                        out.push_back(std::move(c));
+                    }
         }
         return out;
     }
@@ -314,7 +322,8 @@ private:
     {
         std::vector<std::string> names;
         for (const auto& d : dims_) names.push_back(d.param.name);
-        methods::MethodSpec s = methods::parseSpec(specWith(e_.method, names, values));
+        methods::MethodSpec s =
+            methods::parseSpec(specWith(e_.method, names, values, e_.sceneKeys.kind), e_.sceneKeys.kind);
         methods::RenderOptions ro;
         ro.reps = 1;  // only the image matters here
         std::vector<double> out;
@@ -470,7 +479,7 @@ json Tuner::run()
         s["params"] = paramsJson(v);
         std::vector<std::string> names;
         for (const auto& d : dims_) names.push_back(d.param.name);
-        s["spec"] = specWith(e_.method, names, v);
+        s["spec"] = specWith(e_.method, names, v, e_.sceneKeys.kind);
         for (const auto& [set, x] : {std::pair<std::string, const std::vector<double>*>{"train", &tr}, {"validation", &va}}) {
             const std::string k = set + "_" + e_.metric;
             s[k] = aggregate(*x);

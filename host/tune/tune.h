@@ -15,7 +15,9 @@
 //    "objective": "mean",                        // mean | worst of the metric over the training scenes
 //    "algorithm": "LN_SBPLX",                    // any nlopt name (LN_NELDERMEAD, LN_BOBYQA, ...)
 //    "global": "GN_DIRECT_L", "global_maxeval": 40,   // optional global search before the local one
-//    "maxeval": 30, "maxtime": 60, "seed": 1}
+//    "maxeval": 30, "maxtime": 60, "seed": 1,
+//    "scene": "specular", "alpha": [0.1, 0.5], "eye": [0, 4, 2]}   // scene/scene_keys.h; alphas
+//                                                // multiply the train and validation scenes
 //
 // Each parameter is searched in the unit interval mapped onto its bounds from
 // the tunables table, linearly or logarithmically (Scale::Log). Continuous
@@ -24,6 +26,7 @@
 #pragma once
 
 #include "methods/registry.h"
+#include "scene/scene_keys.h"
 
 #include <nlohmann/json.hpp>
 
@@ -55,6 +58,7 @@ struct TuneExperiment {
     int maxeval = 30;
     double maxtime = 0;              // seconds, 0 = none
     unsigned seed = 1;
+    SceneKindKeys sceneKeys;  // scene, alpha, eye, albedo
     nlohmann::json raw;
 };
 
@@ -82,6 +86,7 @@ struct TuneOptions {
 nlohmann::json runTune(const TuneExperiment& e, const TuneOptions& opt);
 
 // The SPEC with `names` set to `values` (canonical text), the rest from `base`.
-std::string specWith(const std::string& base, const std::vector<std::string>& names, const std::vector<double>& values);
+std::string specWith(const std::string& base, const std::vector<std::string>& names, const std::vector<double>& values,
+                     SceneKind kind = SceneKind::Diffuse);
 
 } // namespace lb::tune

@@ -15,7 +15,20 @@
 #define LB_P_EXTENT 14 /* side S of the square image */
 #define LB_P_RES 15    /* resolution N (pixels per side) */
 #define LB_P_NX 16     /* receiver normal n_x (3) */
-#define LB_SCENE_SIZE 20
+#define LB_P_KIND 19   /* what the image shows: LB_KIND_* below */
+#define LB_P_EYE 20    /* specular: the eye point (3) */
+#define LB_P_ALPHA 23  /* specular: GGX roughness alpha */
+#define LB_P_ALBEDO 24 /* indirect: albedo of walls and ceiling */
+#define LB_SCENE_SIZE 28
+
+#define LB_KIND_DIFFUSE 0  /* direct irradiance on the floor (DESIGN 2) */
+#define LB_KIND_SPECULAR 1 /* luminance of a glossy floor towards the eye (DESIGN 8) */
+#define LB_KIND_INDIRECT 2 /* one-bounce indirect irradiance on the floor (DESIGN 9) */
+/* The room of the indirect scene (DESIGN 9): [-HALF, HALF]^2 x [0, HEIGHT] m,
+ * the same values as kRoomHalf / kRoomHeight of host/scene/scene.h (a test
+ * holds them equal). */
+#define LB_ROOM_HALF 2.5
+#define LB_ROOM_HEIGHT 3.0
 
 typedef struct {
     real3 c, u, v, n; /* centre and frame: n_L points where the light emits; v = cross(u, n) */

@@ -58,6 +58,24 @@ TEST(Flags, RenderAndBenchSceneFlags)
     });
 }
 
+// The scene-kind flags: a value of the wrong range, or a flag of another kind.
+TEST(Flags, SceneKindFlags)
+{
+    const std::string r = kRender + "--height 1 ";
+    expectRejected({
+        {r + "--scene glossy", "--scene: expected diffuse, specular or indirect, got 'glossy'"},
+        {r + "--alpha 0.1", "--alpha: only the specular scene has it (--scene specular)"},
+        {r + "--eye 0,4,2", "--eye: only the specular scene has it"},
+        {r + "--scene specular --albedo 0.2", "--albedo: only the indirect scene has it"},
+        {r + "--scene specular --alpha 0", "--alpha: expected a number in [0.01, 1], got 0"},
+        {r + "--scene specular --alpha nan", "--alpha: expected a number in [0.01, 1], got nan"},
+        {r + "--scene specular --eye 0,4", "--eye: expected X,Y,Z in metres, got '0,4'"},
+        {r + "--scene specular --eye 0,4,-1", "--eye: the eye must be above the floor (Z > 0)"},
+        {r + "--scene specular --eye 0,x,1", "--eye: expected a finite number, got 'x'"},
+        {r + "--scene indirect --albedo 2", "--albedo: expected a number in [0, 1], got 2"},
+    });
+}
+
 TEST(Flags, RunTuneCompareFlags)
 {
     const std::string smoke = test::sourceDir() + "/experiments/smoke.json";

@@ -100,6 +100,66 @@ TEST(ExperimentKeys, AreRangeChecked)
 
 // Before: a rerun after changing the luminaire's content (same name), the
 // extent or the reference tolerance kept the old records ("0 computed").
+// The scene-kind keys: a key of another kind is refused, alpha lists multiply
+// the scenes, and records of a specular scene carry its values in their key.
+TEST(ExperimentKeys, SceneKinds)
+{
+    fs::path d = tmpDir("kinds");
+    fs::copy_file(fs::path(test::sourceDir()) / "luminaires" / "lambert.ldt", d / "lum.ldt");
+    const std::string f = (d / "e.json").string();
+    auto err = [&](const json& patch) {
+        json j = tiny(d);
+        j.update(patch);
+        return inputErrorOf([&] { experiments::loadExperiment(writeJson(d / "e.json", j)); });
+    };
+    EXPECT_EQ(err({{"alpha", 0.1}}), f + ": key \"alpha\": only the specular scene has it (\"scene\": \"specular\")");
+    EXPECT_EQ(err({{"albedo", 0.1}}), f + ": key \"albedo\": only the indirect scene has it (\"scene\": \"indirect\")");
+    EXPECT_EQ(err({{"scene", "glossy"}}), f + ": key \"scene\": scene: expected diffuse, specular or indirect, got 'glossy'");
+    EXPECT_EQ(err({{"scene", "specular"}, {"alpha", {0.1, 0.001}}}),
+              f + ": key \"alpha\": expected a number in [0.01, 1], got 0.001");
+    EXPECT_EQ(err({{"scene", "specular"}, {"eye", {0, 4}}}), f + ": key \"eye\": expected [x, y, z] in metres, found [0,4]");
+    EXPECT_EQ(err({{"scene", "indirect"}, {"albedo", -0.5}}), f + ": key \"albedo\": expected a number in [0, 1], got -0.5");
+
+    // The diffuse methods do not render the specular scene: named as such.
+    const std::string spec = err({{"scene", "specular"}});
+    EXPECT_NE(spec.find("does not render the specular scene"), std::string::npos) << spec;
+
+    // Alphas enumerate like heights; labels and scenes carry them.
+    json j = tiny(d);
+    j["heights"] = {1.0, 2.0};
+    auto e = experiments::loadExperiment(writeJson(d / "e.json", j));
+    auto ss = experiments::scenes(e);
+    ASSERT_EQ(ss.size(), 2u);
+    EXPECT_EQ(ss[0].scene().kind, SceneKind::Diffuse);
+    EXPECT_EQ(ss[0].label().find("_a"), std::string::npos);
+    e.sceneKeys.kind = SceneKind::Specular;
+    e.sceneKeys.alphas = {0.1, 0.5};
+    ss = experiments::scenes(e);
+    ASSERT_EQ(ss.size(), 4u);
+    EXPECT_EQ(ss[1].scene().alpha, 0.5);
+    EXPECT_EQ(ss[1].scene().kind, SceneKind::Specular);
+    EXPECT_EQ(ss[2].height, 2.0);
+    EXPECT_NE(ss[1].label().find("_a0.5_"), std::string::npos) << ss[1].label();
+
+    // Record keys: the diffuse key is unchanged; specular values are part of it
+    // and survive a save / load.
+    results::Record a;
+    a.method = "point";
+    const std::string diffuseKey = a.key();
+    EXPECT_EQ(a.key().find("scene_kind"), std::string::npos);
+    a.sceneKeys = SceneKindKeys::recordKeys(ss[0].scene());
+    results::Record b = a;
+    b.sceneKeys = SceneKindKeys::recordKeys(ss[1].scene());
+    EXPECT_NE(a.key(), diffuseKey);
+    EXPECT_NE(a.key(), b.key());
+    json ja = a;
+    EXPECT_EQ(ja["scene_kind"], "specular");
+    EXPECT_EQ(ja["alpha"], 0.1);
+    results::Record back = ja.get<results::Record>();
+    EXPECT_EQ(back.key(), a.key());
+    EXPECT_FALSE(back.extra.contains("alpha"));
+}
+
 TEST(Resume, RecomputesWhatChangedAndSaysSo)
 {
     LB_REQUIRE_RUNTIME(rt);

@@ -51,9 +51,13 @@ TEST(Stability, RenderRejectsDegenerateLightForEveryMethod)
     LB_REQUIRE_RUNTIME(rt);
     auto table = stability::luminaire("lambert");
     for (auto& f : methods::registry().all())
-        EXPECT_THROW(methods::render(*rt, table, sceneOf(0, 1), methods::parseSpec(f.name), methods::Precision::Float),
-                     InputError)
-            << f.name;
+        for (SceneKind k : f.scenes) {
+            Scene s = sceneOf(0, 1);
+            s.kind = k;
+            EXPECT_THROW(methods::render(*rt, table, s, methods::parseSpec(f.name, k), methods::Precision::Float),
+                         InputError)
+                << f.name << " " << sceneKindName(k);
+        }
 }
 
 // measure() on images whose answers are known by hand.
