@@ -25,6 +25,7 @@ int main(int argc, char** argv)
     lb::cli::addTuneCommand(app);
     lb::cli::addStabilityCommand(app);
     lb::cli::addBenchCommand(app);
+    lb::cli::addLtcCommand(app);
     try {
         // CLI11 reads "--opt=" as "--opt" and takes the next argument as its
         // value ("--method= --out x.exr" complained about --out): an empty

@@ -9,6 +9,9 @@
 #include "dynamic.h"
 #include "cubature.h"
 #include "voronoi.h"
+#include "ggx.h"
+#include "ltc.h"
+#include "specref.h"
 /* The point-sample baselines' straight-line forms, one pixel per call (they
  * use rect_lanes.inc's sample and triangle helpers, instantiated by
  * cubature.h; lanes_all.inc lists every form in this order). */

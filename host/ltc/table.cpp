@@ -1,0 +1,142 @@
+// table.cpp -- the LTC table file (ltc.h): JSON with the fit's options and
+// one row of numbers per cell, doubles in round-trip precision.
+#include "ltc/ltc.h"
+
+#include "util/error.h"
+#include "util/fileio.h"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <mutex>
+
+namespace lb::ltc {
+
+namespace {
+constexpr const char* kFormat = "lumibench-ltc-ggx";
+constexpr int kVersion = 1;
+} // namespace
+
+std::string toJson(const Table& t)
+{
+    nlohmann::json j;
+    j["format"] = kFormat;
+    j["version"] = kVersion;
+    j["brdf"] = "GGX, height-correlated Smith G2, F = 1 (DESIGN section 8)";
+    j["grid"] = "cell (i, j) at index j * size + i: sqrt(alpha) = i / (size - 1) (alpha >= alpha_min), "
+                "theta_o = min(j / (size - 1) * pi / 2, theta_max)";
+    j["size"] = t.options.size;
+    j["samples"] = t.options.samples;
+    j["norm_panels"] = t.options.normPanels;
+    j["alpha_min"] = t.options.alphaMin;
+    j["theta_max"] = t.options.thetaMax;
+    j["max_eval"] = t.options.maxEval;
+    j["columns"] = {"m00", "m02", "m20", "m22", "norm", "error", "l1", "m11", "m22p", "m13"};
+    nlohmann::json cells = nlohmann::json::array();
+    for (const Cell& c : t.cells)
+        cells.push_back({c.m00, c.m02, c.m20, c.m22, c.norm, c.error, c.l1, c.m11, c.m22p, c.m13});
+    j["cells"] = std::move(cells);
+    // one cell per line: diffable, and the numbers round-trip exactly
+    std::string s = "{\n";
+    bool first = true;
+    for (auto it = j.begin(); it != j.end(); ++it) {
+        if (it.key() == "cells") continue;
+        s += fmt::format("{}  {}: {}", first ? "" : ",\n", nlohmann::json(it.key()).dump(), it.value().dump());
+        first = false;
+    }
+    s += ",\n  \"cells\": [\n";
+    for (size_t i = 0; i < j["cells"].size(); ++i)
+        s += "    " + j["cells"][i].dump() + (i + 1 < j["cells"].size() ? ",\n" : "\n");
+    s += "  ]\n}\n";
+    return s;
+}
+
+void write(const Table& t, const std::string& path)
+{
+    util::writeFileAtomic(path, toJson(t));
+}
+
+Table read(const std::string& path)
+{
+    std::string text = util::readFile(path, "LTC table file", 64u << 20);
+    nlohmann::json j;
+    try {
+        j = nlohmann::json::parse(text);
+    } catch (const std::exception& e) {
+        throw InputError(fmt::format("{}: expected an LTC table (JSON): {}", path, e.what()));
+    }
+    auto need = [&](const char* k) -> const nlohmann::json& {
+        if (!j.is_object() || !j.contains(k)) throw InputError(fmt::format("{}: LTC table lacks the key \"{}\"", path, k));
+        return j.at(k);
+    };
+    try {
+        if (need("format").get<std::string>() != kFormat || need("version").get<int>() != kVersion)
+            throw InputError(fmt::format("{}: expected format \"{}\" version {}", path, kFormat, kVersion));
+        Table t;
+        t.options.size = need("size").get<int>();
+        t.options.samples = need("samples").get<int>();
+        t.options.normPanels = need("norm_panels").get<int>();
+        t.options.alphaMin = need("alpha_min").get<double>();
+        t.options.thetaMax = need("theta_max").get<double>();
+        t.options.maxEval = need("max_eval").get<int>();
+        int n = t.options.size;
+        const auto& cells = need("cells");
+        if (n < 2 || n > 1024 || !cells.is_array() || cells.size() != static_cast<size_t>(n) * n)
+            throw InputError(fmt::format("{}: expected size in 2..1024 and size^2 cells, got size {} and {} cells",
+                                         path, n, cells.is_array() ? cells.size() : 0));
+        for (size_t k = 0; k < cells.size(); ++k) {
+            const auto& r = cells[k];
+            if (!r.is_array() || r.size() != 10)
+                throw InputError(fmt::format("{}: cell {}: expected 10 numbers", path, k));
+            Cell c;
+            double* f[10] = {&c.m00, &c.m02, &c.m20, &c.m22, &c.norm, &c.error, &c.l1, &c.m11, &c.m22p, &c.m13};
+            for (int q = 0; q < 10; ++q) {
+                *f[q] = r[q].get<double>();
+                if (!std::isfinite(*f[q])) throw InputError(fmt::format("{}: cell {}: non-finite value", path, k));
+            }
+            if (!(c.norm >= 0 && c.norm <= 1.0 + 1e-9))
+                throw InputError(fmt::format("{}: cell {}: norm {} outside [0, 1]", path, k, c.norm));
+            t.cells.push_back(c);
+        }
+        return t;
+    } catch (const nlohmann::json::exception& e) {
+        throw InputError(fmt::format("{}: malformed LTC table: {}", path, e.what()));
+    }
+}
+
+std::vector<float> packed(const Table& t)
+{
+    std::vector<float> v;
+    v.reserve(1 + 5 * t.cells.size());
+    v.push_back(static_cast<float>(t.options.size));
+    for (const Cell& c : t.cells)
+        for (double x : {c.m00, c.m02, c.m20, c.m22, c.norm}) v.push_back(static_cast<float>(x));
+    return v;
+}
+
+std::string dataDir()
+{
+    if (const char* env = std::getenv("LUMIBENCH_DATA_DIR"); env && *env) return env;
+#ifdef LB_SOURCE_DIR
+    return std::string(LB_SOURCE_DIR) + "/data";
+#else
+    return "data";
+#endif
+}
+
+std::string defaultTablePath()
+{
+    return dataDir() + "/ltc/ggx.json";
+}
+
+const Table& defaultTable()
+{
+    static std::once_flag once;
+    static Table t;
+    std::call_once(once, [] { t = read(defaultTablePath()); });
+    return t;
+}
+
+} // namespace lb::ltc

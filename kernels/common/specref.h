@@ -1,0 +1,204 @@
+/* specref.h -- the converged reference of the specular scene (DESIGN section
+ * 8): the area form
+ *   L_s(x, w_o) = (1/A) int_light I(d) f_r(w, w_o) max(0, n_x . w) / r^2 dA
+ *              = int_[0,1]^2 g(s, t) ds dt
+ * by globally adaptive cubature (the scheme of kernels/reference.cl: cells
+ * with a 4x4 Gauss-Legendre rule summed over their 4 children, error =
+ * |parent rule - children|, the worst cell split until the summed error is
+ * <= rel_tol |L_s|), with a first mesh that finds the peaks.
+ *
+ * The GGX lobe of alpha = 0.02 seen from 2 m covers ~5 cm of the light (a
+ * 1/20 of its side; at h = 0.1 a few mm): a first grid of cells whose nodes
+ * straddle it would measure no error there and never refine. The first mesh
+ * is therefore a quadtree refined towards two targets in (s, t), each down to
+ * its own width:
+ *   - the mirror point, where the reflected view ray w_r = 2 (n . w_o) n - w_o
+ *     meets the light's plane (clamped to the light), width alpha * tau (tau
+ *     the ray's length: the lobe's footprint);
+ *   - the receiver's foot point on the light's plane (clamped), width the
+ *     distance to the plane (the 1/r^2 peak of a near light).
+ * A cell is split while it is wider than a target's width and overlaps the
+ * target's square of that half-width; widths are floored at 2^-16 of the
+ * light. Then the global adaptive loop takes over.
+ * Compiles as OpenCL C and C++ (see vec.h); the host tests run it directly
+ * (tests/specular), the kernel kernels/specular_reference.cl per pixel. */
+
+/* Cells the store holds (private memory per call): first mesh <= 160,
+ * then 3 per split. */
+#define LB_SREF_CELLS 640
+#define LB_SREF_FIRST 160
+
+typedef struct {
+    real3 o, eu, ev, nx; /* light's corner (-u,-v) relative to x, edge vectors, receiver normal */
+    real3 t1, t2;        /* view frame (ggx.h lb_view_frame) */
+    real ox, oz;         /* w_o in the view frame: (ox, 0, oz) */
+    real alpha;
+    lb_light L;
+} lb_sref_ctx;
+
+/* g(s, t) = I(d) f_r(w, w_o) max(0, n_x . w) / r^2. */
+LB_FN real lb_sref_g(__global const float* lum, const lb_sref_ctx* c, real s, real t)
+{
+    real3 p = c->o + c->eu * s + c->ev * t;
+    real r2 = dot(p, p);
+    if (!(r2 > R(0)))
+        return R(0);
+    real r = sqrt(r2);
+    real3 w = p / r;
+    real cz = dot(c->nx, w);
+    if (!(cz > R(0)))
+        return R(0);
+    real f = lb_ggx_brdf(dot(w, c->t1), dot(w, c->t2), cz, c->ox, R(0), c->oz, c->alpha);
+    if (!(f > R(0)))
+        return R(0);
+    return lb_intensity_local(lum, lb_to_light_frame(c->L, -w)) * f * cz / r2;
+}
+
+/* 4-point Gauss-Legendre nodes and weights on [0, 1]. */
+LB_FN real lb_sref_glx(int i)
+{
+    return i == 0 ? R(0.0694318442029737124)
+                  : (i == 1 ? R(0.330009478207571868) : (i == 2 ? R(0.669990521792428132) : R(0.930568155797026288)));
+}
+LB_FN real lb_sref_glw(int i)
+{
+    return (i == 0 || i == 3) ? R(0.173927422568726929) : R(0.326072577431273071);
+}
+
+LB_FN real lb_sref_rule(__global const float* lum, const lb_sref_ctx* c, real s0, real t0, real h)
+{
+    real q = R(0);
+    for (int j = 0; j < 4; ++j) {
+        real row = R(0);
+        for (int i = 0; i < 4; ++i)
+            row += lb_sref_glw(i) * lb_sref_g(lum, c, s0 + h * lb_sref_glx(i), t0 + h * lb_sref_glx(j));
+        q += lb_sref_glw(j) * row;
+    }
+    return q * h * h;
+}
+
+LB_FN real lb_sref_refine(__global const float* lum, const lb_sref_ctx* c, real s0, real t0, real h, real* err)
+{
+    real q = lb_sref_rule(lum, c, s0, t0, h);
+    real hh = R(0.5) * h;
+    real v = lb_sref_rule(lum, c, s0, t0, hh) + lb_sref_rule(lum, c, s0 + hh, t0, hh) +
+             lb_sref_rule(lum, c, s0, t0 + hh, hh) + lb_sref_rule(lum, c, s0 + hh, t0 + hh, hh);
+    *err = fabs(v - q);
+    return v;
+}
+
+/* Does the cell [s0, s0+h] x [t0, t0+h] need a split for the target (ts, tt)
+ * of half-width d? */
+LB_FN int lb_sref_needs(real s0, real t0, real h, real ts, real tt, real d)
+{
+    return h > d && ts + d >= s0 && ts - d <= s0 + h && tt + d >= t0 && tt - d <= t0 + h;
+}
+
+/* The reference at the receiver point x (world), normal nx (unit), eye
+ * point eye, GGX alpha. *err: the summed error estimate; *splits: adaptive
+ * splits made (not counting the first mesh); *cells: cells at the end. */
+LB_FN real lb_specular_reference(__global const float* lum, lb_light L, real3 x, real3 nx, real3 eye, real alpha,
+                                 real rel_tol, int max_splits, real* err, int* splits, int* cells)
+{
+    lb_sref_ctx c;
+    c.L = L;
+    c.nx = nx;
+    c.o = L.c - L.u * (R(0.5) * L.w) - L.v * (R(0.5) * L.l) - x;
+    c.eu = L.u * L.w;
+    c.ev = L.v * L.l;
+    c.alpha = alpha;
+    real3 wo = normalize(eye - x);
+    lb_view_frame(nx, wo, &c.t1, &c.t2);
+    c.ox = dot(wo, c.t1);
+    c.oz = dot(wo, nx);
+    *err = R(0);
+    *splits = 0;
+    *cells = 0;
+    if (!(c.oz > R(0)))
+        return R(0);
+
+    /* targets: mirror point and foot point, in (s, t), with half-widths */
+    real size = fmax(L.w, L.l);
+    real floor_w = R(1) / R(65536);
+    real ts[2], tt[2], td[2];
+    int nt = 0;
+    real3 wr = nx * (R(2) * c.oz) - wo;
+    real dn = dot(L.n, wr);
+    real tau = dn != R(0) ? dot(L.n, L.c - x) / dn : R(-1);
+    if (tau > R(0)) {
+        real3 hit = x + wr * tau - (L.c - L.u * (R(0.5) * L.w) - L.v * (R(0.5) * L.l));
+        ts[nt] = clamp(dot(hit, L.u) / L.w, R(0), R(1));
+        tt[nt] = clamp(dot(hit, L.v) / L.l, R(0), R(1));
+        td[nt] = fmax(alpha * tau / size, floor_w);
+        ++nt;
+    }
+    {
+        real3 rel = -c.o;
+        ts[nt] = clamp(dot(rel, L.u) / L.w, R(0), R(1));
+        tt[nt] = clamp(dot(rel, L.v) / L.l, R(0), R(1));
+        td[nt] = fmax(fabs(dot(L.n, x - L.c)) / size, floor_w);
+        ++nt;
+    }
+
+    real cs[LB_SREF_CELLS], ct[LB_SREF_CELLS], ch[LB_SREF_CELLS], cv[LB_SREF_CELLS], ce[LB_SREF_CELLS];
+    int n = 1;
+    cs[0] = R(0);
+    ct[0] = R(0);
+    ch[0] = R(1);
+    /* first mesh: split every cell that needs it, breadth first */
+    for (int k = 0; k < n && n + 3 <= LB_SREF_FIRST;) {
+        int need = 0;
+        for (int q = 0; q < nt; ++q)
+            need = need || lb_sref_needs(cs[k], ct[k], ch[k], ts[q], tt[q], td[q]);
+        if (!need) {
+            ++k;
+            continue;
+        }
+        real hh = R(0.5) * ch[k];
+        real s0 = cs[k], t0 = ct[k];
+        for (int q4 = 0; q4 < 4; ++q4) {
+            int slot = q4 == 0 ? k : n++;
+            cs[slot] = s0 + ((q4 & 1) ? hh : R(0));
+            ct[slot] = t0 + ((q4 & 2) ? hh : R(0));
+            ch[slot] = hh;
+        }
+    }
+    real total = R(0), toterr = R(0);
+    for (int k = 0; k < n; ++k) {
+        cv[k] = lb_sref_refine(lum, &c, cs[k], ct[k], ch[k], &ce[k]);
+        total += cv[k];
+        toterr += ce[k];
+    }
+    int sp = 0;
+    while (toterr > rel_tol * fabs(total) && n + 3 <= LB_SREF_CELLS && sp < max_splits) {
+        int k = 0;
+        for (int i = 1; i < n; ++i)
+            if (ce[i] > ce[k])
+                k = i;
+        if (!(ce[k] > R(0)))
+            break;
+        real s0 = cs[k], t0 = ct[k], hh = R(0.5) * ch[k];
+        total -= cv[k];
+        toterr -= ce[k];
+        for (int q4 = 0; q4 < 4; ++q4) {
+            real s = s0 + ((q4 & 1) ? hh : R(0)), t = t0 + ((q4 & 2) ? hh : R(0));
+            real e;
+            real v = lb_sref_refine(lum, &c, s, t, hh, &e);
+            int slot = q4 == 0 ? k : n++;
+            cs[slot] = s; ct[slot] = t; ch[slot] = hh; cv[slot] = v; ce[slot] = e;
+            total += v;
+            toterr += e;
+        }
+        ++sp;
+    }
+    total = R(0);
+    toterr = R(0);
+    for (int i = 0; i < n; ++i) {
+        total += cv[i];
+        toterr += ce[i];
+    }
+    *err = toterr;
+    *splits = sp;
+    *cells = n;
+    return total;
+}
