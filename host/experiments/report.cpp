@@ -459,7 +459,13 @@ void writeReport(const std::string& dir, const std::string& plotNote)
     if (fs::is_directory(pd))
         for (const auto& e : fs::directory_iterator(pd))
             if (e.path().extension() == ".png") pngs.push_back(e.path().filename().string());
-    std::sort(pngs.begin(), pngs.end());
+    // NMSE first, then grad_nmse, FLIP and the image grids, each by name
+    auto rank = [](const std::string& f) {
+        return f.rfind("nmse_", 0) == 0 ? 0 : f.rfind("grad_nmse_", 0) == 0 ? 1 : f.rfind("flip_", 0) == 0 ? 2 : 3;
+    };
+    std::sort(pngs.begin(), pngs.end(), [&](const std::string& a, const std::string& b) {
+        return std::make_pair(rank(a), a) < std::make_pair(rank(b), b);
+    });
     std::string plotsMissing;
     if (!plotNote.empty()) plotsMissing = "Plots not made: " + plotNote + ".";
     else if (pngs.empty()) plotsMissing = "No plots in `plots/` (run `lumibench report DIR`).";
