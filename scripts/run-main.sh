@@ -5,7 +5,7 @@
 #
 #   bash scripts/run-main.sh           experiments/main.json: a subset of the
 #                                      published evaluation that answers in
-#                                      minutes (4 heights x 3 rotations, 32 x 32
+#                                      minutes (3 heights x 2 rotations, 32 x 32
 #                                      pixels, timed at 128 x 128)
 #   FULL=1 bash scripts/run-main.sh    experiments/paper.json: the whole
 #                                      published evaluation (6 heights x 5

@@ -49,9 +49,21 @@ std::string role(const results::Record& r)
 
 std::string sci(double v) { return std::isfinite(v) ? fmt::format("{:.3e}", v) : "n/a"; }
 
+// The scene kind and its values ("specular alpha=0.1 eye=[0,4,2]"), "" for
+// the diffuse scene, whose records carry none.
+std::string kindText(const results::Record& r)
+{
+    if (!r.sceneKeys.is_object() || r.sceneKeys.empty()) return "";
+    std::string t = str(r.sceneKeys, "scene_kind", "?");
+    for (auto it = r.sceneKeys.begin(); it != r.sceneKeys.end(); ++it)
+        if (it.key() != "scene_kind") t += " " + it.key() + "=" + it.value().dump();
+    return t;
+}
+
 std::string sceneKey(const results::Record& r)
 {
-    return fmt::format("{}|{}|{}|{}|{}|{}", r.luminaire, r.height, r.rotation, r.res, r.precision, r.device);
+    return fmt::format("{}|{}|{}|{}|{}|{}|{}", r.luminaire, r.height, r.rotation, r.res, r.precision, r.device,
+                       kindText(r));
 }
 
 // One table of the report, rendered as Markdown and as HTML from the same
@@ -332,16 +344,19 @@ void writeReport(const std::string& dir, const std::string& plotNote)
             std::vector<metrics::Metrics> parts;
             double nsum = 0;
         };
-        std::map<std::tuple<std::string, std::string, double>, std::map<std::string, Acc>> rows;
+        std::map<std::tuple<std::string, std::string, std::string, double>, std::map<std::string, Acc>> rows;
         size_t carried = 0;
+        bool kinds = false;  // records of a scene kind other than diffuse: a column for it
         for (const auto& r : doc.records) {
             if (role(r) == "mci_curve") continue;
-            auto& a = rows[{r.luminaire, r.precision, r.height}][label(r)];
+            kinds = kinds || !kindText(r).empty();
+            auto& a = rows[{r.luminaire, kindText(r), r.precision, r.height}][label(r)];
             a.parts.push_back(r.error);
             carried += std::isfinite(metrics::minimisable(r.error, key));
             if (r.n) a.nsum += double(*r.n);
         }
         Table t{heading, note, {"luminaire", "precision", "h"}, {}, ""};
+        if (kinds) t.head.insert(t.head.begin() + 1, "scene");
         if (carried == 0) {
             t.empty = fmt::format("No record carries {} (records of an older lumibench{}).", key,
                                   key == "flip" ? ", or flip-evaluator was not available: scripts/install-deps.sh" : "");
@@ -351,7 +366,8 @@ void writeReport(const std::string& dir, const std::string& plotNote)
         t.note += "MCI=M is Monte Carlo at the time of method M (its mean N over the rotations in brackets).";
         for (const auto& col : cols) t.head.push_back(col);
         for (const auto& [k, m] : rows) {
-            std::vector<Cell> row = {{std::get<0>(k)}, {std::get<1>(k)}, num(std::get<2>(k), fmt::format("{}", std::get<2>(k)))};
+            std::vector<Cell> row = {{std::get<0>(k)}, {std::get<2>(k)}, num(std::get<3>(k), fmt::format("{}", std::get<3>(k)))};
+            if (kinds) row.insert(row.begin() + 1, Cell{std::get<1>(k)});
             for (const auto& col : cols) {
                 auto it = m.find(col);
                 if (it == m.end()) {

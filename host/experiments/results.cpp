@@ -339,12 +339,23 @@ std::string toCsv(const Results& doc)
     std::vector<std::string> metricCols;
     const json metricKeys = metrics::Metrics{};
     for (auto it = metricKeys.begin(); it != metricKeys.end(); ++it) metricCols.push_back(it.key());
+    // Other keys: a single value, or a short list of numbers (the specular
+    // scene's eye) written as its JSON text; objects and longer lists stay out.
+    auto flat = [](const json& v) {
+        if (!v.is_structured()) return true;
+        if (!v.is_array() || v.size() > 4) return false;
+        for (const auto& x : v)
+            if (!x.is_number()) return false;
+        return true;
+    };
     std::set<std::string> params, extras;
     for (const auto& r : doc.records) {
         for (auto it = r.params.begin(); it != r.params.end(); ++it) params.insert(it.key());
-        for (auto it = r.extra.begin(); it != r.extra.end(); ++it)
-            if (!it.value().is_structured() && it.key() != "spec" && it.key() != "role" && it.key() != "scene")
-                extras.insert(it.key());
+        for (const json* o : {&r.extra, &r.sceneKeys})
+            if (o->is_object())
+                for (auto it = o->begin(); it != o->end(); ++it)
+                    if (flat(it.value()) && it.key() != "spec" && it.key() != "role" && it.key() != "scene")
+                        extras.insert(it.key());
     }
     std::vector<std::string> cols = head;
     cols.insert(cols.end(), metricCols.begin(), metricCols.end());
@@ -381,7 +392,7 @@ std::string toCsv(const Results& doc)
         for (const auto& p : params) f.push_back(r.params.contains(p) && !r.params[p].is_structured()
                                                      ? csvValue(r.params[p])
                                                      : (r.params.contains(p) ? csvField(r.params[p].dump()) : ""));
-        for (const auto& x : extras) f.push_back(csvValue(r.extra.value(x, json(nullptr))));
+        for (const auto& x : extras) f.push_back(csvValue(j.contains(x) && flat(j[x]) ? j[x] : json(nullptr)));
         for (size_t i = 0; i < f.size(); ++i) out += (i ? "," : "") + f[i];
         out += "\n";
     }

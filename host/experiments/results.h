@@ -134,7 +134,9 @@ Results mergeResults(const std::vector<std::string>& paths, MergeStats* stats = 
 //   param_<name> for every method parameter met in any record (empty where a
 //   record's method has no such parameter), then every other key a record
 //   carries whose value is a number, string, boolean or null (build_s,
-//   equal_time_ratio, ..., and keys of later versions), sorted by name.
+//   equal_time_ratio, the scene kind's scene_kind, alpha, albedo, ..., and
+//   keys of later versions), or a list of at most 4 numbers (eye, as JSON
+//   text), sorted by name.
 // Objects and arrays (params, inputs, stats, equal_time_candidates) are left
 // out, params flattened as above. README "Results as a table" documents them.
 std::string toCsv(const Results& doc);

@@ -96,6 +96,7 @@ TEST_F(Report, CsvHasOneFlatRowPerRecordAndLoadsWithPandas)
     doc.records = {rec("cubature", "method", 1.5, ref, a), rec("mc:n=4", "equal_time", 1.5, ref, ramp(8, 0.5))};
     doc.records[0].extra["stats"] = {{"form", "straight-line"}};  // objects stay out of the table
     doc.records[1].error.flip = NAN;                                // undefined: an empty field
+    doc.records[0].sceneKeys = {{"scene_kind", "specular"}, {"alpha", 0.25}, {"eye", {0, 4, 2}}};  // columns too
     const std::string csv = results::toCsv(doc);
     const std::string head = csv.substr(0, csv.find('\n'));
     EXPECT_EQ(head.rfind("method,spec,role,scene,luminaire,height,rotation,res,precision,device,driver,time_ms_median,"
@@ -104,10 +105,11 @@ TEST_F(Report, CsvHasOneFlatRowPerRecordAndLoadsWithPandas)
               0u)
         << head;
     for (const char* c : {",nmse,", ",flip,", ",grad_nmse,", ",equal_time_to,", ",n,", ",param_n,", ",param_pattern,",
-                          ",param_triangulation,", ",equal_time_ratio", ",equal_time_ok"})
+                          ",param_triangulation,", ",equal_time_ratio", ",equal_time_ok", ",scene_kind", ",alpha,", ",eye,"})
         EXPECT_NE(head.find(c), std::string::npos) << c << " in " << head;
     EXPECT_EQ(head.find("stats"), std::string::npos) << head;
     EXPECT_NE(csv.find("\"A, \"\"quoted\"\".ldt\""), std::string::npos) << csv;
+    EXPECT_NE(csv.find(",\"[0,4,2]\","), std::string::npos) << csv;  // a short list: its JSON text
     EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3);
 
     // written beside results.json by saveCsv; pandas (python3-pandas, scripts/install-deps.sh) reads it
@@ -133,6 +135,7 @@ assert df["param_triangulation"][0] == "fan"
 assert math.isnan(df["flip"][1])
 assert df["equal_time_to"][1] == "cubature" and df["n"][1] == 4
 assert df["equal_time_ok"][1] == True
+assert df["scene_kind"][0] == "specular" and df["alpha"][0] == 0.25 and df["eye"][0] == "[0,4,2]"
 print("pandas ok", df.shape)
 )PY";
     EXPECT_EQ(sh("/usr/bin/python3 " + (dir / "check.py").string() + " " + (dir / "results.csv").string()), 0);
