@@ -120,6 +120,13 @@ cl::Buffer LaunchContext::realBuffer(const std::vector<double>& v)
     return b;
 }
 
+cl::Kernel& LaunchContext::pass(const std::string& name)
+{
+    auto it = passKernels.find(name);
+    if (it == passKernels.end()) it = passKernels.emplace(name, rt.kernel(family.file, name, options)).first;
+    return it->second;
+}
+
 cl::Buffer LaunchContext::outputReals(size_t n)
 {
     cl::Buffer b(rt.context(), CL_MEM_READ_WRITE, std::max<size_t>(n, 1) * (dbl() ? sizeof(double) : sizeof(float)));

@@ -11,6 +11,21 @@
 // one line to builtinFamilies() in registry.cpp. render(), `run`, `tune`,
 // `stability` and `bench` all launch it through prepare() (methods/render.h),
 // so the new family is rendered, timed and benchmarked without more code.
+//
+// Multi-pass methods (the indirect scene's RSM, clustering and evaluation)
+// add, beside the one `render` kernel, Family::prePasses: a function that
+// enqueues the kernels to run before `render` on each launch of the image's
+// first rows -- any number, in order, each taken from the family's own
+// program by LaunchContext::pass(name) (same file, same options) -- and
+// returns their events with a stage name ("rsm", "cluster"). The method's
+// device time is the sum of those events and the render kernel's (profiling
+// events, Prepared::time), so render(), the runner, tune, stability and bench
+// time the whole method through the same Prepared path, and
+// Prepared::stageMs() gives the per-stage medians (bench's breakdown).
+// Stateful methods (acrsm keeps its clusters from frame to frame) count their
+// launches in LaunchContext::frame, which Prepared::reset() sets back to 0;
+// Family::settleFrames says how many launches of a static scene render()
+// makes from a reset before it reads the image.
 #pragma once
 
 #include "cl/runtime.h"
@@ -35,6 +50,12 @@ Precision parsePrecision(const std::string& s);  // "float" | "double", else Inp
 
 struct Family;
 
+// One pre-pass kernel's event and the stage it belongs to.
+struct StageEvent {
+    std::string stage;
+    cl::Event event;
+};
+
 // The arguments every family's kernel starts with: P, lum, out, row0.
 inline constexpr cl_uint kCommonArgs = 4;
 
@@ -52,6 +73,12 @@ struct LaunchContext {
     std::map<std::string, cl::Buffer> named;    // buffers setArgs hands to finish (e.g. "stats")
     nlohmann::json stats = nlohmann::json::object();  // named counters for the result file
     int lanes = 1;                              // pixels of a row per work-item (Family::lanes)
+    std::string options{};                      // the program's -D options
+    std::map<std::string, cl::Kernel> passKernels{};
+    int frame = 0;                              // launches since the last reset (stateful methods)
+    // A kernel of the family's program (Family::file built with `options`) by
+    // name, made once: the pre-passes' kernels.
+    cl::Kernel& pass(const std::string& name);
 
     bool dbl() const { return precision == Precision::Double; }
     int res() const { return scene.res; }
@@ -115,6 +142,12 @@ struct Family {
     // The -D names that mark a straight-line form of this family's kernel
     // (empty: the family has one form, e.g. mc). kernelForm() reads them.
     std::vector<std::string> straightDefines;
+    // Optional multi-pass methods (see the top of this file): the kernels run
+    // before `kernelName` on every launch of the image's first rows.
+    std::function<std::vector<StageEvent>(LaunchContext&)> prePasses;
+    // Optional, stateful methods: launches of a static scene from a reset
+    // before render() reads the image (the steady state of the method).
+    std::function<int(const MethodSpec&)> settleFrames;
     // Expensive (the reference): one untimed-warm-up-free run in bands of
     // bandRows rows with progress on stderr, cached on disk.
     bool expensive = false;

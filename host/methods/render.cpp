@@ -162,13 +162,17 @@ Prepared::Prepared(ocl::Runtime& rt, const photometry::Table& table, const Scene
                                  rt.kernel(fam_.file, fam_.kernelName, options_), {}, {}, {}, {}});
     ctx_->stats = nlohmann::json::object();  // {} above made it null
     ctx_->lanes = lanes;
+    ctx_->options = options_;
     buildSeconds_ = rt.buildSeconds() - b0;
 
     const size_t npx = static_cast<size_t>(scene_.res) * scene_.res;
     cl::Buffer P = ctx_->realBuffer(scene_.params());
+    P_ = P;
     auto lum = fam_.lumBuffer ? fam_.lumBuffer(spec_, table) : table.packed();
     cl::Buffer L(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, lum.size() * sizeof(float), lum.data());
     ctx_->buffers.push_back(L);
+    ctx_->named["P"] = P;  // for the pre-passes' kernels
+    ctx_->named["lum"] = L;
     out_ = ctx_->outputReals(npx);
     ctx_->kernel.setArg(0, P);
     ctx_->kernel.setArg(1, L);
@@ -185,6 +189,10 @@ void Prepared::statsSwitch(bool on)
 
 cl::Event Prepared::launch(int row0, int rows)
 {
+    if (fam_.prePasses && row0 == 0) {
+        auto ev = fam_.prePasses(*ctx_);
+        passEvents_.insert(passEvents_.end(), ev.begin(), ev.end());
+    }
     ctx_->kernel.setArg(3, cl_int(row0));
     const size_t cols = (scene_.res + ctx_->lanes - 1) / ctx_->lanes;
     return ctx_->rt.launch2D(ctx_->kernel, cols, rows, lx_, ly_);
@@ -193,7 +201,51 @@ cl::Event Prepared::launch(int row0, int rows)
 ocl::Timing Prepared::time(int reps)
 {
     statsSwitch(false);
-    return ctx_->rt.time([&] { return launch(0, scene_.res); }, std::max(1, reps), 1);
+    if (!fam_.prePasses) return ctx_->rt.time([&] { return launch(0, scene_.res); }, std::max(1, reps), 1);
+    // Multi-pass: every launch's time is its pre-passes' events plus the
+    // render kernel's; one warm-up as for the others.
+    launch(0, scene_.res).wait();
+    takePassMs();
+    std::vector<double> total;
+    std::map<std::string, std::vector<double>> stages;
+    for (int i = 0; i < std::max(1, reps); ++i) {
+        const double eval = ocl::Runtime::eventMs(launch(0, scene_.res));
+        std::map<std::string, double> per;
+        for (auto& s : passEvents_) per[s.stage] += ocl::Runtime::eventMs(s.event);
+        passEvents_.clear();
+        per["eval"] += eval;
+        double sum = 0;
+        for (auto& [name, ms] : per) {
+            stages[name].push_back(ms);
+            sum += ms;
+        }
+        total.push_back(sum);
+    }
+    stageMs_ = nlohmann::json::object();
+    for (auto& [name, v] : stages) stageMs_[name] = ocl::summarize(v).median_ms;
+    return ocl::summarize(total);
+}
+
+double Prepared::takePassMs()
+{
+    double ms = 0;
+    for (auto& s : passEvents_) ms += ocl::Runtime::eventMs(s.event);
+    passEvents_.clear();
+    return ms;
+}
+
+void Prepared::setScene(const Scene& scene)
+{
+    if (scene.res != scene_.res) throw Error("Prepared::setScene: the resolution must stay");
+    scene.validate();
+    scene_ = scene;
+    auto P = scene_.params();
+    if (ctx_->dbl()) {
+        ctx_->rt.queue().enqueueWriteBuffer(P_, CL_TRUE, 0, P.size() * sizeof(double), P.data());
+    } else {
+        std::vector<float> f(P.begin(), P.end());
+        ctx_->rt.queue().enqueueWriteBuffer(P_, CL_TRUE, 0, f.size() * sizeof(float), f.data());
+    }
 }
 
 void Prepared::collect()
@@ -233,6 +285,7 @@ RenderResult render(ocl::Runtime& rt, const photometry::Table& table, const Scen
     result.buildSeconds = prep.buildSeconds();
     const int res = scene.res;
     std::string timeDefines;  // the timed kernel's options where they differ from the image's
+    nlohmann::json stageMs;   // multi-pass methods: the timed launches' stages
     if (fam.expensive) {
         // One run (no warm-up: minutes at large sizes, and deterministic) in
         // bands of rows, progress between them; the time is the sum of the
@@ -241,7 +294,7 @@ RenderResult render(ocl::Runtime& rt, const photometry::Table& table, const Scen
         double total = 0;
         for (int r0 = 0; r0 < res; r0 += band) {
             int rows = std::min(band, res - r0);
-            total += ocl::Runtime::eventMs(prep.launch(r0, rows));
+            total += ocl::Runtime::eventMs(prep.launch(r0, rows)) + prep.takePassMs();
             if (opt.progress)
                 std::cerr << fmt::format("\r{}: {:3d}% ({:.1f} s)", spec.name, 100 * (r0 + rows) / res, total / 1e3)
                           << std::flush;
@@ -259,15 +312,26 @@ RenderResult render(ocl::Runtime& rt, const photometry::Table& table, const Scen
         result.timing = timed.time(opt.reps);
         result.timeRes = opt.timeRes;
         if (timed.options() != prep.options()) timeDefines = timed.options();
+        if (!timed.stageMs().empty()) stageMs = timed.stageMs();
         prep.launch(0, res).wait();
     } else {
         result.timing = prep.time(opt.reps);
         result.timeRes = res;
+        stageMs = prep.stageMs();
     }
+    if (fam.settleFrames) {
+        // a stateful method's image: its steady state on this static scene
+        prep.takePassMs();
+        prep.reset();
+        const int n = std::max(1, fam.settleFrames(spec));
+        for (int i = 0; i < n; ++i) prep.launch(0, res).wait();
+    }
+    prep.takePassMs();
     result.image = prep.image();
     prep.collect();
     result.extraImages = prep.extraImages();
     result.stats = prep.stats();
+    if (stageMs.is_object() && !stageMs.empty()) result.stats["stage_ms"] = stageMs;
     // which kernel variant ran (structural and scene defines): the records
     // say whether a straight-line form or the general kernel was timed
     result.stats["defines"] = prep.options();

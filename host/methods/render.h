@@ -42,6 +42,17 @@ public:
     void collect();
     Image image();  // the output buffer as it stands
 
+    // Multi-pass methods: the summed device time (ms) of the pre-passes of
+    // the last launch with any (0 when none ran since the last call), and the
+    // per-stage medians of the last time() ({"rsm": ms, ..., "eval": ms}).
+    double takePassMs();
+    nlohmann::json stageMs() const { return stageMs_; }
+    // Stateful methods: back to the first frame (LaunchContext::frame = 0).
+    void reset() { ctx_->frame = 0; }
+    // Animated sequences: the next frame's scene (same kind and resolution);
+    // the method's buffers and state stay.
+    void setScene(const Scene& scene);
+
     nlohmann::json stats() { return std::move(ctx_->stats); }
     std::map<std::string, Image> extraImages() { return std::move(ctx_->extraImages); }
 
@@ -53,7 +64,9 @@ private:
     std::string options_;
     double buildSeconds_ = 0;
     size_t lx_ = 8, ly_ = 8;
-    cl::Buffer out_;
+    cl::Buffer out_, P_;
+    std::vector<StageEvent> passEvents_;
+    nlohmann::json stageMs_ = nlohmann::json::object();
     std::unique_ptr<LaunchContext> ctx_;
 };
 
@@ -68,7 +81,7 @@ struct RenderOptions {
 struct RenderResult {
     Image image;                               // E in lux, row 0 at the top
     std::map<std::string, Image> extraImages;  // reference: "err", the per-pixel error estimate
-    ocl::Timing timing;                        // device time of the kernel (profiling events)
+    ocl::Timing timing;                        // device time of the kernel(s) (profiling events)
     int timeRes = 0;                           // the pixels per side the timing was taken at
     double buildSeconds = 0;                   // program build, excluded from timing
     long nonfinite = 0;                        // pixels that are NaN or infinite
