@@ -15,6 +15,7 @@ void registerStructured(Registry& r);
 void registerMc(Registry& r);
 void registerCubature(Registry& r);
 void registerVoronoi(Registry& r);
+void registerIndirect(Registry& r);
 
 namespace {
 Registry builtinFamilies()
@@ -26,6 +27,7 @@ Registry builtinFamilies()
     registerMc(r);
     registerCubature(r);
     registerVoronoi(r);
+    registerIndirect(r);  // reference (indirect), vpl, kmeans, acrsm (and mc: VPLs)
     return r;
 }
 } // namespace

@@ -1,0 +1,545 @@
+// The indirect scene (DESIGN section 9): the converged reference
+// (kernels/indirect_reference.cl) and the RSM methods vpl, kmeans and acrsm
+// (kernels/indirect.cl), all multi-pass families (Family::prePasses).
+#include "methods/registry.h"
+
+#include "math/indirect_math.h"
+#include "util/error.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace lb::methods {
+
+namespace {
+
+constexpr int kTex = 8;    // reals per texel / centre / light (kernels/indirect.cl)
+constexpr int kPart = 16;  // reals per cluster partial sum
+
+// ---- reference ----
+
+// The E_dir node grid of common/indirect.h for cells of about `cell` metres.
+struct NodeGrid {
+    std::vector<cl_int> grid;   // (gs, gt, first node) per surface
+    std::vector<cl_int> cells;  // first cell per surface, then the count
+    int nodes = 0;
+};
+
+NodeGrid nodeGrid(double cell)
+{
+    NodeGrid g;
+    int node = 0, c = 0;
+    for (int k = 0; k < LB_ROOM_NSURF; ++k) {
+        glm::dvec3 o, a, b, n;
+        f64::lb_room_surface(k, &o, &a, &b, &n);
+        int gs = std::max(1, static_cast<int>(std::ceil(glm::length(a) / cell - 1e-9)));
+        int gt = std::max(1, static_cast<int>(std::ceil(glm::length(b) / cell - 1e-9)));
+        g.grid.insert(g.grid.end(), {gs, gt, node});
+        g.cells.push_back(c);
+        node += 16 * gs * gt;
+        c += gs * gt;
+    }
+    g.cells.push_back(c);
+    g.nodes = node;
+    return g;
+}
+
+cl::Buffer intBuffer(LaunchContext& c, const std::vector<cl_int>& v)
+{
+    cl::Buffer b(c.rt.context(), CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, std::max<size_t>(v.size(), 1) * sizeof(cl_int),
+                 const_cast<cl_int*>(v.data()));
+    c.buffers.push_back(b);
+    return b;
+}
+
+void registerIndirectReference(Registry& r)
+{
+    Family f;
+    f.name = "reference";
+    f.scenes = {SceneKind::Indirect};
+    f.summary = "converged one-bounce indirect light: E_dir on walls and ceiling by the adaptive area cubature, the "
+                "bounce by adaptive cubature over the five surfaces, with an error estimate";
+    f.file = "indirect_reference.cl";
+    f.params = {
+        Param::real("tol", 1e-4, 1e-8, 1e-1, Scale::Log, "target relative error of the bounce per pixel", false),
+        Param::integer("max_splits", 128, 0, 160, Scale::Linear, "bounce cell splits per pixel at most"),
+        Param::real("dir_tol", 1e-5, 1e-9, 1e-1, Scale::Log, "target relative error of E_dir per wall node", false),
+        Param::integer("dir_splits", 128, 0, 128, Scale::Linear, "E_dir cell splits per wall node at most"),
+        Param::real("dir_cell", 0.125, 0.01, 1.0, Scale::Log,
+                    "side (m) of the cells of the E_dir node grid (4 x 4 Gauss nodes each)", false),
+    };
+    f.defines = [](const MethodSpec&) { return std::string(); };
+    f.expensive = true;
+    f.bandRows = 16;
+    f.args = {"edir", "grid", "delta", "errout", "splits_out", "rel_tol", "max_splits"};
+    f.setArgs = [](LaunchContext& c) {
+        size_t n = static_cast<size_t>(c.res()) * c.res();
+        NodeGrid g = nodeGrid(c.spec.num("dir_cell"));
+        c.stats["edir_nodes"] = g.nodes;
+        c.named["grid"] = intBuffer(c, g.grid);
+        c.named["cells"] = intBuffer(c, g.cells);
+        c.named["edir"] = c.outputReals(g.nodes);
+        c.named["centre"] = c.outputReals(g.cells.back());
+        c.named["edir_err"] = c.outputReals(g.nodes);
+        c.named["delta"] = c.outputReals(LB_ROOM_NSURF);
+        c.named["err"] = c.outputReals(n);
+        c.named["splits"] = c.outputInts(n);
+        c.arg("edir", c.named["edir"]);
+        c.arg("grid", c.named["grid"]);
+        c.arg("delta", c.named["delta"]);
+        c.arg("errout", c.named["err"]);
+        c.arg("splits_out", c.named["splits"]);
+        c.realArg("rel_tol", c.spec.num("tol"));
+        c.arg("max_splits", static_cast<cl_int>(c.spec.integer("max_splits")));
+        cl::Kernel& nodes = c.pass("edir_nodes");
+        nodes.setArg(0, c.named["P"]);
+        nodes.setArg(1, c.named["lum"]);
+        nodes.setArg(2, c.named["grid"]);
+        nodes.setArg(3, c.named["cells"]);
+        nodes.setArg(4, cl_int(g.nodes));
+        nodes.setArg(5, c.named["edir"]);
+        nodes.setArg(6, c.named["centre"]);
+        nodes.setArg(7, c.named["edir_err"]);
+        ocl::setReal(nodes, 8, c.spec.num("dir_tol"), c.dbl());
+        nodes.setArg(9, static_cast<cl_int>(c.spec.integer("dir_splits")));
+        cl::Kernel& delta = c.pass("edir_delta");
+        delta.setArg(0, c.named["grid"]);
+        delta.setArg(1, c.named["cells"]);
+        delta.setArg(2, c.named["edir"]);
+        delta.setArg(3, c.named["centre"]);
+        delta.setArg(4, c.named["edir_err"]);
+        delta.setArg(5, c.named["delta"]);
+        c.stats["edir_points"] = g.nodes + g.cells.back();
+    };
+    f.prePasses = [](LaunchContext& c) {
+        std::vector<StageEvent> ev;
+        const size_t n = c.stats["edir_points"].get<size_t>();
+        ev.push_back({"edir", c.rt.launch1D(c.pass("edir_nodes"), n, 64)});
+        ev.push_back({"edir", c.rt.launch1D(c.pass("edir_delta"), LB_ROOM_NSURF, 1)});
+        return ev;
+    };
+    f.finish = [](LaunchContext& c) {
+        size_t n = static_cast<size_t>(c.res()) * c.res();
+        Image err(c.res(), c.res());
+        err.px = c.readReals(c.named.at("err"), n);
+        std::vector<cl_int> splits(n);
+        c.rt.queue().enqueueReadBuffer(c.named.at("splits"), CL_TRUE, 0, n * sizeof(cl_int), splits.data());
+        c.stats["splits_total"] = std::accumulate(splits.begin(), splits.end(), 0L);
+        c.stats["splits_max"] = *std::max_element(splits.begin(), splits.end());
+        c.stats["max_err_est"] = *std::max_element(err.px.begin(), err.px.end());
+        c.extraImages["err"] = std::move(err);
+        // The reflected flux rho int E_dir dA over walls and ceiling by the
+        // nodes' Gauss rule.
+        NodeGrid g = nodeGrid(c.spec.num("dir_cell"));
+        auto e = c.readReals(c.named.at("edir"), g.nodes);
+        auto delta = c.readReals(c.named.at("delta"), LB_ROOM_NSURF);
+        double flux = 0;
+        for (int k = 0; k < LB_ROOM_NSURF; ++k) {
+            glm::dvec3 o, a, b, nn;
+            f64::lb_room_surface(k, &o, &a, &b, &nn);
+            int gs = g.grid[3 * k], gt = g.grid[3 * k + 1], base = g.grid[3 * k + 2];
+            double cellArea = glm::length(a) / gs * glm::length(b) / gt;
+            for (int it = 0; it < 4 * gt; ++it)
+                for (int is = 0; is < 4 * gs; ++is)
+                    flux += cellArea * f64::lb_gl4_w(it % 4) * f64::lb_gl4_w(is % 4) * e[base + it * 4 * gs + is];
+        }
+        c.stats["reflected_flux_lm"] = c.scene.albedo * flux;
+        c.stats["edir_interp_delta"] = delta;
+    };
+    r.add(f);
+}
+
+// ---- the RSM methods ----
+
+bool powerOfTwo(long n) { return n > 0 && (n & (n - 1)) == 0; }
+
+std::vector<Param> rsmParams()
+{
+    return {
+        Param::integer("rsm", 256, 16, 2048, Scale::Log,
+                       "RSM texels per side over the room's unfolded net (a power of two)"),
+        Param::choice("direct", "cubature", {"point", "cubature", "reference"},
+                      "direct light of each RSM texel: point light at the centroid, the cubature (fan around CP), "
+                      "or the adaptive reference"),
+        Param::real("dir_tol", 1e-3, 1e-7, 1e-1, Scale::Log, "direct=reference: its target relative error", false),
+    };
+}
+
+void checkRsm(const MethodSpec& s)
+{
+    if (!powerOfTwo(s.integer("rsm")))
+        throw InputError(fmt::format("method {}: rsm={} is not a power of two (the pyramid and the net need one)",
+                                     s.name, s.integer("rsm")));
+}
+
+std::string rsmDefines(const MethodSpec& s)
+{
+    const std::string& d = s.str("direct");
+    return fmt::format("-DLB_RSM_DIRECT={}", d == "point" ? 0 : (d == "cubature" ? 1 : 2));
+}
+
+// The RSM buffer and its pass kernel, bound.
+void setupRsm(LaunchContext& c)
+{
+    const int T = static_cast<int>(c.spec.integer("rsm"));
+    c.named["tex"] = c.outputReals(static_cast<size_t>(kTex) * T * T);
+    cl::Kernel& k = c.pass("rsm");
+    k.setArg(0, c.named["P"]);
+    k.setArg(1, c.named["lum"]);
+    k.setArg(2, c.named["tex"]);
+    k.setArg(3, cl_int(T));
+    ocl::setReal(k, 4, c.spec.num("dir_tol"), c.dbl());
+    k.setArg(5, cl_int(128));
+    ocl::setReal(k, 6, 1e-3, c.dbl());  // the cubature's default plane shift
+}
+
+cl::Event launchRsm(LaunchContext& c)
+{
+    const int T = static_cast<int>(c.spec.integer("rsm"));
+    return c.rt.launch2D(c.pass("rsm"), T, T, 8, 8);
+}
+
+// Stats every RSM method reports: the RSM's reflected flux and, for the
+// clusterings, the flux of lit texels no cluster took.
+void finishRsm(LaunchContext& c)
+{
+    const int T = static_cast<int>(c.spec.integer("rsm"));
+    auto tex = c.readReals(c.named.at("tex"), static_cast<size_t>(kTex) * T * T);
+    double flux = 0;
+    for (int i = 0; i < T * T; ++i) flux += tex[kTex * i + 6];
+    c.stats["rsm_flux_lm"] = flux;
+    if (c.named.count("label")) {
+        std::vector<cl_int> label(static_cast<size_t>(T) * T);
+        c.rt.queue().enqueueReadBuffer(c.named.at("label"), CL_TRUE, 0, label.size() * sizeof(cl_int), label.data());
+        double lost = 0;
+        for (int i = 0; i < T * T; ++i)
+            if (label[i] < 0) lost += tex[kTex * i + 6];
+        c.stats["unmapped_flux_fraction"] = flux > 0 ? lost / flux : 0.0;
+    }
+    if (c.named.count("lights")) {
+        const int n = c.stats.value("lights", 0);
+        auto l = c.readReals(c.named.at("lights"), static_cast<size_t>(kTex) * n);
+        double lf = 0;
+        int active = 0;
+        for (int i = 0; i < n; ++i) {
+            lf += l[kTex * i + 6];
+            if (l[kTex * i + 6] > 0) ++active;
+        }
+        c.stats["lights_flux_lm"] = lf;
+        c.stats["lights_active"] = active;
+    }
+}
+
+void bindRender(LaunchContext& c, int nlights, double clamp)
+{
+    c.stats["lights"] = nlights;
+    c.named["lights"] = c.outputReals(static_cast<size_t>(kTex) * nlights);
+    c.arg("lights", c.named["lights"]);
+    c.arg("nlights", cl_int(nlights));
+    c.realArg("clamp2", clamp * clamp);
+}
+
+// vpl, and the same family as the indirect scene's "mc": the equal-time
+// partner the runner fits (VPL count N at the time of a method).
+void registerVpl(Registry& r, const std::string& name)
+{
+    Family f;
+    f.name = name;
+    f.scenes = {SceneKind::Indirect};
+    f.summary = name == "vpl" ? "N virtual point lights importance-sampled from the RSM by flux (Dachsbacher and "
+                                "Stamminger 2005)"
+                              : "indirect scene: the equal-time partner, N VPLs from the RSM (as vpl)";
+    f.file = "indirect.cl";
+    f.params = rsmParams();
+    f.params.push_back(Param::integer("n", 256, 1, 1 << 16, Scale::Log, "number of VPLs", true));
+    f.params.push_back(Param::real("clamp", 0.1, 0.0, 1.0, Scale::Linear,
+                                   "distance (m) below which 1/r^2 is clamped (0: none)"));
+    f.validate = checkRsm;
+    f.defines = rsmDefines;
+    f.args = {"lights", "nlights", "clamp2"};
+    f.setArgs = [](LaunchContext& c) {
+        const int T = static_cast<int>(c.spec.integer("rsm")), n = static_cast<int>(c.spec.integer("n"));
+        setupRsm(c);
+        bindRender(c, n, c.spec.num("clamp"));
+        c.named["rowsum"] = c.outputReals(T);
+        c.named["pick"] = c.outputInts(n);
+        cl::Kernel& rs = c.pass("row_sums");
+        rs.setArg(0, c.named["tex"]);
+        rs.setArg(1, cl_int(T));
+        rs.setArg(2, c.named["rowsum"]);
+        cl::Kernel& sm = c.pass("sample");
+        sm.setArg(0, c.named["tex"]);
+        sm.setArg(1, cl_int(T));
+        sm.setArg(2, c.named["rowsum"]);
+        sm.setArg(3, cl_int(n));
+        sm.setArg(4, c.named["lights"]);
+        sm.setArg(5, c.named["pick"]);
+    };
+    f.prePasses = [](LaunchContext& c) {
+        const int T = static_cast<int>(c.spec.integer("rsm")), n = static_cast<int>(c.spec.integer("n"));
+        std::vector<StageEvent> ev;
+        ev.push_back({"rsm", launchRsm(c)});
+        ev.push_back({"cluster", c.rt.launch1D(c.pass("row_sums"), T, 64)});
+        ev.push_back({"cluster", c.rt.launch1D(c.pass("sample"), n, 64)});
+        return ev;
+    };
+    f.finish = finishRsm;
+    if (name == "vpl") f.benchSpecs = {"vpl:n=64", "vpl:n=1024", "vpl:direct=point"};
+    r.add(f);
+}
+
+// kmeans and acrsm share the Lloyd sums and the VAL evaluation.
+std::vector<Param> clusterParams(long k, long iters)
+{
+    auto p = rsmParams();
+    p.push_back(Param::integer("k", k, 1, 1024, Scale::Log, "number of clusters (virtual area lights)", true));
+    p.push_back(Param::integer("iters", iters, 1, 64, Scale::Linear, "Lloyd iterations (mapping + averaging) per frame"));
+    p.push_back(Param::real("wx", 1.0, 0.0, 10.0, Scale::Linear, "weight of the normalized distance (seed Eq. 4.4)"));
+    p.push_back(Param::real("wn", 1.0, 0.0, 10.0, Scale::Linear, "weight of the normal difference 1 - |n_c . n|"));
+    p.push_back(Param::real("wb", 0.2, 0.0, 10.0, Scale::Linear,
+                            "weight of the radiosity difference |B_c - B| / (B_c + B) (the seed's importance)"));
+    p.push_back(Param::choice("area", "sum", {"sum", "radius"},
+                              "VAL area: the members' area, or pi r^2 of the farthest member (the seed's 4.7)"));
+    return p;
+}
+
+void setupClusters(LaunchContext& c)
+{
+    const int T = static_cast<int>(c.spec.integer("rsm")), K = static_cast<int>(c.spec.integer("k"));
+    setupRsm(c);
+    bindRender(c, K, 0.0);
+    c.named["centres"] = c.outputReals(static_cast<size_t>(kTex) * K);
+    c.named["label"] = c.outputInts(static_cast<size_t>(T) * T);
+    c.named["partial"] = c.outputReals(static_cast<size_t>(kPart) * K * T);
+    // acrsm's state, zero (frame 0 seeds every cluster; kmeans never writes it)
+    c.named["state"] = c.outputReals(static_cast<size_t>(kTex) * K);
+    std::vector<double> zero(static_cast<size_t>(kTex) * K, 0.0);
+    std::vector<float> zf(zero.size(), 0.0f);
+    c.rt.queue().enqueueWriteBuffer(c.named["state"], CL_TRUE, 0,
+                                    c.dbl() ? zero.size() * sizeof(double) : zf.size() * sizeof(float),
+                                    c.dbl() ? static_cast<const void*>(zero.data()) : static_cast<const void*>(zf.data()));
+    cl::Kernel& p = c.pass("km_partial");
+    p.setArg(0, c.named["tex"]);
+    p.setArg(1, cl_int(T));
+    p.setArg(2, c.named["label"]);
+    p.setArg(3, cl_int(K));
+    p.setArg(4, c.named["centres"]);
+    p.setArg(5, c.named["partial"]);
+    cl::Kernel& rd = c.pass("km_reduce");
+    rd.setArg(0, c.named["partial"]);
+    rd.setArg(1, cl_int(T));
+    rd.setArg(2, cl_int(K));
+    rd.setArg(3, c.named["centres"]);
+    rd.setArg(4, c.named["lights"]);
+    rd.setArg(5, c.named["state"]);
+    rd.setArg(6, cl_int(c.spec.name == "acrsm" ? 1 : 0));
+    rd.setArg(7, cl_int(c.spec.str("area") == "sum" ? 0 : 1));
+}
+
+void lloydSums(LaunchContext& c, std::vector<StageEvent>& ev)
+{
+    const int T = static_cast<int>(c.spec.integer("rsm")), K = static_cast<int>(c.spec.integer("k"));
+    ev.push_back({"cluster", c.rt.launch2D(c.pass("km_partial"), K, T, 8, 8)});
+    ev.push_back({"cluster", c.rt.launch1D(c.pass("km_reduce"), K, 64)});
+}
+
+void registerKmeans(Registry& r)
+{
+    Family f;
+    f.name = "kmeans";
+    f.scenes = {SceneKind::Indirect};
+    f.summary = "K k-means clusters of RSM texels (position, normal, radiosity), restarted every frame from K texels "
+                "sampled by flux, Lloyd iterations on the device; each a disk VAL (point-to-disk form factor)";
+    f.file = "indirect.cl";
+    f.params = clusterParams(64, 4);
+    f.validate = checkRsm;
+    f.defines = rsmDefines;
+    f.args = {"lights", "nlights", "clamp2"};
+    f.setArgs = [](LaunchContext& c) {
+        const int T = static_cast<int>(c.spec.integer("rsm")), K = static_cast<int>(c.spec.integer("k"));
+        setupClusters(c);
+        c.named["rowsum"] = c.outputReals(T);
+        c.named["pick"] = c.outputInts(K);
+        c.named["seedlights"] = c.outputReals(static_cast<size_t>(kTex) * K);
+        cl::Kernel& rs = c.pass("row_sums");
+        rs.setArg(0, c.named["tex"]);
+        rs.setArg(1, cl_int(T));
+        rs.setArg(2, c.named["rowsum"]);
+        cl::Kernel& sm = c.pass("sample");
+        sm.setArg(0, c.named["tex"]);
+        sm.setArg(1, cl_int(T));
+        sm.setArg(2, c.named["rowsum"]);
+        sm.setArg(3, cl_int(K));
+        sm.setArg(4, c.named["seedlights"]);
+        sm.setArg(5, c.named["pick"]);
+        cl::Kernel& cf = c.pass("centres_from");
+        cf.setArg(0, c.named["tex"]);
+        cf.setArg(1, c.named["pick"]);
+        cf.setArg(2, cl_int(K));
+        cf.setArg(3, c.named["centres"]);
+        cl::Kernel& as = c.pass("km_assign");
+        as.setArg(0, c.named["tex"]);
+        as.setArg(1, cl_int(T));
+        as.setArg(2, c.named["centres"]);
+        as.setArg(3, cl_int(K));
+        ocl::setReal(as, 4, c.spec.num("wx"), c.dbl());
+        ocl::setReal(as, 5, c.spec.num("wn"), c.dbl());
+        ocl::setReal(as, 6, c.spec.num("wb"), c.dbl());
+        as.setArg(7, c.named["label"]);
+    };
+    f.prePasses = [](LaunchContext& c) {
+        const int T = static_cast<int>(c.spec.integer("rsm")), K = static_cast<int>(c.spec.integer("k"));
+        std::vector<StageEvent> ev;
+        ev.push_back({"rsm", launchRsm(c)});
+        ev.push_back({"cluster", c.rt.launch1D(c.pass("row_sums"), T, 64)});
+        ev.push_back({"cluster", c.rt.launch1D(c.pass("sample"), K, 64)});
+        ev.push_back({"cluster", c.rt.launch1D(c.pass("centres_from"), K, 64)});
+        for (long i = 0; i < c.spec.integer("iters"); ++i) {
+            ev.push_back({"cluster", c.rt.launch2D(c.pass("km_assign"), T, T, 8, 8)});
+            lloydSums(c, ev);
+        }
+        return ev;
+    };
+    f.finish = finishRsm;
+    f.benchSpecs = {"kmeans:k=16", "kmeans:k=256"};
+    r.add(f);
+}
+
+void registerAcrsm(Registry& r)
+{
+    Family f;
+    f.name = "acrsm";
+    f.scenes = {SceneKind::Indirect};
+    f.summary = "adaptively clustered RSM (the ACRSM seed): clusters kept from frame to frame, Halton seeds warped by "
+                "the importance pyramid, windowed mapping, averaging, merge and split; disk VALs";
+    f.file = "indirect.cl";
+    f.params = clusterParams(64, 1);
+    f.params.push_back(Param::real("window", 0.25, 0.01, 1.0, Scale::Linear,
+                                   "side of a cluster's mapping window, as a fraction of the RSM's side (seed 5.2: "
+                                   "64-256 texels at 512)"));
+    f.params.push_back(Param::integer("warp_stop", 0, 0, 11, Scale::Linear,
+                                      "finest pyramid level the warping descends to (0: the texels)"));
+    f.params.push_back(Param::real("eps_m", 0.4, 0.0, 1.0, Scale::Linear, "merge threshold (seed Eq. 4.8: 0.35-0.5)"));
+    f.params.push_back(Param::real("eps_s", 0.15, 0.0, 1.0, Scale::Linear, "split threshold (seed Eq. 4.8: 0.1-0.2)"));
+    f.params.push_back(Param::integer("settle", 8, 1, 1000, Scale::Linear,
+                                      "frames of a static scene before render() reads the image (its steady state)"));
+    f.validate = [](const MethodSpec& s) {
+        checkRsm(s);
+        long levels = 0;
+        while ((1L << levels) < s.integer("rsm")) ++levels;
+        if (s.integer("warp_stop") >= levels)
+            throw InputError(fmt::format("method acrsm: warp_stop={} must be below log2(rsm) = {}",
+                                         s.integer("warp_stop"), levels));
+        if (s.integer("k") > 1024) throw InputError("method acrsm: k at most 1024");
+    };
+    f.defines = rsmDefines;
+    f.args = {"lights", "nlights", "clamp2"};
+    f.settleFrames = [](const MethodSpec& s) { return static_cast<int>(s.integer("settle")); };
+    f.setArgs = [](LaunchContext& c) {
+        const int T = static_cast<int>(c.spec.integer("rsm")), K = static_cast<int>(c.spec.integer("k"));
+        setupClusters(c);
+        int levels = 0;
+        while ((1 << levels) < T) ++levels;
+        std::vector<cl_int> off(levels + 1);
+        int at = 0;
+        for (int m = 0; m <= levels; ++m) {
+            off[m] = at;
+            at += (T >> m) * (T >> m);
+        }
+        c.named["pyr"] = c.outputReals(at);
+        c.named["off"] = intBuffer(c, off);
+        c.stats["levels"] = levels;
+        cl::Kernel& pb = c.pass("pyr_base");
+        pb.setArg(0, c.named["tex"]);
+        pb.setArg(1, cl_int(T));
+        pb.setArg(2, c.named["pyr"]);
+        for (int m = 0; m < levels; ++m) {
+            // one kernel object per level: the arguments differ
+            cl::Kernel& pd = c.passKernels.emplace(fmt::format("pyr_down{}", m),
+                                                   c.rt.kernel(c.family.file, "pyr_down", c.options))
+                                 .first->second;
+            pd.setArg(0, c.named["pyr"]);
+            pd.setArg(1, cl_int(off[m]));
+            pd.setArg(2, cl_int(T >> m));
+            pd.setArg(3, cl_int(off[m + 1]));
+        }
+        const double window = c.spec.num("window") * T;
+        cl::Kernel& ev = c.pass("ac_evaluate");
+        ev.setArg(0, cl_int(K));
+        ev.setArg(1, cl_int(T));
+        ev.setArg(2, c.named["state"]);
+        ev.setArg(3, c.named["centres"]);
+        ev.setArg(4, c.named["lights"]);
+        ev.setArg(5, cl_int(0));
+        ocl::setReal(ev, 6, window, c.dbl());
+        ocl::setReal(ev, 7, c.spec.num("eps_m"), c.dbl());
+        ocl::setReal(ev, 8, c.spec.num("eps_s"), c.dbl());
+        cl::Kernel& sd = c.pass("ac_seed");
+        sd.setArg(0, c.named["tex"]);
+        sd.setArg(1, cl_int(T));
+        sd.setArg(2, c.named["pyr"]);
+        sd.setArg(3, c.named["off"]);
+        sd.setArg(4, cl_int(levels));
+        sd.setArg(5, static_cast<cl_int>(c.spec.integer("warp_stop")));
+        sd.setArg(6, cl_int(K));
+        sd.setArg(7, c.named["state"]);
+        sd.setArg(8, c.named["centres"]);
+        sd.setArg(9, cl_int(0));
+        cl::Kernel& mp = c.pass("ac_map");
+        mp.setArg(0, c.named["tex"]);
+        mp.setArg(1, cl_int(T));
+        mp.setArg(2, c.named["centres"]);
+        mp.setArg(3, c.named["state"]);
+        mp.setArg(4, cl_int(K));
+        ocl::setReal(mp, 5, window, c.dbl());
+        ocl::setReal(mp, 6, c.spec.num("wx"), c.dbl());
+        ocl::setReal(mp, 7, c.spec.num("wn"), c.dbl());
+        ocl::setReal(mp, 8, c.spec.num("wb"), c.dbl());
+        mp.setArg(9, c.named["label"]);
+    };
+    f.prePasses = [](LaunchContext& c) {
+        const int T = static_cast<int>(c.spec.integer("rsm")), K = static_cast<int>(c.spec.integer("k"));
+        const int levels = c.stats["levels"].get<int>();
+        std::vector<StageEvent> ev;
+        ev.push_back({"rsm", launchRsm(c)});
+        ev.push_back({"cluster", c.rt.launch2D(c.pass("pyr_base"), T, T, 8, 8)});
+        for (int m = 0; m < levels; ++m) {
+            const int n = std::max(1, (T >> m) / 2);
+            ev.push_back({"cluster", c.rt.launch2D(c.passKernels.at(fmt::format("pyr_down{}", m)), n, n,
+                                                   std::min(8, n), std::min(8, n))});
+        }
+        if (c.frame > 0) {
+            cl::Kernel& e = c.pass("ac_evaluate");
+            e.setArg(5, cl_int(c.frame));
+            ev.push_back({"cluster", c.rt.launch1D(e, 1, 1)});
+        }
+        cl::Kernel& sd = c.pass("ac_seed");
+        sd.setArg(9, cl_int(c.frame));
+        ev.push_back({"cluster", c.rt.launch1D(sd, K, 64)});
+        for (long i = 0; i < c.spec.integer("iters"); ++i) {
+            ev.push_back({"cluster", c.rt.launch2D(c.pass("ac_map"), T, T, 8, 8)});
+            lloydSums(c, ev);
+        }
+        ++c.frame;
+        return ev;
+    };
+    f.finish = finishRsm;
+    f.benchSpecs = {"acrsm:k=16", "acrsm:k=256"};
+    r.add(f);
+}
+
+} // namespace
+
+void registerIndirect(Registry& r)
+{
+    registerIndirectReference(r);
+    registerVpl(r, "vpl");
+    registerVpl(r, "mc");
+    registerKmeans(r);
+    registerAcrsm(r);
+}
+
+} // namespace lb::methods

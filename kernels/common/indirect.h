@@ -1,0 +1,324 @@
+/* indirect.h -- the room of the indirect scene (DESIGN section 9) and the
+ * math of one-bounce indirect light: its five reflecting surfaces, their
+ * unfolded net (the RSM's texture space), the virtual point / area light
+ * estimators of the ACRSM seed and the converged bounce integral.
+ * Compiles as OpenCL C and C++ (see vec.h); the host includes it through
+ * host/math/indirect_math.h. Include after common/lbmath.h.
+ *
+ * The room is the closed box [-h, h] x [-h, h] x [0, H] (h = LB_ROOM_HALF,
+ * H = LB_ROOM_HEIGHT, kernels/common/scene.h), convex and empty: every
+ * surface point sees every other, so no visibility term is computed anywhere
+ * here. A scene with occluders would need it in three places, each marked
+ * "visibility:" below: the direct light of a wall point (shadow of the light),
+ * the bounce integral (wall point to floor point) and the virtual lights'
+ * contributions (the seed's ISMs / soft shadows). */
+
+/* Surfaces: 0 the ceiling z = H, 1 the wall x = -h, 2 x = +h, 3 y = -h,
+ * 4 y = +h. Each is o + s a + t b, (s, t) in [0, 1]^2, with inward normal n. */
+#define LB_ROOM_NSURF 5
+
+LB_FN void lb_room_surface(int k, real3* o, real3* a, real3* b, real3* n)
+{
+    real h = R(LB_ROOM_HALF), H = R(LB_ROOM_HEIGHT);
+    if (k == 0) {
+        *o = R3(-h, -h, H); *a = R3(R(2) * h, 0, 0); *b = R3(0, R(2) * h, 0); *n = R3(0, 0, -1);
+    } else if (k == 1 || k == 2) {
+        real x = k == 1 ? -h : h;
+        *o = R3(x, -h, 0); *a = R3(0, R(2) * h, 0); *b = R3(0, 0, H); *n = R3(k == 1 ? R(1) : R(-1), 0, 0);
+    } else {
+        real y = k == 3 ? -h : h;
+        *o = R3(-h, y, 0); *a = R3(R(2) * h, 0, 0); *b = R3(0, 0, H); *n = R3(0, k == 3 ? R(1) : R(-1), 0);
+    }
+}
+
+/* ---- The net: the ceiling in the middle of a square of side D = 2H + 2h,
+ * each wall folded out along its ceiling edge (the box unfolded onto the
+ * ceiling's plane, seen from below). Net point (X, Y) in [0, D]^2; the four
+ * H x H corner squares belong to no surface. Along the ceiling's edges the
+ * net is continuous (neighbouring texels are neighbours in the room), so the
+ * seed's image-space clustering (windows, warping) works on it as on an RSM. */
+LB_FN real lb_net_side(void)
+{
+    return R(2) * R(LB_ROOM_HEIGHT) + R(2) * R(LB_ROOM_HALF);
+}
+
+/* Surface of the net point (X, Y) (-1: none) and the room point p, normal n. */
+LB_FN int lb_net_point(real X, real Y, real3* p, real3* n)
+{
+    real h = R(LB_ROOM_HALF), H = R(LB_ROOM_HEIGHT), D = lb_net_side();
+    int inx = X >= H && X <= H + R(2) * h, iny = Y >= H && Y <= H + R(2) * h;
+    real x = X - H - h, y = Y - H - h;
+    if (inx && iny) {
+        *p = R3(x, y, H); *n = R3(0, 0, -1);
+        return 0;
+    }
+    if (iny && X < H) {
+        *p = R3(-h, y, X); *n = R3(1, 0, 0);
+        return 1;
+    }
+    if (iny && X > H + R(2) * h) {
+        *p = R3(h, y, D - X); *n = R3(-1, 0, 0);
+        return 2;
+    }
+    if (inx && Y < H) {
+        *p = R3(x, -h, Y); *n = R3(0, 1, 0);
+        return 3;
+    }
+    if (inx && Y > H + R(2) * h) {
+        *p = R3(x, h, D - Y); *n = R3(0, -1, 0);
+        return 4;
+    }
+    *p = R3(0, 0, 0); *n = R3(0, 0, 0);
+    return -1;
+}
+
+LB_FN real lb_overlap(real a0, real a1, real b0, real b1)
+{
+    return fmax(R(0), fmin(a1, b1) - fmax(a0, b0));
+}
+
+/* Area (m^2) of the net square [X0, X1] x [Y0, Y1] that lies on the room's
+ * surfaces: the cross of the two bands minus their common ceiling square. Summed
+ * over a texel grid it is the room's reflecting area 4h^2 + 8hH exactly, so a
+ * texel's flux (its E times this area) conserves the reflected flux also where
+ * a texel straddles the net's border. */
+LB_FN real lb_net_area(real X0, real X1, real Y0, real Y1)
+{
+    real h = R(LB_ROOM_HALF), H = R(LB_ROOM_HEIGHT), D = lb_net_side();
+    real lo = H, hi = H + R(2) * h;
+    real band_y = lb_overlap(X0, X1, R(0), D) * lb_overlap(Y0, Y1, lo, hi);
+    real band_x = lb_overlap(X0, X1, lo, hi) * lb_overlap(Y0, Y1, R(0), D);
+    real ceil = lb_overlap(X0, X1, lo, hi) * lb_overlap(Y0, Y1, lo, hi);
+    return band_y + band_x - ceil;
+}
+
+/* ---- Virtual lights. Irradiance at x (normal nx) from a virtual area light
+ * (VAL) of reflected flux phi, centre c, normal nc and area a: the seed's
+ * point-to-disk form factor (Eq. 3.9 / 5.5, its Fig. 3.11),
+ *   E = phi cos_x cos_c / (pi r^2 + a),
+ * exact on the axis of a parallel Lambertian disk of area a and exitance
+ * phi / a (E = (phi / a) sin^2 of the disk's half-angle). a = 0 is a virtual
+ * point light (VPL, Dachsbacher and Stamminger 2005), E = phi cos_x cos_c /
+ * (pi r^2), with r^2 clamped to at least clamp2 (the usual 1/r^2 clamp
+ * against "light sparks"; 0: no clamp). visibility: the room is convex and
+ * empty; with occluders this is where the seed's ISM lookup would multiply. */
+LB_FN real lb_val_irradiance(real3 x, real3 nx, real3 c, real3 nc, real phi, real a, real clamp2)
+{
+    real3 w = c - x;
+    real r2 = dot(w, w);
+    real cx = dot(nx, w), cc = -dot(nc, w);
+    if (!(cx > R(0)) || !(cc > R(0)) || !(r2 > R(0)))
+        return R(0);
+    real ri2 = R(1) / r2; /* cos_x cos_c = cx cc / r^2 */
+    return phi * cx * cc * ri2 / (LB_PI * fmax(r2, clamp2) + a);
+}
+
+/* ---- E_dir on the surfaces for the converged bounce: each surface k is cut
+ * into gs x gt cells (grid[3k], grid[3k+1]), each with the 4 x 4
+ * Gauss-Legendre nodes of area_ref.h; E_dir at node (is, it) of surface k is
+ * edir[grid[3k+2] + it * 4 gs + is] (is, it the node's column and row over
+ * the whole surface). Between the nodes E_dir is the cell's bicubic Lagrange
+ * interpolant through its 16 nodes (exact for constants; for the smooth parts
+ * of E_dir of order h^4). */
+#define LB_BOUNCE_GRID 15 /* ints in grid[]: (gs, gt, first node) per surface */
+
+/* 4-point Gauss-Legendre nodes and weights on [0, 1] (the same as area_ref.h's
+ * lb_gl_x/w, here as functions: no __constant arrays on the host). */
+LB_FN real lb_gl4_x(int i)
+{
+    return i == 0 ? R(0.0694318442029737124)
+                  : (i == 1 ? R(0.330009478207571868) : (i == 2 ? R(0.669990521792428132) : R(0.930568155797026288)));
+}
+
+LB_FN real lb_gl4_w(int i)
+{
+    return (i == 0 || i == 3) ? R(0.173927422568726929) : R(0.326072577431273071);
+}
+
+/* Lagrange basis polynomial i through the 4 Gauss nodes, at u in [0, 1]. */
+LB_FN real lb_gl4_lagrange(int i, real u)
+{
+    real l = R(1);
+    for (int j = 0; j < 4; ++j)
+        if (j != i)
+            l *= (u - lb_gl4_x(j)) / (lb_gl4_x(i) - lb_gl4_x(j));
+    return l;
+}
+
+/* E_dir at (s, t) in [0, 1]^2 of surface k by the cell's bicubic interpolant. */
+LB_FN real lb_edir_interp(__global const real* edir, __global const int* grid, int k, real s, real t)
+{
+    int gs = grid[3 * k], gt = grid[3 * k + 1], base = grid[3 * k + 2];
+    real fs = s * (real)gs, ft = t * (real)gt;
+    int cs = LB_IMIN(LB_IMAX((int)floor(fs), 0), gs - 1), ct = LB_IMIN(LB_IMAX((int)floor(ft), 0), gt - 1);
+    real us = fs - (real)cs, ut = ft - (real)ct;
+    real ls[4], lt[4];
+    for (int i = 0; i < 4; ++i) {
+        ls[i] = lb_gl4_lagrange(i, us);
+        lt[i] = lb_gl4_lagrange(i, ut);
+    }
+    real e = R(0);
+    for (int j = 0; j < 4; ++j) {
+        __global const real* row = edir + base + (4 * ct + j) * 4 * gs + 4 * cs;
+        real r = R(0);
+        for (int i = 0; i < 4; ++i)
+            r += ls[i] * row[i];
+        e += lt[j] * r;
+    }
+    return e;
+}
+
+/* The bounce's integrand at (s, t) of surface k: E_dir(y) cos_x cos_y / r^2
+ * for the receiver x with normal nx (the factor rho / pi comes last).
+ * visibility: none in the convex empty room. */
+LB_FN real lb_bounce_f(__global const real* edir, __global const int* grid, int k, real3 o, real3 a, real3 b,
+                       real3 n, real3 x, real3 nx, real s, real t)
+{
+    real3 w = o + a * s + b * t - x;
+    real r2 = dot(w, w);
+    real cx = dot(nx, w), cy = -dot(n, w);
+    if (!(cx > R(0)) || !(cy > R(0)) || !(r2 > R(0)))
+        return R(0);
+    return lb_edir_interp(edir, grid, k, s, t) * cx * cy / (r2 * r2);
+}
+
+/* Tensor 4 x 4 Gauss-Legendre rule of the integrand over the (s, t) cell
+ * [s0, s0 + hs] x [t0, t0 + ht] of surface k, in m^2 (area = |a| |b| hs ht). */
+LB_FN real lb_bounce_rule(__global const real* edir, __global const int* grid, int k, real3 x, real3 nx, real s0,
+                          real t0, real hs, real ht)
+{
+    real3 o, a, b, n;
+    lb_room_surface(k, &o, &a, &b, &n);
+    real q = R(0);
+    for (int j = 0; j < 4; ++j) {
+        real row = R(0);
+        for (int i = 0; i < 4; ++i)
+            row += lb_gl4_w(i) * lb_bounce_f(edir, grid, k, o, a, b, n, x, nx, s0 + hs * lb_gl4_x(i),
+                                             t0 + ht * lb_gl4_x(j));
+        q += lb_gl4_w(j) * row;
+    }
+    return q * hs * ht * length(a) * length(b);
+}
+
+/* Value (sum over the 4 children) and error estimate of a cell whose own rule is q. */
+LB_FN real lb_bounce_refine(__global const real* edir, __global const int* grid, int k, real3 x, real3 nx, real s0,
+                            real t0, real hs, real ht, real q, real* err)
+{
+    real a = R(0.5) * hs, b = R(0.5) * ht;
+    real v = lb_bounce_rule(edir, grid, k, x, nx, s0, t0, a, b) + lb_bounce_rule(edir, grid, k, x, nx, s0 + a, t0, a, b) +
+             lb_bounce_rule(edir, grid, k, x, nx, s0, t0 + b, a, b) +
+             lb_bounce_rule(edir, grid, k, x, nx, s0 + a, t0 + b, a, b);
+    *err = fabs(v - q);
+    return v;
+}
+
+/* First cells: about 1 m squares (ceiling 5 x 5, walls 5 x 3 in the
+ * normalized room: 85 cells). */
+LB_FN int lb_bounce_init_cells(int k, int* ns, int* nt)
+{
+    real h = R(LB_ROOM_HALF), H = R(LB_ROOM_HEIGHT);
+    *ns = LB_IMAX((int)ceil(R(2) * h - R(1e-3)), 1);
+    *nt = LB_IMAX((int)ceil((k == 0 ? R(2) * h : H) - R(1e-3)), 1);
+    return *ns * *nt;
+}
+#define LB_BOUNCE_MAXINIT 85
+/* Cells the store holds: the first cells plus 3 per split (LB_BOUNCE_MAXSPLITS at most). */
+#define LB_BOUNCE_MAXSPLITS 160
+#define LB_BOUNCE_CELLS (LB_BOUNCE_MAXINIT + 3 * LB_BOUNCE_MAXSPLITS)
+
+/* One-bounce indirect irradiance at x (normal nx) of the room whose surfaces
+ * have albedo rho and direct irradiance edir (the node grid above):
+ *   E_ind(x) = (rho / pi) sum_k int_k E_dir(y) cos_x cos_y / r^2 dA(y),
+ * by globally adaptive cubature over the five surfaces together (the cell of
+ * the largest error estimate is split, as in area_ref.h), until the summed
+ * estimate is <= rel_tol E_ind or max_splits splits are spent. *err gets the
+ * quadrature's error estimate (lux), *splits the splits made. The error of
+ * E_dir's interpolation is the caller's (lb_bounce_interp_err). */
+LB_FN real lb_bounce_irradiance(__global const real* edir, __global const int* grid, real3 x, real3 nx, real rho,
+                                real rel_tol, int max_splits, real* err, int* splits_made)
+{
+    int ck[LB_BOUNCE_CELLS];
+    real cs[LB_BOUNCE_CELLS], ct[LB_BOUNCE_CELLS], chs[LB_BOUNCE_CELLS], cht[LB_BOUNCE_CELLS], cv[LB_BOUNCE_CELLS],
+        ce[LB_BOUNCE_CELLS];
+    int n = 0;
+    real total = R(0), toterr = R(0);
+    for (int k = 0; k < LB_ROOM_NSURF; ++k) {
+        int ns, nt;
+        lb_bounce_init_cells(k, &ns, &nt);
+        for (int j = 0; j < nt; ++j)
+            for (int i = 0; i < ns; ++i) {
+                if (n >= LB_BOUNCE_MAXINIT)
+                    break;
+                real hs = R(1) / (real)ns, ht = R(1) / (real)nt;
+                real s0 = hs * (real)i, t0 = ht * (real)j;
+                real q = lb_bounce_rule(edir, grid, k, x, nx, s0, t0, hs, ht);
+                real e;
+                real v = lb_bounce_refine(edir, grid, k, x, nx, s0, t0, hs, ht, q, &e);
+                ck[n] = k; cs[n] = s0; ct[n] = t0; chs[n] = hs; cht[n] = ht; cv[n] = v; ce[n] = e;
+                ++n;
+                total += v;
+                toterr += e;
+            }
+    }
+    int splits = 0;
+    int budget = LB_IMIN(max_splits, LB_BOUNCE_MAXSPLITS);
+    while (toterr > rel_tol * fabs(total) && n + 3 <= LB_BOUNCE_CELLS && splits < budget) {
+        int m = 0;
+        for (int i = 1; i < n; ++i)
+            if (ce[i] > ce[m])
+                m = i;
+        if (!(ce[m] > R(0)))
+            break;
+        int k = ck[m];
+        real s0 = cs[m], t0 = ct[m], hs = R(0.5) * chs[m], ht = R(0.5) * cht[m];
+        total -= cv[m];
+        toterr -= ce[m];
+        for (int q4 = 0; q4 < 4; ++q4) {
+            real s = s0 + ((q4 & 1) ? hs : R(0)), t = t0 + ((q4 & 2) ? ht : R(0));
+            real q = lb_bounce_rule(edir, grid, k, x, nx, s, t, hs, ht);
+            real e;
+            real v = lb_bounce_refine(edir, grid, k, x, nx, s, t, hs, ht, q, &e);
+            int slot = q4 == 0 ? m : n++;
+            ck[slot] = k; cs[slot] = s; ct[slot] = t; chs[slot] = hs; cht[slot] = ht; cv[slot] = v; ce[slot] = e;
+            total += v;
+            toterr += e;
+        }
+        ++splits;
+    }
+    total = R(0);
+    toterr = R(0);
+    for (int i = 0; i < n; ++i) {
+        total += cv[i];
+        toterr += ce[i];
+    }
+    *err = rho / LB_PI * toterr;
+    *splits_made = splits;
+    return rho / LB_PI * total;
+}
+
+/* int_k cos_x cos_y / r^2 dA over surface k seen from x (normal nx): the
+ * Lambert polygon irradiance at unit radiance (spherical.h). The walls touch
+ * the floor's plane, none reaches below it: no clipping. */
+LB_FN real lb_surface_lambert(int k, real3 x, real3 nx)
+{
+    real3 o, a, b, n;
+    lb_room_surface(k, &o, &a, &b, &n);
+    real3 p[4];
+    p[0] = o - x;
+    p[1] = o + a - x;
+    p[2] = o + a + b - x;
+    p[3] = o + b - x;
+    return lb_polygon_irradiance_lambert(p, 4, nx);
+}
+
+/* Error of the bounce from E_dir's interpolation: delta[k] bounds
+ * |E_dir - interpolant| on surface k (the largest deviation found at the
+ * cells' centres), so the bounce errs by at most
+ * (rho / pi) sum_k delta[k] int_k cos_x cos_y / r^2 dA. */
+LB_FN real lb_bounce_interp_err(__global const real* delta, real3 x, real3 nx, real rho)
+{
+    real e = R(0);
+    for (int k = 0; k < LB_ROOM_NSURF; ++k)
+        e += delta[k] * lb_surface_lambert(k, x, nx);
+    return rho / LB_PI * e;
+}

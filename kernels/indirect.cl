@@ -1,0 +1,522 @@
+/* indirect.cl -- one-bounce indirect light from a reflective shadow map
+ * (RSM) of the room's walls and ceiling (DESIGN section 9, the ACRSM seed):
+ * the passes of the methods vpl, kmeans and acrsm
+ * (host/methods/family_indirect.cpp runs them, in this order):
+ *   rsm            texels over the room's unfolded net (common/indirect.h):
+ *                  position, normal, reflected flux rho E_dir area, area; E_dir
+ *                  by the direct method chosen by LB_RSM_DIRECT (0 point light
+ *                  at the centroid, 1 cubature (common/cubature.h, fan around
+ *                  CP), 2 the adaptive reference (common/area_ref.h));
+ *   row_sums       flux per texel row (the sampling's first level);
+ *   sample         vpl: N texels by flux, stratified (u_k = (k + 1/2) / N),
+ *                  each a VPL of flux Phi / N; kmeans: the K first centres;
+ *   centres_from   centre attributes (position, normal, radiosity) of texels;
+ *   km_assign      Lloyd: each lit texel to its nearest centre by the seed's
+ *                  metric (Eq. 4.4 with radiosity for importance);
+ *   km_partial,    Lloyd: the clusters' sums per texel row, then per cluster:
+ *   km_reduce      new centres and the virtual area lights (VALs);
+ *   pyr_base,      acrsm: the importance (flux) pyramid;
+ *   pyr_down
+ *   ac_evaluate    acrsm: merge and split (seed 4.8, Eq. 4.6-4.8), one work-item;
+ *   ac_seed        acrsm: Halton seeds warped through the pyramid (seed 4.4,
+ *                  4.5, Alg. 5.3) for the clusters that need one;
+ *   ac_map         acrsm: each lit texel to the nearest centre whose window
+ *                  holds it (seed 4.6, Eq. 4.5);
+ *   render         E_ind at each floor pixel from the virtual lights
+ *                  (lb_val_irradiance: VPLs with the 1/r^2 clamp, VALs with
+ *                  the point-to-disk form factor).
+ * Texel layout (8 reals): position (3), normal (3), flux (lm), area (m^2).
+ * Centre layout (8): position (3), normal (3), radiosity B = flux / area, 0.
+ * Light layout (8): position (3), normal (3), flux, area (0: a VPL).
+ * acrsm state (8 per cluster): u, v (texel coordinates), flag (0 active,
+ * 1 to reseed, 2 seeded by a split, 3 merged), Halton generation, 4 unused.
+ * The room is convex and empty: no visibility anywhere (common/indirect.h).
+ * @variants: "-DLB_RSM_DIRECT=0" | "-DLB_RSM_DIRECT=1" | "-DLB_RSM_DIRECT=2"
+ */
+#include "common/lbmath.h"
+#include "common/area_ref.h"
+#include "common/indirect.h"
+
+#ifndef LB_RSM_DIRECT
+#define LB_RSM_DIRECT 1
+#endif
+
+#define IND_TEX 8
+#define IND_PART 16
+/* b_max of the seed's Eq. 4.4: the room's diagonal. */
+#define IND_BMAX sqrt(R(4) * R(LB_ROOM_HALF) * R(LB_ROOM_HALF) * R(2) + R(LB_ROOM_HEIGHT) * R(LB_ROOM_HEIGHT))
+
+/* Direct irradiance at the wall point p with normal n. visibility: none (the
+ * light is inside the convex room). */
+LB_FN real ind_direct(__global const float* lum, lb_light L, real3 p, real3 n, real rel_tol, int max_splits,
+                      real plane_eps)
+{
+#if LB_RSM_DIRECT == 0
+    real3 w = L.c - p;
+    real r2 = dot(w, w);
+    real cw = dot(n, w);
+    if (!(cw > R(0)) || !(r2 > R(0)))
+        return R(0);
+    return lb_intensity_local(lum, lb_to_light_frame(L, -w)) * cw / (r2 * sqrt(r2));
+#elif LB_RSM_DIRECT == 1
+    int nt, nf;
+    return lb_cubature_irradiance(lum, L, p, n, LB_CUB_FAN, LB_CUB_AVERAGE, 0, LB_CUB_CP, plane_eps, R(0), &nt, &nf);
+#else
+    real err;
+    int splits;
+    return lb_ref_irradiance(lum, L, p, n, rel_tol, max_splits, &err, &splits);
+#endif
+}
+
+__kernel void rsm(__global const real* P, __global const float* lum, __global real* tex, int T, real rel_tol,
+                  int max_splits, real plane_eps)
+{
+    int i = get_global_id(0), j = get_global_id(1);
+    if (i >= T || j >= T)
+        return;
+    real cs = lb_net_side() / (real)T;
+    real X = ((real)i + R(0.5)) * cs, Y = ((real)j + R(0.5)) * cs;
+    real area = lb_net_area((real)i * cs, (real)(i + 1) * cs, (real)j * cs, (real)(j + 1) * cs);
+    real3 p, n;
+    int k = lb_net_point(X, Y, &p, &n);
+    if (k < 0 && area > R(0)) {
+        /* centre in a corner square, the texel partly on a band: the nearest
+         * band point (the texel's area still counts) */
+        real H = R(LB_ROOM_HEIGHT), hi = H + R(2) * R(LB_ROOM_HALF);
+        real cx = clamp(X, H, hi), cy = clamp(Y, H, hi);
+        if (fabs(cx - X) <= fabs(cy - Y))
+            k = lb_net_point(cx, Y, &p, &n);
+        else
+            k = lb_net_point(X, cy, &p, &n);
+    }
+    __global real* t = tex + IND_TEX * (j * T + i);
+    real flux = R(0);
+    if (k >= 0 && area > R(0))
+        flux = P[LB_P_ALBEDO] * area * ind_direct(lum, lb_scene_light(P), p, n, rel_tol, max_splits, plane_eps);
+    t[0] = p.x; t[1] = p.y; t[2] = p.z;
+    t[3] = n.x; t[4] = n.y; t[5] = n.z;
+    t[6] = flux;
+    t[7] = k >= 0 ? area : R(0);
+}
+
+__kernel void row_sums(__global const real* tex, int T, __global real* rowsum)
+{
+    int j = get_global_id(0);
+    if (j >= T)
+        return;
+    real s = R(0);
+    for (int i = 0; i < T; ++i)
+        s += tex[IND_TEX * (j * T + i) + 6];
+    rowsum[j] = s;
+}
+
+/* N texels by flux: u_k = (k + 1/2) / N of the total, found by the row sums,
+ * then along the row. lights[k]: the texel as a VPL of flux total / N;
+ * pick[k]: its index. */
+__kernel void sample(__global const real* tex, int T, __global const real* rowsum, int N, __global real* lights,
+                     __global int* pick)
+{
+    int k = get_global_id(0);
+    if (k >= N)
+        return;
+    real total = R(0);
+    for (int j = 0; j < T; ++j)
+        total += rowsum[j];
+    real target = ((real)k + R(0.5)) / (real)N * total;
+    int j = 0;
+    real acc = R(0);
+    while (j < T - 1 && acc + rowsum[j] <= target) {
+        acc += rowsum[j];
+        ++j;
+    }
+    int i = 0, last = -1;
+    for (; i < T; ++i) {
+        real f = tex[IND_TEX * (j * T + i) + 6];
+        if (f > R(0))
+            last = i;
+        if (f > R(0) && acc + f > target)
+            break;
+        acc += f;
+    }
+    if (i >= T)
+        i = last >= 0 ? last : 0; /* rounding at the row's end: its last lit texel */
+    int idx = j * T + i;
+    __global const real* t = tex + IND_TEX * idx;
+    __global real* l = lights + IND_TEX * k;
+    for (int f = 0; f < 6; ++f)
+        l[f] = t[f];
+    l[6] = total / (real)N;
+    l[7] = R(0);
+    pick[k] = idx;
+}
+
+/* Centre k from texel pick[k] (kmeans' restart). */
+__kernel void centres_from(__global const real* tex, __global const int* pick, int K, __global real* centres)
+{
+    int k = get_global_id(0);
+    if (k >= K)
+        return;
+    __global const real* t = tex + IND_TEX * pick[k];
+    __global real* c = centres + IND_TEX * k;
+    for (int f = 0; f < 6; ++f)
+        c[f] = t[f];
+    c[6] = t[7] > R(0) ? t[6] / t[7] : R(0);
+    c[7] = R(0);
+}
+
+/* The seed's distance (Eq. 4.4): normalized Euclidean distance, 1 - |n_c . n|
+ * and, for its importance, the relative difference of radiosity. */
+LB_FN real ind_metric(__global const real* c, __global const real* t, real wx, real wn, real wb)
+{
+    real dx = c[0] - t[0], dy = c[1] - t[1], dz = c[2] - t[2];
+    real b = t[7] > R(0) ? t[6] / t[7] : R(0);
+    real bs = c[6] + b;
+    return wx * sqrt(dx * dx + dy * dy + dz * dz) / IND_BMAX +
+           wn * (R(1) - fabs(c[3] * t[3] + c[4] * t[4] + c[5] * t[5])) + wb * (bs > R(0) ? fabs(c[6] - b) / bs : R(0));
+}
+
+__kernel void km_assign(__global const real* tex, int T, __global const real* centres, int K, real wx, real wn,
+                        real wb, __global int* label)
+{
+    int i = get_global_id(0), j = get_global_id(1);
+    if (i >= T || j >= T)
+        return;
+    int idx = j * T + i;
+    __global const real* t = tex + IND_TEX * idx;
+    int best = -1;
+    if (t[6] > R(0)) {
+        real bm = R(0);
+        for (int k = 0; k < K; ++k) {
+            real m = ind_metric(centres + IND_TEX * k, t, wx, wn, wb);
+            if (best < 0 || m < bm) {
+                bm = m;
+                best = k;
+            }
+        }
+    }
+    label[idx] = best;
+}
+
+/* Sums of cluster k over texel row j (K x T work-items). */
+__kernel void km_partial(__global const real* tex, int T, __global const int* label, int K,
+                         __global const real* centres, __global real* partial)
+{
+    int k = get_global_id(0), j = get_global_id(1);
+    if (k >= K || j >= T)
+        return;
+    real s[IND_PART];
+    for (int f = 0; f < IND_PART; ++f)
+        s[f] = R(0);
+    __global const real* c = centres + IND_TEX * k;
+    for (int i = 0; i < T; ++i) {
+        int idx = j * T + i;
+        if (label[idx] != k)
+            continue;
+        __global const real* t = tex + IND_TEX * idx;
+        real a = t[7], phi = t[6];
+        for (int f = 0; f < 3; ++f) {
+            s[f] += a * t[f];
+            s[3 + f] += phi * t[f];
+            s[6 + f] += a * t[3 + f];
+        }
+        s[9] += phi;
+        s[10] += a;
+        s[11] += a * ((real)i + R(0.5));
+        s[12] += a * ((real)j + R(0.5));
+        real dx = t[0] - c[0], dy = t[1] - c[1], dz = t[2] - c[2];
+        s[13] = fmax(s[13], dx * dx + dy * dy + dz * dz);
+    }
+    __global real* p = partial + IND_PART * (k * T + j);
+    for (int f = 0; f < IND_PART; ++f)
+        p[f] = s[f];
+}
+
+/* Cluster k's new centre (area-weighted mean position, mean normal,
+ * radiosity) and its VAL: the flux-weighted mean position, the summed flux
+ * (energy-conserving), area = the members' area (area_mode 0) or pi r_c^2 with
+ * r_c the farthest member from the old centre (area_mode 1, the seed's 4.7).
+ * stateful (acrsm): also the mean texel coordinates, and an empty cluster is
+ * marked for reseeding. */
+__kernel void km_reduce(__global const real* partial, int T, int K, __global real* centres, __global real* lights,
+                        __global real* state, int stateful, int area_mode)
+{
+    int k = get_global_id(0);
+    if (k >= K)
+        return;
+    real s[IND_PART];
+    for (int f = 0; f < IND_PART; ++f)
+        s[f] = R(0);
+    for (int j = 0; j < T; ++j) {
+        __global const real* p = partial + IND_PART * (k * T + j);
+        for (int f = 0; f < 13; ++f)
+            s[f] += p[f];
+        s[13] = fmax(s[13], p[13]);
+    }
+    __global real* c = centres + IND_TEX * k;
+    __global real* l = lights + IND_TEX * k;
+    if (!(s[10] > R(0))) {
+        for (int f = 0; f < IND_TEX; ++f)
+            l[f] = R(0);
+        l[5] = R(-1); /* a valid normal for a light of no flux */
+        if (stateful)
+            state[IND_TEX * k + 2] = R(1);
+        return;
+    }
+    real a = s[10], phi = s[9];
+    real nl = sqrt(s[6] * s[6] + s[7] * s[7] + s[8] * s[8]);
+    for (int f = 0; f < 3; ++f) {
+        c[f] = s[f] / a;
+        c[3 + f] = nl > R(0) ? s[6 + f] / nl : R(0);
+        l[f] = phi > R(0) ? s[3 + f] / phi : c[f];
+        l[3 + f] = c[3 + f];
+    }
+    c[6] = phi / a;
+    l[6] = phi;
+    l[7] = area_mode == 0 ? a : LB_PI * s[13];
+    if (stateful) {
+        state[IND_TEX * k + 0] = s[11] / a;
+        state[IND_TEX * k + 1] = s[12] / a;
+    }
+}
+
+/* ---- acrsm ---- */
+
+/* Importance pyramid: level 0 (T x T) is the texels' flux; level m is
+ * (T >> m)^2 at offset off (the host's offsets). */
+__kernel void pyr_base(__global const real* tex, int T, __global real* pyr)
+{
+    int i = get_global_id(0), j = get_global_id(1);
+    if (i >= T || j >= T)
+        return;
+    pyr[j * T + i] = tex[IND_TEX * (j * T + i) + 6];
+}
+
+__kernel void pyr_down(__global real* pyr, int src_off, int src_n, int dst_off)
+{
+    int i = get_global_id(0), j = get_global_id(1);
+    int n = src_n / 2;
+    if (i >= n || j >= n)
+        return;
+    __global const real* s = pyr + src_off;
+    pyr[dst_off + j * n + i] =
+        s[(2 * j) * src_n + 2 * i] + s[(2 * j) * src_n + 2 * i + 1] + s[(2 * j + 1) * src_n + 2 * i] +
+        s[(2 * j + 1) * src_n + 2 * i + 1];
+}
+
+LB_FN real ind_radical_inverse(int b, uint i)
+{
+    real f = R(1), r = R(0);
+    while (i > 0u) {
+        f /= (real)b;
+        r += f * (real)(i % (uint)b);
+        i /= (uint)b;
+    }
+    return r;
+}
+
+LB_FN uint ind_hash(uint x)
+{
+    x ^= x >> 16;
+    x *= 0x7feb352du;
+    x ^= x >> 15;
+    x *= 0x846ca68bu;
+    x ^= x >> 16;
+    return x;
+}
+
+LB_FN real ind_unit(uint x)
+{
+    return (real)(ind_hash(x) >> 8) / R(16777216.0);
+}
+
+/* Hierarchical warping (Clarberg et al. 2005, the seed's 4.5 and Alg. 5.3) of
+ * the point q in [0, 1)^2 by the pyramid from its 2 x 2 level down to level
+ * `stop`: per level, the row (lower / upper half) by the rows' importance,
+ * then the column within it, q rescaled into the chosen child. Returns the
+ * point in texel coordinates. levels = log2 T. */
+LB_FN real2 ind_warp(__global const real* pyr, __global const int* off, int levels, int stop, real2 q)
+{
+    int cx = 0, cy = 0;
+    for (int m = levels - 1; m >= stop; --m) {
+        int n = 1 << (levels - m); /* side of level m */
+        __global const real* L = pyr + off[m];
+        int x0 = 2 * cx, y0 = 2 * cy;
+        real q00 = L[y0 * n + x0], q10 = L[y0 * n + x0 + 1], q01 = L[(y0 + 1) * n + x0], q11 = L[(y0 + 1) * n + x0 + 1];
+        real r0 = q00 + q10, r1 = q01 + q11;
+        int row = 0, col = 0;
+        if (r0 + r1 > R(0)) {
+            real fy = r0 / (r0 + r1);
+            if (q.y < fy) {
+                q.y = q.y / fy;
+            } else {
+                q.y = (q.y - fy) / (R(1) - fy);
+                row = 1;
+            }
+            real a = row ? q01 : q00, b = row ? q11 : q10;
+            real fx = a + b > R(0) ? a / (a + b) : R(0.5);
+            if (q.x < fx) {
+                q.x = q.x / fx;
+            } else {
+                q.x = (q.x - fx) / (R(1) - fx);
+                col = 1;
+            }
+        } else {
+            row = q.y >= R(0.5);
+            col = q.x >= R(0.5);
+            q.y = R(2) * q.y - (real)row;
+            q.x = R(2) * q.x - (real)col;
+        }
+        q.x = clamp(q.x, R(0), R(0.999999));
+        q.y = clamp(q.y, R(0), R(0.999999));
+        cx = x0 + col;
+        cy = y0 + row;
+    }
+    int side = 1 << (levels - stop);
+    real scale = (real)(1 << levels) / (real)side; /* texels per cell of level stop */
+    return R2(((real)cx + q.x) * scale, ((real)cy + q.y) * scale);
+}
+
+/* Seeds (frame 0: every cluster; later: those flagged 1 by a merge or an
+ * empty mapping, and 2 placed by a split), then every centre's radiosity read
+ * anew at its texel (the light moved: the seed's 4.7, flux read at the centre). */
+__kernel void ac_seed(__global const real* tex, int T, __global const real* pyr, __global const int* off, int levels,
+                      int stop, int K, __global real* state, __global real* centres, int frame)
+{
+    int k = get_global_id(0);
+    if (k >= K)
+        return;
+    __global real* s = state + IND_TEX * k;
+    __global real* c = centres + IND_TEX * k;
+    int flag = frame == 0 ? 1 : (int)s[2];
+    if (frame == 0)
+        s[3] = R(0);
+    if (flag == 1) {
+        uint gen = (uint)s[3];
+        uint idx = (uint)k + (uint)K * gen + 1u;
+        real2 q = R2(ind_radical_inverse(2, idx), ind_radical_inverse(3, idx));
+        real2 uv = ind_warp(pyr, off, levels, stop, q);
+        s[0] = uv.x;
+        s[1] = uv.y;
+        s[3] = (real)(gen + 1u);
+    }
+    int i = clamp((int)floor(s[0]), 0, T - 1), j = clamp((int)floor(s[1]), 0, T - 1);
+    __global const real* t = tex + IND_TEX * (j * T + i);
+    if (flag == 1 || flag == 2)
+        for (int f = 0; f < 6; ++f)
+            c[f] = t[f];
+    c[6] = t[7] > R(0) ? t[6] / t[7] : R(0);
+    s[2] = R(0);
+}
+
+/* Each lit texel to the nearest active centre (Eq. 4.4) among those whose
+ * window of `window` texels (side) holds it (Eq. 4.5); -1 when none does. */
+__kernel void ac_map(__global const real* tex, int T, __global const real* centres, __global const real* state, int K,
+                     real window, real wx, real wn, real wb, __global int* label)
+{
+    int i = get_global_id(0), j = get_global_id(1);
+    if (i >= T || j >= T)
+        return;
+    int idx = j * T + i;
+    __global const real* t = tex + IND_TEX * idx;
+    int best = -1;
+    if (t[6] > R(0)) {
+        real bm = R(0), hw = R(0.5) * window, x = (real)i + R(0.5), y = (real)j + R(0.5);
+        for (int k = 0; k < K; ++k) {
+            __global const real* s = state + IND_TEX * k;
+            if (s[2] != R(0) || fabs(x - s[0]) > hw || fabs(y - s[1]) > hw)
+                continue;
+            real m = ind_metric(centres + IND_TEX * k, t, wx, wn, wb);
+            if (best < 0 || m < bm) {
+                bm = m;
+                best = k;
+            }
+        }
+    }
+    label[idx] = best;
+}
+
+#define IND_AC_MAXK 1024
+
+/* Evaluation (seed 4.8, Eq. 4.6-4.8; one work-item): of a pseudo-random third
+ * of the clusters (changing per frame), those whose delta = (A / A_max)(B /
+ * B_max) falls below their neighbourhood's self-weighted mean by more than
+ * eps_m are merged (freed); then those above it by more than eps_s are split
+ * while freed clusters remain: a freed one is placed at a random point within
+ * the split cluster's radius (flag 2, no warping). The rest are reseeded
+ * (flag 1). Neighbours: the centres within a window of 2 x `window` texels. */
+__kernel void ac_evaluate(int K, int T, __global real* state, __global const real* centres,
+                          __global const real* lights, int frame, real window, real eps_m, real eps_s)
+{
+    if (get_global_id(0) != 0)
+        return;
+    real amax = R(0), bmax = R(0);
+    for (int k = 0; k < K; ++k) {
+        amax = fmax(amax, lights[IND_TEX * k + 7]);
+        bmax = fmax(bmax, centres[IND_TEX * k + 6]);
+    }
+    if (!(amax > R(0)) || !(bmax > R(0)))
+        return;
+    real texel = lb_net_side() / (real)T;
+    real dbar[IND_AC_MAXK];
+    for (int k = 0; k < K; ++k) {
+        real num = R(0), den = R(0);
+        __global const real* sk = state + IND_TEX * k;
+        for (int j = 0; j < K; ++j) {
+            __global const real* sj = state + IND_TEX * j;
+            if (j == k || sj[2] != R(0) || fabs(sj[0] - sk[0]) > window || fabs(sj[1] - sk[1]) > window)
+                continue;
+            real d = lights[IND_TEX * j + 7] / amax * centres[IND_TEX * j + 6] / bmax;
+            num += d * d;
+            den += d;
+        }
+        dbar[k] = den > R(0) ? num / den : R(-1);
+    }
+    int freed[IND_AC_MAXK];
+    int nf = 0;
+    for (int k = 0; k < K; ++k) {
+        __global real* s = state + IND_TEX * k;
+        if (s[2] != R(0) || dbar[k] < R(0) || ind_hash((uint)frame * 7919u + (uint)k) % 3u != 0u)
+            continue;
+        real d = lights[IND_TEX * k + 7] / amax * centres[IND_TEX * k + 6] / bmax;
+        if (d - dbar[k] < -eps_m) {
+            s[2] = R(3);
+            freed[nf++] = k;
+        }
+    }
+    for (int k = 0; k < K && nf > 0; ++k) {
+        __global real* s = state + IND_TEX * k;
+        if (s[2] != R(0) || dbar[k] < R(0) || ind_hash((uint)frame * 7919u + (uint)k) % 3u != 0u)
+            continue;
+        real d = lights[IND_TEX * k + 7] / amax * centres[IND_TEX * k + 6] / bmax;
+        if (d - dbar[k] > eps_s) {
+            int f = freed[--nf];
+            real r = sqrt(lights[IND_TEX * k + 7] / LB_PI) / texel;
+            uint h = (uint)frame * 104729u + (uint)k * 31u;
+            __global real* sf = state + IND_TEX * f;
+            sf[0] = clamp(s[0] + r * (ind_unit(h) - R(0.5)), R(0), (real)T - R(0.001));
+            sf[1] = clamp(s[1] + r * (ind_unit(h + 1u) - R(0.5)), R(0), (real)T - R(0.001));
+            sf[2] = R(2);
+        }
+    }
+    for (int i = 0; i < nf; ++i)
+        state[IND_TEX * freed[i] + 2] = R(1);
+}
+
+/* ---- evaluation: E_ind at each floor pixel from n virtual lights ---- */
+__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
+                     __global const real* lights, int nlights, real clamp2)
+{
+    int col = get_global_id(0);
+    int row = row0 + (int)get_global_id(1);
+    int res = (int)P[LB_P_RES];
+    if (col >= res || row >= res)
+        return;
+    real3 x = lb_pixel_position(P, row, col);
+    real3 nx = lb_p3(P, LB_P_NX);
+    real e = R(0);
+    for (int k = 0; k < nlights; ++k) {
+        __global const real* l = lights + IND_TEX * k;
+        e += lb_val_irradiance(x, nx, R3(l[0], l[1], l[2]), R3(l[3], l[4], l[5]), l[6], l[7], clamp2);
+    }
+    out[row * res + col] = e;
+}
