@@ -1,0 +1,62 @@
+#!/usr/bin/env python3
+"""Flicker and mean NMSE against the cluster count K from `lumibench sequence`
+outputs (docs/indirect.md): one line per method family (vpl by N, kmeans and
+acrsm by K), one panel per metric.
+
+    plots/indirect_flicker.py OUT.png SEQ.json [SEQ.json ...]
+
+Each SEQ.json holds "flicker" and "mean" per SPEC; K (or N) is read from the
+SPEC's k= (n=) value."""
+import json
+import re
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+from atomic import save_figure  # noqa: E402
+
+
+def count(spec):
+    m = re.search(r"[:,](k|n)=(\d+)", spec)
+    return int(m.group(2)) if m else None
+
+
+def main(argv):
+    if len(argv) < 3:
+        print(__doc__, file=sys.stderr)
+        return 2
+    series = {}
+    for path in argv[2:]:
+        with open(path) as f:
+            doc = json.load(f)
+        label = doc.get("luminaire", path).split("/")[-1]
+        for spec, fl in doc["flicker"].items():
+            k = count(spec)
+            if k is None or fl is None:
+                continue
+            fam = spec.split(":")[0]
+            series.setdefault((label, fam), []).append((k, fl, doc["mean"][spec]["nmse"]))
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+    for (label, fam), pts in sorted(series.items()):
+        pts.sort()
+        ks = [p[0] for p in pts]
+        style = {"kmeans": "o-", "acrsm": "s-", "vpl": "^--", "mc": "^--"}.get(fam, "x-")
+        axes[0].plot(ks, [p[1] for p in pts], style, label=f"{fam} ({label})")
+        axes[1].plot(ks, [p[2] for p in pts], style, label=f"{fam} ({label})")
+    for ax, title in zip(axes, ["flicker", "mean NMSE over the frames"]):
+        ax.set_xscale("log", base=2)
+        ax.set_yscale("log")
+        ax.set_xlabel("K clusters (vpl: N lights)")
+        ax.set_title(title)
+        ax.grid(True, which="both", alpha=0.3)
+    axes[0].legend(fontsize=7)
+    fig.tight_layout()
+    save_figure(fig, argv[1], dpi=120)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
