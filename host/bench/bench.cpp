@@ -7,6 +7,7 @@
 #include "methods/samples.h"
 #include "methods/specialize.h"
 #include "photometry/lut.h"
+#include "util/error.h"
 
 #include <fmt/format.h>
 
@@ -224,6 +225,32 @@ nlohmann::json run(ocl::Runtime& rt, const photometry::Table& table, const Scene
                          {"rounds", std::max(opt.reps, 11)}, {"target", g.target}, {"ok", r <= g.target}});
     }
     doc["goals"] = goals;
+
+    // 6. The indirect scene's RSM methods (DESIGN 9): each method's time and
+    // its stages (RSM, clustering, evaluation: Prepared::stageMs) at the
+    // bench's resolution, the same light in the room (at h = 1.1 where the
+    // bench's height does not fit it).
+    Scene ind = scene;
+    ind.kind = SceneKind::Indirect;
+    try {
+        ind.validate();
+    } catch (const InputError&) {
+        ind.height = 1.1;
+    }
+    nlohmann::json indirect = nlohmann::json::array();
+    for (const auto& f : methods::registry().all()) {
+        if (f.expensive || f.name == "mc" || !methods::renders(f, SceneKind::Indirect)) continue;
+        std::vector<std::string> specs{f.name};
+        if (!opt.quick) specs.insert(specs.end(), f.benchSpecs.begin(), f.benchSpecs.end());
+        for (const auto& text : specs) {
+            methods::MethodSpec s = methods::parseSpec(text, SceneKind::Indirect);
+            methods::Prepared p(rt, table, ind, s, methods::Precision::Float);
+            p.setLocal(opt.lx, opt.ly);
+            double t = p.time(opt.reps).median_ms;
+            indirect.push_back({{"method", text}, {"time_ms", t}, {"stage_ms", p.stageMs()}});
+        }
+    }
+    doc["indirect"] = {{"scene", ind.describe()}, {"methods", indirect}};
     return doc;
 }
 
@@ -255,6 +282,15 @@ std::string format(const nlohmann::json& d)
         for (const auto& g : d["goals"])
             o << fmt::format("{:<36} {:>6.2f} (target <= {:g}: {})\n", g["name"].get<std::string>(),
                              g["ratio"].get<double>(), g["target"].get<double>(), g["ok"].get<bool>() ? "met" : "MISSED");
+    if (d.contains("indirect")) {
+        o << fmt::format("indirect scene ({}): ms total = rsm + cluster + eval\n",
+                         d["indirect"]["scene"].get<std::string>());
+        for (const auto& m : d["indirect"]["methods"]) {
+            auto st = [&](const char* k) { return m["stage_ms"].value(k, 0.0); };
+            o << fmt::format("  {:<28} {:9.3f} = {:8.3f} + {:8.3f} + {:8.3f}\n", m["method"].get<std::string>(),
+                             m["time_ms"].get<double>(), st("rsm"), st("cluster"), st("eval"));
+        }
+    }
     return o.str();
 }
 

@@ -48,8 +48,8 @@ nlohmann::json runSequence(ocl::Runtime& rt, const photometry::Table& table, con
                            const SequenceOptions& opt)
 {
     std::vector<methods::MethodSpec> parsed;
-    for (auto& s : specs) parsed.push_back(methods::parseSpec(s));
-    const methods::MethodSpec refSpec = methods::parseSpec(opt.referenceSpec);
+    for (auto& s : specs) parsed.push_back(methods::parseSpec(s, base.kind));
+    const methods::MethodSpec refSpec = methods::parseSpec(opt.referenceSpec, base.kind);
     for (int f = 0; f < path.frames; ++f) sequenceFrame(base, path, f).validate();  // every frame, before any work
 
     std::vector<std::unique_ptr<methods::Prepared>> preps;

@@ -106,10 +106,10 @@ TEST(IndirectMethods, RenderNearTheReference)
     auto ref = test::run(*rt, t, sc, "reference:tol=1e-3,dir_tol=1e-4,dir_cell=0.25");
     struct Case {
         const char* spec;
-        double maxNmse;  // bounds from measured values x ~3 (docs/indirect.md)
+        double maxNmse;  // about 3x the measured NMSE (PoCL, float): 0.0029, 0.026, 0.023, 0.021
     };
-    for (Case c : {Case{"vpl:rsm=64,n=1024", 0.02}, Case{"kmeans:rsm=64,k=64", 0.02}, Case{"acrsm:rsm=64,k=64", 0.05},
-                   Case{"mc:rsm=64,n=256", 0.05}}) {
+    for (Case c : {Case{"vpl:rsm=64,n=1024", 0.01}, Case{"kmeans:rsm=64,k=64", 0.08}, Case{"acrsm:rsm=64,k=64", 0.08},
+                   Case{"mc:rsm=64,n=256", 0.06}}) {
         auto r = test::run(*rt, t, sc, c.spec);
         auto m = metrics::compare(ref.image, r.image);
         EXPECT_EQ(r.nonfinite, 0) << c.spec;
@@ -124,7 +124,10 @@ TEST(IndirectMethods, RenderNearTheReference)
 
 TEST(IndirectMethods, OnlyTheIndirectScene)
 {
-    EXPECT_THROW(methods::parseSpec("vpl:rsm=100"), InputError);  // not a power of two
+    EXPECT_NO_THROW(methods::parseSpec("vpl:rsm=128", SceneKind::Indirect));
+    EXPECT_THROW(methods::parseSpec("vpl:rsm=100", SceneKind::Indirect), InputError);  // not a power of two
+    EXPECT_THROW(methods::parseSpec("acrsm:rsm=64,warp_stop=6", SceneKind::Indirect), InputError);
+    EXPECT_THROW(methods::parseSpec("vpl"), InputError);  // a method of the indirect scene only
     LB_REQUIRE_RUNTIME(rt);
     photometry::Table t = methods::loadLuminaire("analytic:cos1");
     Scene diffuse = test::scene(1.1, 3.14159265358979, 4);

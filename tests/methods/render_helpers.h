@@ -16,7 +16,7 @@ inline methods::RenderResult run(ocl::Runtime& rt, const photometry::Table& t, c
     methods::RenderOptions opt;
     opt.reps = 1;
     opt.useCache = false;
-    return methods::render(rt, t, sc, methods::parseSpec(spec), p, opt);
+    return methods::render(rt, t, sc, methods::parseSpec(spec, sc.kind), p, opt);
 }
 
 // The normalized scene at height h, rotation R, res x res pixels (other fields default).
