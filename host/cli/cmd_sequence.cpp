@@ -73,8 +73,9 @@ void addSequenceCommand(CLI::App& app)
         j["albedo"] = base.albedo;
         util::writeFileAtomic(o->out, j.dump(1) + "\n");
         for (auto& [spec, v] : j["flicker"].items())
-            std::cout << fmt::format("{:40s} flicker {:.4g}  mean NMSE {:.4g}  mean time {:.3f} ms\n", spec,
-                                     v.get<double>(), j["mean"][spec]["nmse"].get<double>(),
+            std::cout << fmt::format("{:40s} flicker {:.4g} (per sequence {:.4g})  mean NMSE {:.4g}  mean time {:.3f} ms\n",
+                                     spec, v.get<double>(), j["flicker_seq"][spec].get<double>(),
+                                     j["mean"][spec]["nmse"].get<double>(),
                                      j["mean"][spec]["time_ms"].get<double>());
     });
 }

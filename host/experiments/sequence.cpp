@@ -26,6 +26,17 @@ Scene sequenceFrame(const Scene& base, const SequencePath& path, int f)
 
 namespace {
 
+// mean_i ((A1 - A0) - (R1 - R0))^2, the numerator of both flicker forms.
+double diffMse(const Image& r0, const Image& r1, const Image& a0, const Image& a1)
+{
+    double sum = 0;
+    for (size_t i = 0; i < r1.px.size(); ++i) {
+        const double d = (a1.px[i] - a0.px[i]) - (r1.px[i] - r0.px[i]);
+        sum += d * d;
+    }
+    return sum / r1.px.size();
+}
+
 double flickerTerm(const Image& r0, const Image& r1, const Image& a0, const Image& a1)
 {
     const size_t n = r1.px.size();
@@ -60,7 +71,9 @@ nlohmann::json runSequence(ocl::Runtime& rt, const photometry::Table& table, con
     nlohmann::json frames = nlohmann::json::array();
     std::vector<Image> prevA(parsed.size());
     Image prevR;
-    std::vector<double> flicker(parsed.size(), 0.0), nmseSum(parsed.size(), 0.0), timeSum(parsed.size(), 0.0);
+    std::vector<double> flicker(parsed.size(), 0.0), nmseSum(parsed.size(), 0.0), timeSum(parsed.size(), 0.0),
+        diffSum(parsed.size(), 0.0);
+    double refMeanSum = 0;
     for (int f = 0; f < path.frames; ++f) {
         const Scene sc = sequenceFrame(base, path, f);
         methods::RenderOptions ro = opt.render;
@@ -81,24 +94,31 @@ nlohmann::json runSequence(ocl::Runtime& rt, const photometry::Table& table, con
                 double fl = flickerTerm(prevR, ref, prevA[m], img);
                 j["flicker"] = fl;
                 flicker[m] += fl;
+                diffSum[m] += diffMse(prevR, ref, prevA[m], img);
             }
             per[specs[m]] = j;
             prevA[m] = std::move(img);
         }
+        double mr = 0;
+        for (double v : ref.px) mr += v;
+        refMeanSum += mr / ref.px.size();
         prevR = std::move(ref);
         frames.push_back({{"frame", f},
                           {"param", path.kind == "rotate" ? sc.rotation : sc.height},
                           {"methods", per}});
     }
-    nlohmann::json fl = nlohmann::json::object(), mean = nlohmann::json::object();
+    nlohmann::json fl = nlohmann::json::object(), fls = nlohmann::json::object(), mean = nlohmann::json::object();
+    const double seqMean = refMeanSum / path.frames;
     for (size_t m = 0; m < parsed.size(); ++m) {
         fl[specs[m]] = flicker[m] / (path.frames - 1);
+        fls[specs[m]] = diffSum[m] / (path.frames - 1) / (seqMean * seqMean);
         mean[specs[m]] = {{"nmse", nmseSum[m] / path.frames}, {"time_ms", timeSum[m] / path.frames}};
     }
     return {{"path", {{"kind", path.kind}, {"from", path.from}, {"to", path.to}, {"frames", path.frames}}},
             {"scene", base.describe()},
             {"frames", frames},
             {"flicker", fl},
+            {"flicker_seq", fls},
             {"mean", mean}};
 }
 

@@ -10,7 +10,11 @@
 // the NMSE between the method's frame-to-frame difference and the
 // reference's, normalised by the frame's means as NMSE is (a difference image
 // has a mean near 0, so its own means cannot normalise): 0 when the method
-// changes from frame to frame exactly as the converged light does.
+// changes from frame to frame exactly as the converged light does. Frames
+// where the walls are nearly dark (a narrow downlight pointing at the floor)
+// have tiny means and dominate it; flicker_seq normalises every frame by the
+// sequence's mean reference level instead: mean_f mean_i (dA - dR)^2 /
+// (mean_f mean(R_f))^2.
 #pragma once
 
 #include "cl/runtime.h"
@@ -44,7 +48,7 @@ struct SequenceOptions {
 };
 
 // Runs the path for every method SPEC; returns the record: {"path", "frames":
-// [{"param", "methods": {spec: {"time_ms", metrics...}}}], "flicker": {spec: v},
+// [{"param", "methods": {spec: {"time_ms", metrics...}}}], "flicker": {spec: v}, "flicker_seq": {spec: v},
 // "mean": {spec: {"nmse", "time_ms"}}}.
 nlohmann::json runSequence(ocl::Runtime& rt, const photometry::Table& table, const Scene& base,
                            const SequencePath& path, const std::vector<std::string>& specs, methods::Precision p,

@@ -64,6 +64,7 @@ TEST(IndirectCli, SequenceReportsFlickerPerMethod)
         ASSERT_TRUE(j["flicker"].contains(m)) << m;
         EXPECT_TRUE(j["flicker"][m].is_number()) << m;
         EXPECT_GE(j["flicker"][m].get<double>(), 0.0) << m;
+        EXPECT_GE(j["flicker_seq"][m].get<double>(), 0.0) << m;
     }
     // a bad path is an input error (exit 2) naming the flag
     auto bad = test::runCli("sequence --luminaire " + test::sourceDir() +
