@@ -5,8 +5,12 @@ acrsm by K), one panel per metric.
 
     plots/indirect_flicker.py OUT.png SEQ.json [SEQ.json ...]
 
-Each SEQ.json holds "flicker" and "mean" per SPEC; K (or N) is read from the
-SPEC's k= (n=) value."""
+Each SEQ.json holds "flicker", "flicker_seq" and "mean" per SPEC; K (or N) is
+read from the SPEC's k= (n=) value. flicker_seq (frame differences normalised
+by the sequence's mean reference level) is what is plotted; files written
+before it existed get it from their per-frame records (flicker x mean_ref x
+mean_test is the frame's mean squared difference). A markdown table of every
+SPEC goes to stdout."""
 import json
 import re
 import sys
@@ -24,6 +28,16 @@ def count(spec):
     return int(m.group(2)) if m else None
 
 
+def flicker_seq(doc, spec):
+    if "flicker_seq" in doc and spec in doc["flicker_seq"]:
+        return doc["flicker_seq"][spec]
+    frames = doc["frames"]
+    diff = [f["methods"][spec]["flicker"] * f["methods"][spec]["mean_ref"] * f["methods"][spec]["mean_test"]
+            for f in frames[1:]]
+    level = sum(f["methods"][spec]["mean_ref"] for f in frames) / len(frames)
+    return sum(diff) / len(diff) / (level * level)
+
+
 def main(argv):
     if len(argv) < 3:
         print(__doc__, file=sys.stderr)
@@ -33,12 +47,19 @@ def main(argv):
         with open(path) as f:
             doc = json.load(f)
         label = doc.get("luminaire", path).split("/")[-1]
-        for spec, fl in doc["flicker"].items():
+        path_kind = doc["path"]["kind"]
+        print(f"\n{label}, path {path_kind}, {doc['path']['frames']} frames\n")
+        print("| SPEC | flicker (per sequence) | flicker (per frame) | mean NMSE | mean time (ms) |")
+        print("|---|---|---|---|---|")
+        for spec, flf in doc["flicker"].items():
+            fl = flicker_seq(doc, spec)
+            print(f"| {spec} | {fl:.4g} | {flf:.4g} | {doc['mean'][spec]['nmse']:.4g} | "
+                  f"{doc['mean'][spec]['time_ms']:.1f} |")
             k = count(spec)
             if k is None or fl is None:
                 continue
             fam = spec.split(":")[0]
-            series.setdefault((label, fam), []).append((k, fl, doc["mean"][spec]["nmse"]))
+            series.setdefault((f"{label} {path_kind}", fam), []).append((k, fl, doc["mean"][spec]["nmse"]))
     fig, axes = plt.subplots(1, 2, figsize=(10, 4))
     for (label, fam), pts in sorted(series.items()):
         pts.sort()
@@ -46,7 +67,7 @@ def main(argv):
         style = {"kmeans": "o-", "acrsm": "s-", "vpl": "^--", "mc": "^--"}.get(fam, "x-")
         axes[0].plot(ks, [p[1] for p in pts], style, label=f"{fam} ({label})")
         axes[1].plot(ks, [p[2] for p in pts], style, label=f"{fam} ({label})")
-    for ax, title in zip(axes, ["flicker", "mean NMSE over the frames"]):
+    for ax, title in zip(axes, ["flicker (per sequence)", "mean NMSE over the frames"]):
         ax.set_xscale("log", base=2)
         ax.set_yscale("log")
         ax.set_xlabel("K clusters (vpl: N lights)")
