@@ -77,7 +77,9 @@ TEST(IndirectReference, BounceOfAConstantWallIsTheLambertClosedForm)
 // The RSM's reflected flux (sum of texel fluxes, E_dir at texel centres by the
 // reference) against the reference's (rho int E_dir dA by the Gauss nodes):
 // within 1 % (the midpoint rule on 64^2 texels of 17 cm errs ~0.1 % on smooth
-// E_dir; the border texels take their whole area's flux at one point).
+// E_dir; the border texels take their whole area's flux at one point). The
+// reference's nodes on 0.5 m cells integrate the smooth E_dir of these
+// luminaires to ~1e-5 (the test is about the RSM; 4x cheaper than 0.25 m).
 TEST(IndirectRsm, ReflectedFluxMatchesTheReference)
 {
     LB_REQUIRE_RUNTIME(rt);
@@ -85,7 +87,7 @@ TEST(IndirectRsm, ReflectedFluxMatchesTheReference)
         photometry::Table t = methods::loadLuminaire(lum);
         for (double R : {3.14159265358979, 2.35619449019234}) {
             Scene sc = indirectScene(1.1, R, 4);
-            auto ref = test::run(*rt, t, sc, "reference:tol=1e-2,dir_tol=1e-4,dir_cell=0.25");
+            auto ref = test::run(*rt, t, sc, "reference:tol=1e-1,dir_tol=1e-4,dir_cell=0.5");
             auto vpl = test::run(*rt, t, sc, "vpl:rsm=64,direct=reference,dir_tol=1e-4,n=16");
             double fr = ref.stats["reflected_flux_lm"], fv = vpl.stats["rsm_flux_lm"];
             ASSERT_GT(fr, 0.0);
