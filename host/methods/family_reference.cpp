@@ -7,20 +7,11 @@
 
 namespace lb::methods {
 
-void registerReference(Registry& r)
+// The arguments and the finish of an adaptive reference kernel: errout,
+// splits_out, rel_tol (spec "tol"), max_splits; the per-pixel error estimate
+// becomes the extra image "err", the split counts statistics.
+void referenceIo(Family& f)
 {
-    Family f;
-    f.name = "reference";
-    f.summary = "converged area integral (adaptive 4x4 Gauss-Legendre cubature) with an error estimate";
-    f.file = "reference.cl";
-    f.params = {
-        Param::real("tol", 1e-5, 1e-9, 1e-1, Scale::Log, "target relative error per pixel", false),
-        Param::integer("max_splits", 128, 0, 128, Scale::Linear,
-                       "cell splits per pixel at most (the store holds 4 + 3 x 128 cells)"),
-    };
-    f.defines = [](const MethodSpec&) { return std::string(); };
-    f.expensive = true;
-    f.bandRows = 16;
     f.args = {"errout", "splits_out", "rel_tol", "max_splits"};
     f.setArgs = [](LaunchContext& c) {
         size_t n = static_cast<size_t>(c.res()) * c.res();
@@ -48,6 +39,23 @@ void registerReference(Registry& r)
         c.stats["max_err_est"] = *std::max_element(err.px.begin(), err.px.end());
         c.extraImages["err"] = std::move(err);
     };
+}
+
+void registerReference(Registry& r)
+{
+    Family f;
+    f.name = "reference";
+    f.summary = "converged area integral (adaptive 4x4 Gauss-Legendre cubature) with an error estimate";
+    f.file = "reference.cl";
+    f.params = {
+        Param::real("tol", 1e-5, 1e-9, 1e-1, Scale::Log, "target relative error per pixel", false),
+        Param::integer("max_splits", 128, 0, 128, Scale::Linear,
+                       "cell splits per pixel at most (the store holds 4 + 3 x 128 cells)"),
+    };
+    f.defines = [](const MethodSpec&) { return std::string(); };
+    f.expensive = true;
+    f.bandRows = 16;
+    referenceIo(f);
     r.add(f);
 }
 

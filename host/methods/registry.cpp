@@ -16,6 +16,7 @@ void registerMc(Registry& r);
 void registerCubature(Registry& r);
 void registerVoronoi(Registry& r);
 void registerIndirect(Registry& r);
+void registerSpecular(Registry& r);
 
 namespace {
 Registry builtinFamilies()
@@ -28,6 +29,7 @@ Registry builtinFamilies()
     registerCubature(r);
     registerVoronoi(r);
     registerIndirect(r);  // reference (indirect), vpl, kmeans, acrsm (and mc: VPLs)
+    registerSpecular(r);  // reference, mc, ltc of the specular scene
     return r;
 }
 } // namespace

@@ -87,6 +87,22 @@ const std::vector<Case>& catalogue()
         add("coincident", "all four corners coincide (0 x 0)", 1, kPi, 0, 0, "lambert", Expect::Rejected, true);
         add("collinear", "corners collinear (0 x 1)", 1, kPi, 0, 1, "lambert", Expect::Rejected, true);
         add("collinear_float", "corners collinear in float (1e-9 x 1)", 1, kPi, 1e-9, 1, "lambert", Expect::Rejected);
+        // The specular scene (DESIGN 8): the glossy receiver's extremes.
+        auto spec = [&](const char* name, const char* what, double h, double R, const char* lum, double alpha,
+                        glm::dvec3 eye, Expect e = Expect::Finite, bool quick = false, bool oddRes = false) {
+            add(name, what, h, R, 1, 1, lum, e, quick, oddRes);
+            v.back().kind = SceneKind::Specular;
+            v.back().alpha = alpha;
+            v.back().eye = eye;
+        };
+        spec("spec_grazing_eye", "specular: eye 2 cm above the ground 20 m away (grazing w_o)", 0.1, 3 * kPi / 4,
+             "downlight", 0.25, {0, 20, 0.02}, Expect::Finite, true);
+        spec("spec_alpha002", "specular: alpha 0.02 (the narrowest lobe the reference resolves), light near", 0.1,
+             3 * kPi / 4, "downlight", 0.02, {0, 4, 2}, Expect::Finite, true);
+        spec("spec_eye_in_plane", "specular: eye in the vertical light's plane (y = 0), row of pixels there too",
+             0.5, kPi / 2, "diffuse", 0.1, {0, 0, 3}, Expect::Finite, false, true);
+        spec("spec_behind", "specular: up-light facing down, the receiver behind its emission: exactly 0", 1, kPi,
+             "stab:upward", 0.25, {0, 4, 2}, Expect::Zero, true);
         return v;
     }();
     return cases;

@@ -465,3 +465,38 @@ TEST_F(ExperimentRun, SmokeExperimentProducesResultsPlotsAndReport)
 
 } // namespace
 } // namespace lb
+
+namespace lb {
+namespace {
+
+// experiments/specular-smoke.json end to end, as CI runs it: every method of
+// the specular scene renders on the device, every record is finite, every
+// scene has its equal-time MCI partner to Cubature + LTC (< 30 s on 2 cores).
+TEST_F(ExperimentRun, SpecularSmokeRendersEveryMethod)
+{
+    fs::path out = dir / "specular-smoke";
+    std::string file = (fs::path(test::sourceDir()) / "experiments" / "specular-smoke.json").string();
+    ASSERT_EQ(run("run '" + file + "' --out " + out.string() + " --no-report"), 0) << slurp(dir / "stderr.txt");
+    auto doc = results::load((out / "results.json").string());
+    auto e = experiments::loadExperiment(file);
+    std::set<std::string> seen;
+    size_t eq = 0;
+    for (auto& r : doc.records) {
+        EXPECT_EQ(r.error.nonfinite, 0) << r.key();
+        EXPECT_TRUE(std::isfinite(r.error.nmse)) << r.key();
+        EXPECT_EQ(r.sceneKeys.value("scene_kind", ""), "specular") << r.key();
+        if (r.equal_time_to) {
+            ++eq;
+            EXPECT_EQ(r.equal_time_to->rfind("ltc:", 0), 0u) << r.key();  // the canonical spec of "ltc"
+        } else {
+            seen.insert(r.method);
+        }
+    }
+    EXPECT_EQ(seen, (std::set<std::string>{"ltc", "mc"}));
+    EXPECT_EQ(eq, experiments::scenes(e).size() * e.equalTime.size());
+    // every spec of the file and every N of the MCI curve has its records per scene
+    EXPECT_EQ(doc.records.size() - eq, experiments::scenes(e).size() * (e.methods.size() + e.mciCurve.size()));
+}
+
+} // namespace
+} // namespace lb

@@ -1,0 +1,24 @@
+/* specular_reference.cl -- the converged reference of the specular scene
+ * (DESIGN section 8): common/specref.h's adaptive cubature of the area form,
+ * one pixel per work-item, with its per-pixel error estimate.
+ * Deterministic: no random numbers, a fixed order of operations.
+ * @variants: ""
+ */
+#include "common/lbmath.h"
+
+__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
+                     __global real* errout, __global int* splits_out, real rel_tol, int max_splits)
+{
+    int col = get_global_id(0);
+    int row = row0 + (int)get_global_id(1);
+    int res = (int)P[LB_P_RES];
+    if (col >= res || row >= res)
+        return;
+    real err;
+    int splits, cells;
+    real v = lb_specular_reference(lum, lb_scene_light(P), lb_pixel_position(P, row, col), lb_p3(P, LB_P_NX),
+                                   lb_p3(P, LB_P_EYE), P[LB_P_ALPHA], rel_tol, max_splits, &err, &splits, &cells);
+    out[row * res + col] = v;
+    errout[row * res + col] = err;
+    splits_out[row * res + col] = splits;
+}
