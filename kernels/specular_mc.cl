@@ -10,8 +10,9 @@
  *                      sample weighted by its density over the sum of both
  *                      densities in solid angle, p_light = r^2 / (A |n_L . w|)
  * st[2i], st[2i+1]: the light points (host/methods/samples.h); seed: the
- * pixel hash's seed.
- * @variants: "" | "-DLB_SMC_SAMPLING=1" | "-DLB_SMC_SAMPLING=2"
+ * pixel hash's seed. LB_LUT: the trig-free intensity table (common/lut.h),
+ * `lum` is the LUT.
+ * @variants: "" | "-DLB_SMC_SAMPLING=1" | "-DLB_SMC_SAMPLING=2" | "-DLB_LUT" | "-DLB_LUT -DLB_SMC_SAMPLING=2"
  */
 #include "common/lbmath.h"
 

@@ -50,10 +50,18 @@ void registerSpecular(Registry& r)
             Param::choice("pattern", "poisson", {"poisson", "halton", "stratified", "random"},
                           "point set on the light"),
             Param::integer("seed", 0, 0, 2147483647L, Scale::Linear, "seed of the point set and the VNDF hash"),
+            Param::choice("lookup", "exact", {"exact", "lut"},
+                          "intensity lookup: the exact bilinear one (docs/specular.md's runs) or the trig-free "
+                          "table (photometry/lut.h) that ltc and the diffuse mc use by default"),
+        };
+        f.lumBuffer = [](const MethodSpec& s, const photometry::Table& t) {
+            return s.str("lookup") == "lut" ? photometry::buildLut(t).packed : t.packed();
         };
         f.defines = [](const MethodSpec& s) {
             const std::string& m = s.str("sampling");
-            return m == "light" ? std::string() : (m == "vndf" ? "-DLB_SMC_SAMPLING=1" : "-DLB_SMC_SAMPLING=2");
+            std::string d = m == "light" ? std::string() : (m == "vndf" ? "-DLB_SMC_SAMPLING=1" : "-DLB_SMC_SAMPLING=2");
+            if (s.str("lookup") == "lut") d += d.empty() ? "-DLB_LUT" : " -DLB_LUT";
+            return d;
         };
         f.args = {"st", "n", "seed"};
         f.setArgs = [](LaunchContext& c) {

@@ -107,7 +107,8 @@ TEST(SpecularMethods, MonteCarloConvergesToTheReference)
         Scene sc = specular(1.1, 3 * M_PI / 4, 8, alpha);
         double ref = meanOf(run(*rt, t, sc, "reference:tol=1e-5").image);
         ASSERT_GT(ref, 0);
-        for (const char* spec : {"mc:n=4096", "mc:n=4096,sampling=vndf", "mc:n=4096,sampling=mis"}) {
+        for (const char* spec : {"mc:n=4096", "mc:n=4096,sampling=vndf", "mc:n=4096,sampling=mis",
+                                 "mc:n=4096,lookup=lut", "mc:n=4096,sampling=mis,lookup=lut"}) {
             double m = meanOf(run(*rt, t, sc, spec).image);
             EXPECT_NEAR(m, ref, 0.02 * ref) << spec << " alpha " << alpha;
         }
