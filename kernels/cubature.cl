@@ -24,12 +24,16 @@
  *   LB_LANES=8        with LB_CUB_RECT_FAN or _DEL and LB_LUT, float: eight pixels
  *                     per work-item in float8 (host/methods: lanes; CPUs by default)
  *   LB_LUT            trig-free intensity table (common/lut.h), `lum` is the LUT
+ *   LB_CUB_AREA=n     blend in the area form by the n x n Gauss-Legendre rule (n = 2, 3;
+ *                     common/cubature_lanes.inc lb_area_gauss_rect), in every form
  * Continuous tunables (kernel arguments): plane_eps, horizon_eps (metres),
  * corner_inset, dyn_weight (common/cubature.h lb_cubature_irradiance_ex; 0, 1 = plain),
  * blend_dist (m): beyond it the result blends into a 3 x 3 grid MC (lb_blend_weight;
- * fully MC, without the cubature, from 1.5 blend_dist on).
+ * fully MC, without the cubature, from 1.5 blend_dist on); area_q, area_sin: with
+ * LB_CUB_AREA = n (2 or 3) the n x n Gauss rule of the area form is blended in
+ * away from the light and towards its plane (lb_area_weight).
  *
- * @variants: "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL" | "-DLB_CUB_RECT_FAN -DLB_CUB_BLEND" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_CUB_BLEND -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_NORMALIZE=1" | "" | "-DLB_CUB_TRI=1" | "-DLB_CUB_TRI=1 -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=15" | "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_DYNAMIC=0" | "-DLB_LUT" | "-DLB_LUT -DLB_CUB_RECT_FAN" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_RECT_FAN -DLB_CUB_RECT_CLIP -DLB_CUB_BLEND" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_CUB_RECT_CLIP -DLB_LANES=8"
+ * @variants: "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL" | "-DLB_CUB_RECT_FAN -DLB_CUB_BLEND" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_CUB_BLEND -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_NORMALIZE=1" | "" | "-DLB_CUB_TRI=1" | "-DLB_CUB_TRI=1 -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=15" | "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_DYNAMIC=0" | "-DLB_LUT" | "-DLB_LUT -DLB_CUB_RECT_FAN" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_RECT_FAN -DLB_CUB_RECT_CLIP -DLB_CUB_BLEND" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_CUB_RECT_CLIP -DLB_LANES=8" | "-DLB_CUB_AREA=2" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_CUB_RECT_CLIP -DLB_CUB_AREA=3 -DLB_LANES=8" | "-DLB_CUB_RECT_DEL -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_AREA=3"
  */
 #include "common/lbmath.h"
 
@@ -82,7 +86,7 @@
 
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
                      __global int* stats, int want_stats, real plane_eps, real horizon_eps,
-                     real corner_inset, real dyn_weight, real blend_dist)
+                     real corner_inset, real dyn_weight, real blend_dist, real area_q, real area_sin)
 {
     int col0, row, res;
     float8 ou, ov, on;
@@ -93,7 +97,21 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     float8 hc = lb_cub_rect_shift_x8(on, lb_plane_distance_x8(P, (float8)(0, 1, 2, 3, 4, 5, 6, 7) + (float)col0, row), plane_eps);
     float8 v0c = ov, lc = (float8)(P[LB_P_L]);
     LB_CUB_RECT_CLIP_CALL(_x8);
+#ifdef LB_CUB_AREA
+    /* the area form's weight; where every lane takes the area form alone the
+     * cubature is not evaluated (a far-field row costs only the area rule) */
+    float8 ta = lb_area_weight_x8(ou, v0c, on, P[LB_P_W], lc, area_q, area_sin);
+    float8 e = (float8)(0.0f);
+    nt = (int8)(0);
+    nf = (int8)(0);
+    if (any(ta < 1.0f))
+        e = LB_CUB_RECT_CALL(_x8, nt, nf);
+    e = lb_area_blend_x8(lum, e, ta, ou, v0c, on, P[LB_P_W], lc, au, av, an, R(1) / (P[LB_P_W] * P[LB_P_L]));
+    nt = ta >= 1.0f ? 0 : nt;
+    nf = ta >= 1.0f ? 0 : nf;
+#else
     float8 e = LB_CUB_RECT_CALL(_x8, nt, nf);
+#endif
 #ifdef LB_CUB_BLEND
     float8 t;
     e = lb_cub_rect_blend_x8(lum, e, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an, blend_dist, &t);
@@ -121,7 +139,7 @@ __kernel void render(__global const real* P, __global const float* lum, __global
  * nothing. */
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
                      __global int* stats, int want_stats, real plane_eps, real horizon_eps,
-                     real corner_inset, real dyn_weight, real blend_dist)
+                     real corner_inset, real dyn_weight, real blend_dist, real area_q, real area_sin)
 {
     int col, row, res;
     real ou, ov, on, au, av, an;
@@ -131,7 +149,16 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     real hc = lb_cub_rect_shift(on, lb_plane_distance(P, (real)col, row), plane_eps);
     real v0c = ov, lc = P[LB_P_L];
     LB_CUB_RECT_CLIP_CALL();
+#ifdef LB_CUB_AREA
+    real ta = lb_area_weight(ou, v0c, on, P[LB_P_W], lc, area_q, area_sin);
+    real e = R(0);
+    nt = nf = 0;
+    if (ta < R(1))
+        e = LB_CUB_RECT_CALL(, nt, nf);
+    e = lb_area_blend(lum, e, ta, ou, v0c, on, P[LB_P_W], lc, au, av, an, R(1) / (P[LB_P_W] * P[LB_P_L]));
+#else
     real e = LB_CUB_RECT_CALL(, nt, nf);
+#endif
 #ifdef LB_CUB_BLEND
     real t;
     e = lb_cub_rect_blend(lum, e, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an, blend_dist, &t);
@@ -148,7 +175,7 @@ __kernel void render(__global const real* P, __global const float* lum, __global
 #else
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
                      __global int* stats, int want_stats, real plane_eps, real horizon_eps,
-                     real corner_inset, real dyn_weight, real blend_dist)
+                     real corner_inset, real dyn_weight, real blend_dist, real area_q, real area_sin)
 {
     int col = get_global_id(0);
     int row = row0 + (int)get_global_id(1);
@@ -166,6 +193,25 @@ __kernel void render(__global const real* P, __global const float* lum, __global
                                       plane_eps, horizon_eps, corner_inset, dyn_weight, &nt, &nf);
     if (t > R(0))
         e = (R(1) - t) * e + t * lb_grid_mc_irradiance(lum, L, x, nx, 3);
+#ifdef LB_CUB_AREA
+    {
+        /* the straight-line forms' area blend: on the rectangle the horizon
+         * leaves when it cuts along the u edges (every normalized scene), else
+         * on the whole rectangle (max(0, n_x . w) in the rule) */
+        real ou, ov, on, au, av, an;
+        lb_corner_offset(P, (real)col, row, &ou, &ov, &on);
+        lb_receiver_normal_local(P, &au, &av, &an);
+        real v0c = ov, lc = P[LB_P_L];
+        if (au == R(0)) {
+            real hc = lb_cub_rect_shift(on, lb_plane_distance(P, (real)col, row), plane_eps);
+            lb_cub_rect_clip(ov, hc, P[LB_P_L], av, an, horizon_eps, &v0c, &lc);
+        }
+        real ta = lb_area_weight(ou, v0c, on, P[LB_P_W], lc, area_q, area_sin);
+        e = lb_area_blend(lum, e, ta, ou, v0c, on, P[LB_P_W], lc, au, av, an, R(1) / (P[LB_P_W] * P[LB_P_L]));
+        nt = ta >= R(1) ? 0 : nt;
+        nf = ta >= R(1) ? 0 : nf;
+    }
+#endif
     int i = row * n + col;
     out[i] = e;
     if (want_stats) {

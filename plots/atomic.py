@@ -1,20 +1,19 @@
-"""Atomic figure output for the plotting scripts: the figure is written to a
-temporary file beside the target and renamed over it only when savefig
+"""Atomic figure and text output for the plotting scripts: the file is written to a
+temporary file beside the target and renamed over it only when the write
 returned, so an interrupted or failed write (a full disk) never leaves a
-truncated PNG behind and keeps the old one (lumibench's C++ outputs do the
+truncated file behind and keeps the old one (lumibench's C++ outputs do the
 same: host/util/fileio.h). Standard library and matplotlib only."""
 import os
 
 
-def save_figure(fig, path, **kwargs):
-    """fig.savefig(path, **kwargs), atomically. The format comes from the
-    target's extension (the temporary's name has another one)."""
+def _write_atomically(path, write):
+    """Calls write(tmp) for a temporary beside path, fsyncs it and renames it
+    over path; removes the temporary on any failure."""
     path = os.fspath(path)
     directory = os.path.dirname(os.path.abspath(path))
     tmp = os.path.join(directory, f".{os.path.basename(path)}.tmp.{os.getpid()}")
-    fmt = kwargs.pop("format", None) or os.path.splitext(path)[1].lstrip(".").lower() or "png"
     try:
-        fig.savefig(tmp, format=fmt, **kwargs)
+        write(tmp)
         with open(tmp, "rb") as f:
             os.fsync(f.fileno())
         os.replace(tmp, path)
@@ -24,3 +23,18 @@ def save_figure(fig, path, **kwargs):
         except FileNotFoundError:
             pass
         raise
+
+
+def save_figure(fig, path, **kwargs):
+    """fig.savefig(path, **kwargs), atomically. The format comes from the
+    target's extension (the temporary's name has another one)."""
+    fmt = kwargs.pop("format", None) or os.path.splitext(os.fspath(path))[1].lstrip(".").lower() or "png"
+    _write_atomically(path, lambda tmp: fig.savefig(tmp, format=fmt, **kwargs))
+
+
+def write_text(path, text):
+    """Writes text to path atomically, as save_figure."""
+    def write(tmp):
+        with open(tmp, "w") as f:
+            f.write(text)
+    _write_atomically(path, write)

@@ -4,7 +4,7 @@
 set -euo pipefail
 bin=${LUMIBENCH:-build/lumibench}
 out=luminaires
-for kind in lambert spot downlight linear diffuse batwing sideways updown; do
+for kind in lambert spot downlight linear diffuse batwing sideways updown grazing pencil quadrant; do
   for ext in ldt ies; do "$bin" luminaire synth "$kind" --out "$out/$kind.$ext" >/dev/null; done
 done
 # Phong cos^n with n = 10 (flux 1000 lm like all the others).

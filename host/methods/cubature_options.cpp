@@ -91,10 +91,13 @@ CubatureOptions CubatureOptions::parse(const std::map<std::string, std::string>&
         else if (k == "lookup") o.lut = choose(k, v, {"lut", "exact"}) == 0;
         else if (k == "specialize") o.specialize = choose(k, v, {"auto", "none"}) == 0;
         else if (k == "lanes") o.lanes = std::array<int, 3>{0, 1, 8}[choose(k, v, {"auto", "1", "8"})];
+        else if (k == "area") o.area = std::array<int, 3>{0, 2, 3}[choose(k, v, {"none", "gauss2", "gauss3"})];
+        else if (k == "area_q") o.areaQ = nonNegative(k, v);
+        else if (k == "area_sin") o.areaSin = nonNegative(k, v);
         else
             throw InputError(fmt::format("cubature: unknown parameter '{}' (expected triangulation, weighting, "
                                          "normalize, dynamic, plane_eps, horizon_eps, corner_inset, dyn_weight, blend_dist, "
-                                         "lookup, specialize, lanes)",
+                                         "lookup, specialize, lanes, area, area_q, area_sin)",
                                          k));
     }
     return o;
@@ -102,8 +105,8 @@ CubatureOptions CubatureOptions::parse(const std::map<std::string, std::string>&
 
 std::string CubatureOptions::defines() const
 {
-    return fmt::format("-DLB_CUB_TRI={} -DLB_CUB_WEIGHT={} -DLB_CUB_NORMALIZE={} -DLB_CUB_DYNAMIC={}", triangulation,
-                       weighting, formfactor ? 1 : 0, dynamic);
+    return fmt::format("-DLB_CUB_TRI={} -DLB_CUB_WEIGHT={} -DLB_CUB_NORMALIZE={} -DLB_CUB_DYNAMIC={}{}", triangulation,
+                       weighting, formfactor ? 1 : 0, dynamic, area ? fmt::format(" -DLB_CUB_AREA={}", area) : "");
 }
 
 std::map<std::string, std::string> CubatureOptions::describe() const
@@ -121,7 +124,10 @@ std::map<std::string, std::string> CubatureOptions::describe() const
             {"blend_dist", fmt::format("{}", blendDist)},
             {"lookup", lut ? "lut" : "exact"},
             {"specialize", specialize ? "auto" : "none"},
-            {"lanes", lanes == 0 ? "auto" : std::to_string(lanes)}};
+            {"lanes", lanes == 0 ? "auto" : std::to_string(lanes)},
+            {"area", area == 0 ? "none" : "gauss" + std::to_string(area)},
+            {"area_q", fmt::format("{}", areaQ)},
+            {"area_sin", fmt::format("{}", areaSin)}};
 }
 
 } // namespace lb::methods

@@ -10,6 +10,13 @@
 
 namespace lb::methods {
 
+// Default of area_q (docs/robust.md): where the 2 x 2 Gauss rule's measured
+// error falls below the cubature's.
+inline constexpr double kDefaultAreaQ = 1.0;
+// Default of area_sin: the cubature alone where its samples' 1/|n_L . d|
+// amplifies the table at most twofold.
+inline constexpr double kDefaultAreaSin = 0.5;
+
 struct CubatureOptions {
     int triangulation = 0; // 0 fan (paper 5.2), 1 delaunay (Lawson flips, thesis 5.2)
     int weighting = 1;     // 0 sample (paper Eq. 9), 1 average (Eq. 10), 2 dotout
@@ -41,10 +48,20 @@ struct CubatureOptions {
     // auto (8 on CPU devices, 1 elsewhere); used only where that variant
     // applies, in float with the LUT (methods/specialize.h cubatureLanes).
     int lanes = 0;
+    // area: the area form of the integral (no 1/|n_L . d|) by the n x n
+    // Gauss-Legendre product rule, n = area (0 = none), blended in by the
+    // receiver's distance rho to the light in units of its longer side a and
+    // the elevation sin(beta) of the light's closest point above its plane:
+    // the cubature alone for rho <= area_q a / 2 and sin(beta) >= area_sin,
+    // the area rule alone for rho >= area_q a or sin(beta) <= area_sin / 2
+    // (kernels/common/cubature_lanes.inc lb_area_weight).
+    int area = 0;
+    double areaQ = kDefaultAreaQ;
+    double areaSin = kDefaultAreaSin;
 
     // Keys: triangulation, weighting, normalize, dynamic, plane_eps,
     // horizon_eps, corner_inset, dyn_weight, blend_dist, lookup, specialize,
-    // lanes. `dynamic` is a '+'-separated set of cp, np, mrp,
+    // lanes, area, area_q, area_sin. `dynamic` is a '+'-separated set of cp, np, mrp,
     // barycentre (alias bary), or none (corners only). Unknown keys, values
     // or negative epsilons throw lb::InputError naming them.
     static CubatureOptions parse(const std::map<std::string, std::string>& kv);

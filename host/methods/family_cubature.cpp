@@ -12,6 +12,9 @@
 
 namespace lb::methods {
 
+// The defaults `robust` changes (docs/robust.md).
+const std::map<std::string, std::string> kRobustDefaults = {{"area", "gauss2"}};
+
 namespace {
 
 // The spec's canonical values (every key present) as CubatureOptions.
@@ -26,7 +29,9 @@ int popcount(int m)
 
 } // namespace
 
-void registerCubature(Registry& r)
+namespace {
+
+Family cubatureFamily()
 {
     Family f;
     f.name = "cubature";
@@ -71,6 +76,19 @@ void registerCubature(Registry& r)
         Param::choice("lanes", "auto", {"auto", "1", "8"},
                       "pixels per work-item of the straight-line forms (float, lut): 8 = float8 code, "
                       "auto = 8 on CPU devices (PoCL), 1 elsewhere"),
+        Param::choice("area", "none", {"none", "gauss2", "gauss3"},
+                      "blend in the area form of the integral (I cos / r^2 over the light, no 1/cos: finite in the "
+                      "light's plane) by the n x n Gauss-Legendre rule, n = 2 or 3, away from the light"),
+        // area_q from 0.1 (the area rule only within a tenth of the light's
+        // size: its error there exceeds 100 %) to 10 (far field only).
+        Param::real("area_q", kDefaultAreaQ, 0.1, 10.0, Scale::Log,
+                    "with area: the cubature alone within area_q/2 light sizes (longer side) of the light, the area "
+                    "rule alone beyond area_q, smoothstep between"),
+        // area_sin over the whole range of an elevation's sine.
+        Param::real("area_sin", kDefaultAreaSin, 0.0, 1.0, Scale::Linear,
+                    "with area: the cubature alone where the light's closest point is seen at an elevation sin(beta) "
+                    ">= area_sin above the light's plane, the area rule alone below area_sin/2 (0: never by "
+                    "elevation)"),
     };
     f.validate = [](const MethodSpec& s) {
         CubatureOptions o = options(s);
@@ -96,7 +114,7 @@ void registerCubature(Registry& r)
     f.lumBuffer = [](const MethodSpec& s, const photometry::Table& t) {
         return options(s).lut ? photometry::buildLut(t).packed : t.packed();
     };
-    f.args = {"stats", "want_stats", "plane_eps", "horizon_eps", "corner_inset", "dyn_weight", "blend_dist"};
+    f.args = {"stats", "want_stats", "plane_eps", "horizon_eps", "corner_inset", "dyn_weight", "blend_dist", "area_q", "area_sin"};
     f.statsSwitch = "want_stats";
     f.setArgs = [](LaunchContext& c) {
         CubatureOptions o = options(c.spec);
@@ -110,6 +128,8 @@ void registerCubature(Registry& r)
         c.realArg("corner_inset", o.cornerInset);
         c.realArg("dyn_weight", o.dynWeight);
         c.realArg("blend_dist", o.blendDist);
+        c.realArg("area_q", o.areaQ);
+        c.realArg("area_sin", o.areaSin);
     };
     f.straightDefines = {"-DLB_CUB_RECT_FAN", "-DLB_CUB_RECT_DEL"};
     f.benchSpecs = {"cubature:lanes=1", "cubature:specialize=none,lookup=exact",
@@ -135,6 +155,26 @@ void registerCubature(Registry& r)
         c.stats["flips_per_pixel"] = flips / double(npx);
         c.stats["flips_max"] = fmax;
     };
+    return f;
+}
+
+} // namespace
+
+void registerCubature(Registry& r) { r.add(cubatureFamily()); }
+
+// robust: the cubature where it is best (near the light, in front of it) and
+// the area form where it is not (far field, the light's own plane): the
+// recommended variant of docs/robust.md. Every cubature parameter applies;
+// only the defaults differ.
+void registerRobust(Registry& r)
+{
+    Family f = cubatureFamily();
+    f.name = "robust";
+    f.summary = "cubature blended with the area-form Gauss rule away from the light (docs/robust.md)";
+    const std::map<std::string, std::string> defaults = kRobustDefaults;
+    for (auto& p : f.params)
+        if (auto it = defaults.find(p.name); it != defaults.end()) p.def = it->second;
+    f.benchSpecs = {};
     r.add(f);
 }
 

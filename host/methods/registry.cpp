@@ -17,6 +17,7 @@ void registerCubature(Registry& r);
 void registerVoronoi(Registry& r);
 void registerIndirect(Registry& r);
 void registerSpecular(Registry& r);
+void registerRobust(Registry& r);
 
 namespace {
 Registry builtinFamilies()
@@ -30,6 +31,7 @@ Registry builtinFamilies()
     registerVoronoi(r);
     registerIndirect(r);  // reference (indirect), vpl, kmeans, acrsm (and mc: VPLs)
     registerSpecular(r);  // reference, mc, ltc of the specular scene
+    registerRobust(r);
     return r;
 }
 } // namespace

@@ -18,7 +18,18 @@ struct Kind {
     std::string what;
     bool exact;
     double (*shape)(double c, double g, double n); // relative intensity, degrees
+    // The measured grid of the non-exact kinds: C planes over 0 .. 360 and
+    // gamma angles over 0 .. gammaMax, both uniform.
+    int nc = 25, ng = 73;
+    double gammaMax = 180;
 };
+
+// Angular distance of C planes a, b in degrees (0 .. 180).
+double cDistance(double a, double b)
+{
+    double d = std::fmod(std::fabs(a - b), 360.0);
+    return d > 180 ? 360 - d : d;
+}
 
 double cosPlus(double g) { return g < 90 ? std::cos(g * kDeg) : 0.0; }
 double bump(double x, double mu, double sigma) { return std::exp(-0.5 * (x - mu) * (x - mu) / (sigma * sigma)); }
@@ -66,6 +77,21 @@ const std::map<std::string, Kind>& kinds()
                         double cc = std::cos(c * kDeg);
                         return 0.35 * cosPlus(g) * (1 - 0.3 * (1 - cc * cc)) + bump(g, 140, 12) * (1 + 0.2 * cc * cc);
                     }}},
+        // Stress cases (docs/robust.md): emission in the light's own plane, a
+        // beam narrower than a degree, no mirror symmetry at all.
+        {"grazing", {"stress: wall washer, a fan of light in the light's plane (peak at gamma 90, sigma 10 deg) over a "
+                     "weak cos(gamma) base",
+                     false, [](double c, double g, double) {
+                         return 0.1 * cosPlus(g) + bump(g, 90, 10) * (0.7 + 0.3 * std::pow(std::cos(c * kDeg), 2));
+                     }}},
+        {"pencil", {"stress: pencil spot, Gaussian beam sigma 0.4 deg, measured to gamma 90 deg in 0.05 deg steps",
+                    false, [](double, double g, double) { return bump(g, 0, 0.4); }, 5, 1801, 90.0}},
+        {"quadrant", {"stress: quadrant-asymmetric, cos(gamma)^1.5 aimed into the quadrant C 0 .. 90 (peak at C 45, "
+                      "gamma 35), a tenth elsewhere",
+                      false, [](double c, double g, double) {
+                          return std::pow(cosPlus(g), 1.5) *
+                                 (0.1 + bump(cDistance(c, 45), 0, 30) * (0.4 + bump(g, 35, 15)));
+                      }}},
     };
     return k;
 }
@@ -111,7 +137,7 @@ Table synth(const std::string& kind, const SynthParams& p)
         t = tabulate([&](double c, double g) { return i0 * shape(c, g, n); }, 2, ng, 0, 180);
         t.declaredFluxLm = p.flux; // the closed form, not the table's integral
     } else {
-        t = tabulate([&](double c, double g) { return shape(c, g, n); }, 25, 73, 0, 180);
+        t = tabulate([&](double c, double g) { return shape(c, g, n); }, k.nc, k.ng, 0, k.gammaMax);
         double f = t.fluxLm();
         for (double& v : t.cd) v *= p.flux / f;
         t.declaredFluxLm = p.flux;

@@ -83,6 +83,16 @@ const std::vector<Case>& catalogue()
         add("zero_spot", "vertical spot (nothing at gamma >= 60) above the image", 5, kPi / 2, 1, 1, "spot", Expect::Zero);
         // Extremely narrow spot: sigma 0.5 degrees.
         add("pencil", "extremely narrow spot (Gaussian sigma 0.5 deg, measured to 10 deg)", 1, kPi, 1, 1, "stab:pencil", Expect::Finite, true);
+        // The suite's stress luminaires (luminaires/, docs/robust.md): a fan of
+        // light in the light's own plane seen from that plane, a sub-degree
+        // beam, a quadrant-only distribution tilted, a direct/indirect light
+        // through the receiver plane.
+        add("stress_grazing", "wall washer (peak at gamma 90) seen from the light's plane, h = 0.1, R = pi/2", 0.1,
+            kPi / 2, 1, 1, "grazing", Expect::Finite, false, true);
+        add("stress_pencil", "pencil beam (sigma 0.4 deg) at h = 1.1", 1.1, kPi, 1, 1, "pencil");
+        add("stress_quadrant", "quadrant-asymmetric emission, h = 0.1, R = 3pi/4", 0.1, 3 * kPi / 4, 1, 1, "quadrant");
+        add("stress_updown", "direct/indirect light crossing the receiver plane, h = -0.3, R = 5pi/8", -0.3,
+            5 * kPi / 8, 1, 1, "updown");
         // Degenerate polygons: a clear InputError, never NaN.
         add("coincident", "all four corners coincide (0 x 0)", 1, kPi, 0, 0, "lambert", Expect::Rejected, true);
         add("collinear", "corners collinear (0 x 1)", 1, kPi, 0, 1, "lambert", Expect::Rejected, true);

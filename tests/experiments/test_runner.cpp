@@ -94,7 +94,7 @@ TEST(Experiment, ParsesAndEnumeratesScenesInFileOrder)
     ov.luminaireDir = (fs::path(test::sourceDir()) / "luminaires").string();
     auto e2 = experiments::loadExperiment(d / "e.json", ov);
     EXPECT_EQ(e2.res, 7);
-    EXPECT_EQ(e2.luminaires.size(), 9u);  // the suite's nine, .ldt preferred over the .ies twin
+    EXPECT_EQ(e2.luminaires.size(), 12u);  // the suite's twelve, .ldt preferred over the .ies twin
     for (auto& l : e2.luminaires) EXPECT_EQ(fs::path(l).extension(), ".ldt");
     fs::remove_all(d);
 }

@@ -314,7 +314,8 @@ TEST(Specialize, CubatureRectFanEqualsGeneral)
                            "cubature:normalize=formfactor,weighting=dotout,dynamic=none,corner_inset=0.2",
                            "cubature:blend_dist=1.5", "cubature:blend_dist=0.6,weighting=sample,corner_inset=0.3",
                            "cubature:triangulation=delaunay",
-                           "cubature:triangulation=delaunay,weighting=dotout,normalize=formfactor,dyn_weight=2"};
+                           "cubature:triangulation=delaunay,weighting=dotout,normalize=formfactor,dyn_weight=2",
+                           "cubature:area=gauss2", "cubature:area=gauss3,area_q=0.5,weighting=sample", "robust"};
     // Without double on the device: float against float, 2e-5 (the general
     // float kernel's own error, 8.7e-6, plus the fan's, with margin).
     Precision ref = rt->fp64() ? Precision::Double : Precision::Float;
@@ -465,7 +466,8 @@ TEST(Specialize, CubatureRectDelaunayEqualsGeneral)
     const std::vector<std::string> specs = {d, d + ",weighting=sample", d + ",weighting=dotout",
                                             d + ",corner_inset=0.3,dyn_weight=2", d + ",plane_eps=0.05",
                                             d + ",normalize=formfactor", d + ",blend_dist=1.5",
-                                            d + ",blend_dist=0.6,weighting=sample"};
+                                            d + ",blend_dist=0.6,weighting=sample", d + ",area=gauss2",
+                                            d + ",area=gauss3,area_q=3"};
     Precision ref = rt->fp64() ? Precision::Double : Precision::Float;
     double rel = rt->fp64() ? 1e-6 : 2e-5;
     double worst = 0, worstD = 0, worstGeneral = 0;
@@ -514,7 +516,8 @@ TEST(Specialize, CubatureRectClipEqualsGeneral)
                                             "cubature:blend_dist=1.5",
                                             "cubature:triangulation=delaunay",
                                             "cubature:triangulation=delaunay,dynamic=cp+barycentre",
-                                            "cubature:triangulation=delaunay,dynamic=cp+barycentre,weighting=dotout"};
+                                            "cubature:triangulation=delaunay,dynamic=cp+barycentre,weighting=dotout",
+                                            "cubature:area=gauss2,area_q=0.5", "robust"};
     Precision ref = rt->fp64() ? Precision::Double : Precision::Float;
     double rel = rt->fp64() ? 1e-6 : 2e-5;
     double worst = 0, worstD = 0, worstGeneral = 0;

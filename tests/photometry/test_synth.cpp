@@ -70,6 +70,21 @@ TEST(Synth, CharacterProfilesHaveTheirTraits)
     // Updown: the peak is upward.
     Table u = synth("updown");
     EXPECT_GT(u.intensity(0, 140), 2 * u.intensity(0, 0));
+    // Grazing: the peak lies in the light's plane.
+    Table g = synth("grazing");
+    EXPECT_GT(g.intensity(0, 90), 5 * g.intensity(0, 0));
+    EXPECT_GT(g.intensity(90, 90), 5 * g.intensity(90, 30));
+    // Pencil: half the peak at sigma sqrt(2 ln 2) = 0.47 deg, nothing from 5 deg
+    // on. The 0.05-degree grid
+    // resolves it: linear interpolation of a Gaussian between nodes 0.05 deg
+    // apart is within 0.2 % of it at the half-maximum point.
+    Table p = synth("pencil");
+    EXPECT_NEAR(p.intensity(0, 0.4 * std::sqrt(2 * std::log(2.0))) / p.intensity(0, 0), 0.5, 2e-3);
+    EXPECT_LT(p.intensity(0, 6), 1e-30 * p.intensity(0, 0));  // 6 deg = 15 sigma
+    // Quadrant: the quadrant C 0 .. 90 holds the light, none of the mirror
+    // images of its peak does.
+    Table q = synth("quadrant");
+    for (double c : {135.0, 225.0, 315.0}) EXPECT_GT(q.intensity(45, 35), 5 * q.intensity(c, 35)) << c;
     EXPECT_THROW(synth("nope"), InputError);
 }
 

@@ -1,0 +1,103 @@
+#!/usr/bin/env python3
+"""Tables of docs/robust.md from a results.json (or results.csv) of `lumibench run`.
+
+    plots/robust_table.py RESULTS [--base point] [--out FILE.md]
+
+For every method of the file: in how many scenes its NMSE is below the base
+method's (default point), the geometric mean of NMSE / NMSE(base) per regime
+(far field h >= 1.1; near the light's plane R = pi/2 at h = 0.1; the rest),
+and, where the file has equal-time partners, the share of scenes where the
+method beats MCI at its own measured time. Rows per luminaire follow.
+"""
+import argparse
+import collections
+import json
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from atomic import write_text  # noqa: E402
+
+
+def spec_of(r):
+    if r.get("equal_time_to"):
+        return None
+    p = r.get("params") or {}
+    return r["method"] + ":" + ",".join(f"{k}={p[k]}" for k in sorted(p))
+
+
+def short(spec, defaults):
+    name, _, rest = spec.partition(":")
+    kept = [kv for kv in rest.split(",") if kv and kv not in defaults.get(name, set())]
+    return name + (":" + ",".join(kept) if kept else "")
+
+
+def regime(r):
+    if r["height"] <= 0.11 and abs(r["rotation"] - math.pi / 2) < 1e-6:
+        return "plane (h 0.1, R pi/2)"
+    if r["height"] >= 1.05:
+        return "far (h >= 1.1)"
+    return "near (h 0.1, R > pi/2)"
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("results")
+    ap.add_argument("--base", default="point")
+    ap.add_argument("--out")
+    a = ap.parse_args()
+    recs = json.load(open(a.results))["records"]
+    scene = lambda r: (r["luminaire"], r["height"], r["rotation"])
+    nmse = collections.defaultdict(dict)  # scene -> spec -> nmse
+    eq = collections.defaultdict(dict)    # scene -> target spec -> mci nmse
+    # parameters every spec of a method shares are its defaults here: left out of names
+    by_method = collections.defaultdict(list)
+    for r in recs:
+        s = spec_of(r)
+        if s is None:
+            eq[scene(r)][r["equal_time_to"]] = r["nmse"]
+        else:
+            nmse[scene(r)][s] = r["nmse"]
+            by_method[r["method"]].append(set(s.partition(":")[2].split(",")))
+    defaults = {m: set.intersection(*v) for m, v in by_method.items()}
+    specs = sorted({s for d in nmse.values() for s in d})
+    base = next((s for s in specs if s.split(":")[0] == a.base), None)
+    if base is None:
+        sys.exit(f"robust_table: no records of the base method '{a.base}' in {a.results}")
+    regimes = sorted({regime({"height": k[1], "rotation": k[2]}) for k in nmse})
+    out = ["| method | beats " + a.base + " | " + " | ".join(f"NMSE / {a.base}, {g}" for g in regimes) +
+           " | beats MCI at equal time |", "|---" * (3 + len(regimes)) + "|"]
+    for s in specs:
+        wins = n = 0
+        logs = collections.defaultdict(list)
+        eqw = eqn = 0
+        for k, d in nmse.items():
+            if d.get(s) is None or d.get(base) is None:  # undefined (a black reference)
+                continue
+            n += 1
+            wins += d[s] < d[base]
+            if d[base] > 0 and d[s] > 0:
+                logs[regime({"height": k[1], "rotation": k[2]})].append(math.log(d[s] / d[base]))
+            canon = s.split(":")[0] + ":" + s.split(":", 1)[1] if ":" in s else s
+            for t, m in eq.get(k, {}).items():
+                if t.split(":")[0] == s.split(":")[0] and set(t.partition(":")[2].split(",")) == set(
+                        s.partition(":")[2].split(",")):
+                    if m is not None:
+                        eqn += 1
+                        eqw += d[s] < m
+        cols = [f"{math.exp(sum(v) / len(v)):.3g}" if (v := logs.get(g)) else "-" for g in regimes]
+        out.append(f"| `{short(s, defaults)}` | {wins} / {n} | " + " | ".join(cols) +
+                   (f" | {eqw} / {eqn} |" if eqn else " | - |"))
+    out.append("")
+    out.append("NMSE / " + a.base + ": geometric mean over the scenes of the regime (below 1: better than " +
+               a.base + ").")
+    text = "\n".join(out) + "\n"
+    if a.out:
+        write_text(a.out, text)
+    else:
+        sys.stdout.write(text)
+
+
+if __name__ == "__main__":
+    main()
