@@ -56,7 +56,7 @@ def main():
     for r in recs:
         s = spec_of(r)
         if s is None:
-            eq[scene(r)][r["equal_time_to"]] = r["nmse"]
+            eq[scene(r)][r["equal_time_to"].split(":")[0]] = r["nmse"]
         else:
             nmse[scene(r)][s] = r["nmse"]
             by_method[r["method"]].append(set(s.partition(":")[2].split(",")))
@@ -79,19 +79,38 @@ def main():
             wins += d[s] < d[base]
             if d[base] > 0 and d[s] > 0:
                 logs[regime({"height": k[1], "rotation": k[2]})].append(math.log(d[s] / d[base]))
-            canon = s.split(":")[0] + ":" + s.split(":", 1)[1] if ":" in s else s
-            for t, m in eq.get(k, {}).items():
-                if t.split(":")[0] == s.split(":")[0] and set(t.partition(":")[2].split(",")) == set(
-                        s.partition(":")[2].split(",")):
-                    if m is not None:
-                        eqn += 1
-                        eqw += d[s] < m
+            # the partner of s: same method name, s the scene's only spec of that method
+            same = [t for t in d if t.split(":")[0] == s.split(":")[0]]
+            m = eq.get(k, {}).get(s.split(":")[0]) if same == [s] else None
+            if m is not None:
+                eqn += 1
+                eqw += d[s] < m
         cols = [f"{math.exp(sum(v) / len(v)):.3g}" if (v := logs.get(g)) else "-" for g in regimes]
         out.append(f"| `{short(s, defaults)}` | {wins} / {n} | " + " | ".join(cols) +
                    (f" | {eqw} / {eqn} |" if eqn else " | - |"))
     out.append("")
     out.append("NMSE / " + a.base + ": geometric mean over the scenes of the regime (below 1: better than " +
-               a.base + ").")
+               a.base + "); scenes whose NMSE is undefined (a black reference or method image) left out.")
+    # Per luminaire: scenes won against the base and against MCI at equal time.
+    paired = [s for s in specs if any(s.split(":")[0] in e for e in eq.values())]
+    if paired:
+        out += ["", "| luminaire | " + " | ".join(f"`{short(s, defaults)}` beats {a.base} / beats MCI" for s in paired)
+                + " |", "|---" * (1 + len(paired)) + "|"]
+        for lum in sorted({k[0] for k in nmse}):
+            cells = []
+            for s in paired:
+                w = n = ew = en = 0
+                for k, d in nmse.items():
+                    if k[0] != lum or d.get(s) is None or d.get(base) is None:
+                        continue
+                    n += 1
+                    w += d[s] < d[base]
+                    m = eq.get(k, {}).get(s.split(":")[0])
+                    if m is not None:
+                        en += 1
+                        ew += d[s] < m
+                cells.append(f"{w} / {n}, {ew} / {en}")
+            out.append(f"| {lum} | " + " | ".join(cells) + " |")
     text = "\n".join(out) + "\n"
     if a.out:
         write_text(a.out, text)

@@ -13,7 +13,7 @@
 namespace lb::methods {
 
 // The defaults `robust` changes (docs/robust.md).
-const std::map<std::string, std::string> kRobustDefaults = {{"area", "gauss2"}};
+const std::map<std::string, std::string> kRobustDefaults = {{"area", "gauss3"}};
 
 namespace {
 
@@ -86,9 +86,9 @@ Family cubatureFamily()
                     "rule alone beyond area_q, smoothstep between"),
         // area_sin over the whole range of an elevation's sine.
         Param::real("area_sin", kDefaultAreaSin, 0.0, 1.0, Scale::Linear,
-                    "with area: the cubature alone where the light's closest point is seen at an elevation sin(beta) "
-                    ">= area_sin above the light's plane, the area rule alone below area_sin/2 (0: never by "
-                    "elevation)"),
+                    "with area: the cubature alone where the light's farthest point is seen at an elevation "
+                    "sin(beta) >= area_sin above the light's plane, the area rule alone below area_sin/2 (0: never "
+                    "by elevation)"),
     };
     f.validate = [](const MethodSpec& s) {
         CubatureOptions o = options(s);
