@@ -86,11 +86,13 @@ const std::map<std::string, Kind>& kinds()
                      }}},
         {"pencil", {"stress: pencil spot, Gaussian beam sigma 0.4 deg, measured to gamma 90 deg in 0.05 deg steps",
                     false, [](double, double g, double) { return bump(g, 0, 0.4); }, 5, 1801, 90.0}},
-        {"quadrant", {"stress: quadrant-asymmetric, cos(gamma)^1.5 aimed into the quadrant C 0 .. 90 (peak at C 45, "
-                      "gamma 35), a tenth elsewhere",
+        {"quadrant", {"stress: quadrant-asymmetric, cos(gamma)^1.5 with a lobe aimed into the quadrant C 0 .. 90 (peak "
+                      "near C 45, gamma 35), a tenth elsewhere; the lobe fades as sin^2(gamma) towards the axis, so "
+                      "every C plane agrees at gamma 0",
                       false, [](double c, double g, double) {
+                          double s = std::sin(g * kDeg);
                           return std::pow(cosPlus(g), 1.5) *
-                                 (0.1 + bump(cDistance(c, 45), 0, 30) * (0.4 + bump(g, 35, 15)));
+                                 (0.1 + 3 * s * s * bump(cDistance(c, 45), 0, 30) * bump(g, 35, 15));
                       }}},
     };
     return k;
