@@ -38,3 +38,12 @@ def write_text(path, text):
         with open(tmp, "w") as f:
             f.write(text)
     _write_atomically(path, write)
+
+
+def emit_text(text, path=None):
+    """The Markdown a table script makes: to path (atomically) when given, else to stdout."""
+    if path:
+        write_text(path, text)
+    else:
+        import sys
+        sys.stdout.write(text)

@@ -1,7 +1,12 @@
 #!/usr/bin/env python3
 """Tables of docs/robust.md from a results.json (or results.csv) of `lumibench run`.
 
-    plots/robust_table.py RESULTS [--base point] [--out FILE.md]
+    plots/robust_table.py RESULTS [RESULTS ...] [--base point] [--out FILE.md]
+
+RESULTS: a results directory, results.json[.xz] or results.csv. With more
+than one, the records of a later file replace those of the earlier ones for
+every luminaire the later file holds (e.g. one luminaire rerun with finer
+error images).
 
 For every method of the file: in how many scenes its NMSE is below the base
 method's (default point), the geometric mean of NMSE / NMSE(base) per regime
@@ -11,13 +16,13 @@ method beats MCI at its own measured time. Rows per luminaire follow.
 """
 import argparse
 import collections
-import json
 import math
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from atomic import write_text  # noqa: E402
+from atomic import emit_text  # noqa: E402
+from results_io import load_records  # noqa: E402
 
 
 def spec_of(r):
@@ -43,11 +48,18 @@ def regime(r):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("results")
+    ap.add_argument("results", nargs="+")
     ap.add_argument("--base", default="point")
     ap.add_argument("--out")
     a = ap.parse_args()
-    recs = json.load(open(a.results))["records"]
+    try:
+        recs = []
+        for path in a.results:
+            later = load_records(path)
+            lums = {r["luminaire"] for r in later}
+            recs = [r for r in recs if r["luminaire"] not in lums] + later
+    except (OSError, ValueError) as e:
+        sys.exit(f"robust_table: {e}")
     scene = lambda r: (r["luminaire"], r["height"], r["rotation"])
     nmse = collections.defaultdict(dict)  # scene -> spec -> nmse
     eq = collections.defaultdict(dict)    # scene -> target spec -> mci nmse
@@ -64,7 +76,7 @@ def main():
     specs = sorted({s for d in nmse.values() for s in d})
     base = next((s for s in specs if s.split(":")[0] == a.base), None)
     if base is None:
-        sys.exit(f"robust_table: no records of the base method '{a.base}' in {a.results}")
+        sys.exit(f"robust_table: no records of the base method '{a.base}' in {' '.join(a.results)}")
     regimes = sorted({regime({"height": k[1], "rotation": k[2]}) for k in nmse})
     out = ["| method | beats " + a.base + " | " + " | ".join(f"NMSE / {a.base}, {g}" for g in regimes) +
            " | beats MCI at equal time |", "|---" * (3 + len(regimes)) + "|"]
@@ -111,11 +123,7 @@ def main():
                         ew += d[s] < m
                 cells.append(f"{w} / {n}, {ew} / {en}")
             out.append(f"| {lum} | " + " | ".join(cells) + " |")
-    text = "\n".join(out) + "\n"
-    if a.out:
-        write_text(a.out, text)
-    else:
-        sys.stdout.write(text)
+    emit_text("\n".join(out) + "\n", a.out)
 
 
 if __name__ == "__main__":

@@ -70,22 +70,33 @@ struct CliResult {
     std::string err;  // stderr
 };
 
+// Runs a shell command line; its stdout, and in *code its exit status (-1 if it
+// did not exit normally). Add 2>&1 to the line to capture stderr as well.
+inline std::string shellOutput(const std::string& cmd, int* code)
+{
+    std::string out;
+    *code = -1;
+    std::array<char, 4096> buf;
+    size_t n;
+    if (FILE* p = popen(cmd.c_str(), "r")) {
+        while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
+        int st = pclose(p);
+        *code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+    }
+    return out;
+}
+
 // Runs build/lumibench with `args` (a shell word list), stdout and stderr apart.
 inline CliResult runCli(const std::string& args)
 {
     static std::atomic<int> counter{0};
     auto errFile = std::filesystem::temp_directory_path() /
                    ("lb-cli-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ".err");
-    std::string cmd = std::string(LB_BINARY) + " " + args + " 2>" + errFile.string();
     CliResult r;
-    std::array<char, 4096> buf;
-    size_t n;
-    if (FILE* p = popen(cmd.c_str(), "r")) {
-        while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-        int st = pclose(p);
-        r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-    }
+    r.out = shellOutput(std::string(LB_BINARY) + " " + args + " 2>" + errFile.string(), &r.code);
     if (FILE* f = std::fopen(errFile.c_str(), "r")) {
+        std::array<char, 4096> buf;
+        size_t n;
         while ((n = fread(buf.data(), 1, buf.size(), f)) > 0) r.err.append(buf.data(), n);
         std::fclose(f);
     }

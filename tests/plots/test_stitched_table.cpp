@@ -5,32 +5,17 @@
 
 #include <nlohmann/json.hpp>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <string>
 
-#include <sys/wait.h>
 #include <unistd.h>
 
 namespace lb {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string capture(const std::string& cmd, int* code)
-{
-    std::string out;
-    FILE* f = popen(cmd.c_str(), "r");
-    if (!f) return out;
-    std::array<char, 4096> buf{};
-    while (fgets(buf.data(), buf.size(), f)) out += buf.data();
-    int st = pclose(f);
-    *code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-    return out;
-}
 
 nlohmann::json rec(const std::string& role, const std::string& spec, double R, double nmse, double mref, double mtest)
 {
@@ -60,7 +45,7 @@ TEST(Plots, StitchedTable)
     std::ofstream(dir / "results.json") << nlohmann::json{{"records", recs}}.dump();
     int code = -1;
     std::string script = test::sourceDir() + "/plots/stitched_table.py";
-    std::string out = capture("python3 " + script + " " + (dir / "results.json").string() + " 2>&1", &code);
+    std::string out = test::shellOutput("python3 " + script + " " + (dir / "results.json").string() + " 2>&1", &code);
     EXPECT_EQ(code, 0) << out;
     EXPECT_NE(out.find("| L | 1.1 | 0.625 | 2 (3) |"), std::string::npos) << out;
     // cubature beats MCI (NMSE 1 < 2, 0.5 < 2) in both scenes; one pair missed
@@ -69,7 +54,7 @@ TEST(Plots, StitchedTable)
     // stitched: cubature 0.625 against MCI 2 in the one (luminaire, height) row
     EXPECT_NE(out.find("in 2 of 2 scenes and 1 of 1 stitched rows"), std::string::npos) << out;
     std::ofstream(dir / "bad.json") << "{\"x\": 1}";
-    capture("python3 " + script + " " + (dir / "bad.json").string() + " 2>&1", &code);
+    test::shellOutput("python3 " + script + " " + (dir / "bad.json").string() + " 2>&1", &code);
     EXPECT_NE(code, 0);
     fs::remove_all(dir);
 }
@@ -94,7 +79,7 @@ TEST(Plots, StitchedTableReproducesTheCommittedRuns)
                              "N 2..7 (median 4); pairs outside the tolerance: 20 (86 % within, 100 % within or "
                              "bracketed)"}}) {
         int code = -1;
-        std::string out = capture("python3 " + script + " " + res + r.file + " 2>&1", &code);
+        std::string out = test::shellOutput("python3 " + script + " " + res + r.file + " 2>&1", &code);
         EXPECT_EQ(code, 0) << r.file << "\n" << out;
         EXPECT_NE(out.find(r.sct), std::string::npos) << r.file << "\n" << out;
         EXPECT_NE(out.find(r.voronoi), std::string::npos) << r.file << "\n" << out;
@@ -110,13 +95,13 @@ TEST(Plots, StitchedTableReadsTheCsvAsTheJson)
     const std::string xz = test::sourceDir() + "/experiments/results/thesis-sct-pocl-epyc.json.xz";
     const std::string jsonPath = (dir / "results.json").string();
     int code = -1;
-    capture("xz -dc '" + xz + "' > '" + jsonPath + "'", &code);
+    test::shellOutput("xz -dc '" + xz + "' > '" + jsonPath + "'", &code);
     if (code != 0) GTEST_SKIP() << "no xz to unpack " << xz;
     results::saveCsv(jsonPath, results::load(jsonPath));
     std::string script = test::sourceDir() + "/plots/stitched_table.py";
-    std::string fromJson = capture("python3 " + script + " " + jsonPath + " 2>&1", &code);
+    std::string fromJson = test::shellOutput("python3 " + script + " " + jsonPath + " 2>&1", &code);
     EXPECT_EQ(code, 0) << fromJson;
-    std::string fromCsv = capture("python3 " + script + " " + (dir / "results.csv").string() + " 2>&1", &code);
+    std::string fromCsv = test::shellOutput("python3 " + script + " " + (dir / "results.csv").string() + " 2>&1", &code);
     EXPECT_EQ(code, 0) << fromCsv;
     EXPECT_NE(fromJson.find("cubature: beats its equal-time MCI in 107 of 140"), std::string::npos) << fromJson;
     EXPECT_EQ(fromCsv, fromJson);
