@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 namespace lb::methods {
 
@@ -76,7 +75,6 @@ void registerIndirectReference(Registry& r)
     f.bandRows = 16;
     f.args = {"edir", "grid", "delta", "errout", "splits_out", "rel_tol", "max_splits"};
     f.setArgs = [](LaunchContext& c) {
-        size_t n = static_cast<size_t>(c.res()) * c.res();
         NodeGrid g = nodeGrid(c.spec.num("dir_cell"));
         c.stats["edir_nodes"] = g.nodes;
         c.named["grid"] = intBuffer(c, g.grid);
@@ -85,33 +83,15 @@ void registerIndirectReference(Registry& r)
         c.named["centre"] = c.outputReals(g.cells.back());
         c.named["edir_err"] = c.outputReals(g.nodes);
         c.named["delta"] = c.outputReals(LB_ROOM_NSURF);
-        c.named["err"] = c.outputReals(n);
-        c.named["splits"] = c.outputInts(n);
         c.arg("edir", c.named["edir"]);
         c.arg("grid", c.named["grid"]);
         c.arg("delta", c.named["delta"]);
-        c.arg("errout", c.named["err"]);
-        c.arg("splits_out", c.named["splits"]);
-        c.realArg("rel_tol", c.spec.num("tol"));
-        c.arg("max_splits", static_cast<cl_int>(c.spec.integer("max_splits")));
-        cl::Kernel& nodes = c.pass("edir_nodes");
-        nodes.setArg(0, c.named["P"]);
-        nodes.setArg(1, c.named["lum"]);
-        nodes.setArg(2, c.named["grid"]);
-        nodes.setArg(3, c.named["cells"]);
-        nodes.setArg(4, cl_int(g.nodes));
-        nodes.setArg(5, c.named["edir"]);
-        nodes.setArg(6, c.named["centre"]);
-        nodes.setArg(7, c.named["edir_err"]);
-        ocl::setReal(nodes, 8, c.spec.num("dir_tol"), c.dbl());
-        nodes.setArg(9, static_cast<cl_int>(c.spec.integer("dir_splits")));
-        cl::Kernel& delta = c.pass("edir_delta");
-        delta.setArg(0, c.named["grid"]);
-        delta.setArg(1, c.named["cells"]);
-        delta.setArg(2, c.named["edir"]);
-        delta.setArg(3, c.named["centre"]);
-        delta.setArg(4, c.named["edir_err"]);
-        delta.setArg(5, c.named["delta"]);
+        bindReferenceArgs(c);
+        c.bind(c.pass("edir_nodes"), c.named["P"], c.named["lum"], c.named["grid"], c.named["cells"], cl_int(g.nodes),
+               c.named["edir"], c.named["centre"], c.named["edir_err"], LaunchContext::Real{c.spec.num("dir_tol")},
+               static_cast<cl_int>(c.spec.integer("dir_splits")));
+        c.bind(c.pass("edir_delta"), c.named["grid"], c.named["cells"], c.named["edir"], c.named["centre"],
+               c.named["edir_err"], c.named["delta"]);
         c.stats["edir_points"] = g.nodes + g.cells.back();
     };
     f.prePasses = [](LaunchContext& c) {
@@ -122,15 +102,7 @@ void registerIndirectReference(Registry& r)
         return ev;
     };
     f.finish = [](LaunchContext& c) {
-        size_t n = static_cast<size_t>(c.res()) * c.res();
-        Image err(c.res(), c.res());
-        err.px = c.readReals(c.named.at("err"), n);
-        std::vector<cl_int> splits(n);
-        c.rt.queue().enqueueReadBuffer(c.named.at("splits"), CL_TRUE, 0, n * sizeof(cl_int), splits.data());
-        c.stats["splits_total"] = std::accumulate(splits.begin(), splits.end(), 0L);
-        c.stats["splits_max"] = *std::max_element(splits.begin(), splits.end());
-        c.stats["max_err_est"] = *std::max_element(err.px.begin(), err.px.end());
-        c.extraImages["err"] = std::move(err);
+        finishReference(c);
         // The reflected flux rho int E_dir dA over walls and ceiling by the
         // nodes' Gauss rule.
         NodeGrid g = nodeGrid(c.spec.num("dir_cell"));
@@ -186,14 +158,9 @@ void setupRsm(LaunchContext& c)
 {
     const int T = static_cast<int>(c.spec.integer("rsm"));
     c.named["tex"] = c.outputReals(static_cast<size_t>(kTex) * T * T);
-    cl::Kernel& k = c.pass("rsm");
-    k.setArg(0, c.named["P"]);
-    k.setArg(1, c.named["lum"]);
-    k.setArg(2, c.named["tex"]);
-    k.setArg(3, cl_int(T));
-    ocl::setReal(k, 4, c.spec.num("dir_tol"), c.dbl());
-    k.setArg(5, cl_int(128));
-    ocl::setReal(k, 6, 1e-3, c.dbl());  // the cubature's default plane shift
+    // 128: direct=reference's split budget; 1e-3: the cubature's default plane shift
+    c.bind(c.pass("rsm"), c.named["P"], c.named["lum"], c.named["tex"], cl_int(T),
+           LaunchContext::Real{c.spec.num("dir_tol")}, cl_int(128), LaunchContext::Real{1e-3});
 }
 
 cl::Event launchRsm(LaunchContext& c)
@@ -233,6 +200,24 @@ void finishRsm(LaunchContext& c)
     }
 }
 
+// The passes that draw n texels by flux (row_sums, sample) into the lights
+// buffer `lights` (their indices into "pick").
+void setupSampling(LaunchContext& c, int n, const std::string& lights)
+{
+    const int T = static_cast<int>(c.spec.integer("rsm"));
+    c.named["rowsum"] = c.outputReals(T);
+    c.named["pick"] = c.outputInts(n);
+    c.bind(c.pass("row_sums"), c.named["tex"], cl_int(T), c.named["rowsum"]);
+    c.bind(c.pass("sample"), c.named["tex"], cl_int(T), c.named["rowsum"], cl_int(n), c.named[lights], c.named["pick"]);
+}
+
+void launchSampling(LaunchContext& c, int n, std::vector<StageEvent>& ev)
+{
+    const int T = static_cast<int>(c.spec.integer("rsm"));
+    ev.push_back({"cluster", c.rt.launch1D(c.pass("row_sums"), T, 64)});
+    ev.push_back({"cluster", c.rt.launch1D(c.pass("sample"), n, 64)});
+}
+
 void bindRender(LaunchContext& c, int nlights, double clamp)
 {
     c.stats["lights"] = nlights;
@@ -261,29 +246,15 @@ void registerVpl(Registry& r, const std::string& name)
     f.defines = rsmDefines;
     f.args = {"lights", "nlights", "clamp2"};
     f.setArgs = [](LaunchContext& c) {
-        const int T = static_cast<int>(c.spec.integer("rsm")), n = static_cast<int>(c.spec.integer("n"));
+        const int n = static_cast<int>(c.spec.integer("n"));
         setupRsm(c);
         bindRender(c, n, c.spec.num("clamp"));
-        c.named["rowsum"] = c.outputReals(T);
-        c.named["pick"] = c.outputInts(n);
-        cl::Kernel& rs = c.pass("row_sums");
-        rs.setArg(0, c.named["tex"]);
-        rs.setArg(1, cl_int(T));
-        rs.setArg(2, c.named["rowsum"]);
-        cl::Kernel& sm = c.pass("sample");
-        sm.setArg(0, c.named["tex"]);
-        sm.setArg(1, cl_int(T));
-        sm.setArg(2, c.named["rowsum"]);
-        sm.setArg(3, cl_int(n));
-        sm.setArg(4, c.named["lights"]);
-        sm.setArg(5, c.named["pick"]);
+        setupSampling(c, n, "lights");
     };
     f.prePasses = [](LaunchContext& c) {
-        const int T = static_cast<int>(c.spec.integer("rsm")), n = static_cast<int>(c.spec.integer("n"));
         std::vector<StageEvent> ev;
         ev.push_back({"rsm", launchRsm(c)});
-        ev.push_back({"cluster", c.rt.launch1D(c.pass("row_sums"), T, 64)});
-        ev.push_back({"cluster", c.rt.launch1D(c.pass("sample"), n, 64)});
+        launchSampling(c, static_cast<int>(c.spec.integer("n")), ev);
         return ev;
     };
     f.finish = finishRsm;
@@ -321,22 +292,10 @@ void setupClusters(LaunchContext& c)
     c.rt.queue().enqueueWriteBuffer(c.named["state"], CL_TRUE, 0,
                                     c.dbl() ? zero.size() * sizeof(double) : zf.size() * sizeof(float),
                                     c.dbl() ? static_cast<const void*>(zero.data()) : static_cast<const void*>(zf.data()));
-    cl::Kernel& p = c.pass("km_partial");
-    p.setArg(0, c.named["tex"]);
-    p.setArg(1, cl_int(T));
-    p.setArg(2, c.named["label"]);
-    p.setArg(3, cl_int(K));
-    p.setArg(4, c.named["centres"]);
-    p.setArg(5, c.named["partial"]);
-    cl::Kernel& rd = c.pass("km_reduce");
-    rd.setArg(0, c.named["partial"]);
-    rd.setArg(1, cl_int(T));
-    rd.setArg(2, cl_int(K));
-    rd.setArg(3, c.named["centres"]);
-    rd.setArg(4, c.named["lights"]);
-    rd.setArg(5, c.named["state"]);
-    rd.setArg(6, cl_int(c.spec.name == "acrsm" ? 1 : 0));
-    rd.setArg(7, cl_int(c.spec.str("area") == "sum" ? 0 : 1));
+    c.bind(c.pass("km_partial"), c.named["tex"], cl_int(T), c.named["label"], cl_int(K), c.named["centres"],
+           c.named["partial"]);
+    c.bind(c.pass("km_reduce"), c.named["partial"], cl_int(T), cl_int(K), c.named["centres"], c.named["lights"],
+           c.named["state"], cl_int(c.spec.name == "acrsm" ? 1 : 0), cl_int(c.spec.str("area") == "sum" ? 0 : 1));
 }
 
 void lloydSums(LaunchContext& c, std::vector<StageEvent>& ev)
@@ -360,42 +319,19 @@ void registerKmeans(Registry& r)
     f.args = {"lights", "nlights", "clamp2"};
     f.setArgs = [](LaunchContext& c) {
         const int T = static_cast<int>(c.spec.integer("rsm")), K = static_cast<int>(c.spec.integer("k"));
+        using Real = LaunchContext::Real;
         setupClusters(c);
-        c.named["rowsum"] = c.outputReals(T);
-        c.named["pick"] = c.outputInts(K);
         c.named["seedlights"] = c.outputReals(static_cast<size_t>(kTex) * K);
-        cl::Kernel& rs = c.pass("row_sums");
-        rs.setArg(0, c.named["tex"]);
-        rs.setArg(1, cl_int(T));
-        rs.setArg(2, c.named["rowsum"]);
-        cl::Kernel& sm = c.pass("sample");
-        sm.setArg(0, c.named["tex"]);
-        sm.setArg(1, cl_int(T));
-        sm.setArg(2, c.named["rowsum"]);
-        sm.setArg(3, cl_int(K));
-        sm.setArg(4, c.named["seedlights"]);
-        sm.setArg(5, c.named["pick"]);
-        cl::Kernel& cf = c.pass("centres_from");
-        cf.setArg(0, c.named["tex"]);
-        cf.setArg(1, c.named["pick"]);
-        cf.setArg(2, cl_int(K));
-        cf.setArg(3, c.named["centres"]);
-        cl::Kernel& as = c.pass("km_assign");
-        as.setArg(0, c.named["tex"]);
-        as.setArg(1, cl_int(T));
-        as.setArg(2, c.named["centres"]);
-        as.setArg(3, cl_int(K));
-        ocl::setReal(as, 4, c.spec.num("wx"), c.dbl());
-        ocl::setReal(as, 5, c.spec.num("wn"), c.dbl());
-        ocl::setReal(as, 6, c.spec.num("wb"), c.dbl());
-        as.setArg(7, c.named["label"]);
+        setupSampling(c, K, "seedlights");
+        c.bind(c.pass("centres_from"), c.named["tex"], c.named["pick"], cl_int(K), c.named["centres"]);
+        c.bind(c.pass("km_assign"), c.named["tex"], cl_int(T), c.named["centres"], cl_int(K), Real{c.spec.num("wx")},
+               Real{c.spec.num("wn")}, Real{c.spec.num("wb")}, c.named["label"]);
     };
     f.prePasses = [](LaunchContext& c) {
         const int T = static_cast<int>(c.spec.integer("rsm")), K = static_cast<int>(c.spec.integer("k"));
         std::vector<StageEvent> ev;
         ev.push_back({"rsm", launchRsm(c)});
-        ev.push_back({"cluster", c.rt.launch1D(c.pass("row_sums"), T, 64)});
-        ev.push_back({"cluster", c.rt.launch1D(c.pass("sample"), K, 64)});
+        launchSampling(c, K, ev);
         ev.push_back({"cluster", c.rt.launch1D(c.pass("centres_from"), K, 64)});
         for (long i = 0; i < c.spec.integer("iters"); ++i) {
             ev.push_back({"cluster", c.rt.launch2D(c.pass("km_assign"), T, T, 8, 8)});
@@ -452,53 +388,24 @@ void registerAcrsm(Registry& r)
         c.named["pyr"] = c.outputReals(at);
         c.named["off"] = intBuffer(c, off);
         c.stats["levels"] = levels;
-        cl::Kernel& pb = c.pass("pyr_base");
-        pb.setArg(0, c.named["tex"]);
-        pb.setArg(1, cl_int(T));
-        pb.setArg(2, c.named["pyr"]);
+        c.bind(c.pass("pyr_base"), c.named["tex"], cl_int(T), c.named["pyr"]);
         for (int m = 0; m < levels; ++m) {
             // one kernel object per level: the arguments differ
             cl::Kernel& pd = c.passKernels.emplace(fmt::format("pyr_down{}", m),
                                                    c.rt.kernel(c.family.file, "pyr_down", c.options))
                                  .first->second;
-            pd.setArg(0, c.named["pyr"]);
-            pd.setArg(1, cl_int(off[m]));
-            pd.setArg(2, cl_int(T >> m));
-            pd.setArg(3, cl_int(off[m + 1]));
+            c.bind(pd, c.named["pyr"], cl_int(off[m]), cl_int(T >> m), cl_int(off[m + 1]));
         }
-        const double window = c.spec.num("window") * T;
-        cl::Kernel& ev = c.pass("ac_evaluate");
-        ev.setArg(0, cl_int(K));
-        ev.setArg(1, cl_int(T));
-        ev.setArg(2, c.named["state"]);
-        ev.setArg(3, c.named["centres"]);
-        ev.setArg(4, c.named["lights"]);
-        ev.setArg(5, cl_int(0));
-        ocl::setReal(ev, 6, window, c.dbl());
-        ocl::setReal(ev, 7, c.spec.num("eps_m"), c.dbl());
-        ocl::setReal(ev, 8, c.spec.num("eps_s"), c.dbl());
-        cl::Kernel& sd = c.pass("ac_seed");
-        sd.setArg(0, c.named["tex"]);
-        sd.setArg(1, cl_int(T));
-        sd.setArg(2, c.named["pyr"]);
-        sd.setArg(3, c.named["off"]);
-        sd.setArg(4, cl_int(levels));
-        sd.setArg(5, static_cast<cl_int>(c.spec.integer("warp_stop")));
-        sd.setArg(6, cl_int(K));
-        sd.setArg(7, c.named["state"]);
-        sd.setArg(8, c.named["centres"]);
-        sd.setArg(9, cl_int(0));
-        cl::Kernel& mp = c.pass("ac_map");
-        mp.setArg(0, c.named["tex"]);
-        mp.setArg(1, cl_int(T));
-        mp.setArg(2, c.named["centres"]);
-        mp.setArg(3, c.named["state"]);
-        mp.setArg(4, cl_int(K));
-        ocl::setReal(mp, 5, window, c.dbl());
-        ocl::setReal(mp, 6, c.spec.num("wx"), c.dbl());
-        ocl::setReal(mp, 7, c.spec.num("wn"), c.dbl());
-        ocl::setReal(mp, 8, c.spec.num("wb"), c.dbl());
-        mp.setArg(9, c.named["label"]);
+        using Real = LaunchContext::Real;
+        const Real window{c.spec.num("window") * T};
+        // the frame (argument 5 of ac_evaluate, 9 of ac_seed) is set per launch
+        c.bind(c.pass("ac_evaluate"), cl_int(K), cl_int(T), c.named["state"], c.named["centres"], c.named["lights"],
+               cl_int(0), window, Real{c.spec.num("eps_m")}, Real{c.spec.num("eps_s")});
+        c.bind(c.pass("ac_seed"), c.named["tex"], cl_int(T), c.named["pyr"], c.named["off"], cl_int(levels),
+               static_cast<cl_int>(c.spec.integer("warp_stop")), cl_int(K), c.named["state"], c.named["centres"],
+               cl_int(0));
+        c.bind(c.pass("ac_map"), c.named["tex"], cl_int(T), c.named["centres"], c.named["state"], cl_int(K), window,
+               Real{c.spec.num("wx")}, Real{c.spec.num("wn")}, Real{c.spec.num("wb")}, c.named["label"]);
     };
     f.prePasses = [](LaunchContext& c) {
         const int T = static_cast<int>(c.spec.integer("rsm")), K = static_cast<int>(c.spec.integer("k"));

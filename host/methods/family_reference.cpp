@@ -1,5 +1,6 @@
 // reference: globally adaptive cubature of the area form (kernels/reference.cl),
-// with a per-pixel error estimate; cached on disk by render().
+// with a per-pixel error estimate; cached on disk by render(). Also the
+// arguments and statistics every adaptive reference shares (registry.h).
 #include "methods/registry.h"
 
 #include <algorithm>
@@ -7,38 +8,39 @@
 
 namespace lb::methods {
 
-// The arguments and the finish of an adaptive reference kernel: errout,
-// splits_out, rel_tol (spec "tol"), max_splits; the per-pixel error estimate
-// becomes the extra image "err", the split counts statistics.
+void bindReferenceArgs(LaunchContext& c)
+{
+    size_t n = static_cast<size_t>(c.res()) * c.res();
+    c.named["err"] = c.outputReals(n);
+    c.named["splits"] = c.outputInts(n);
+    c.arg("errout", c.named["err"]);
+    c.arg("splits_out", c.named["splits"]);
+    c.realArg("rel_tol", c.spec.num("tol"));
+    c.arg("max_splits", static_cast<cl_int>(c.spec.integer("max_splits")));
+}
+
+void finishReference(LaunchContext& c)
+{
+    size_t n = static_cast<size_t>(c.res()) * c.res();
+    Image err(c.res(), c.res());
+    err.px = c.readReals(c.named.at("err"), n);
+    std::vector<cl_int> splits(n);
+    c.rt.queue().enqueueReadBuffer(c.named.at("splits"), CL_TRUE, 0, n * sizeof(cl_int), splits.data());
+    c.stats["splits_total"] = std::accumulate(splits.begin(), splits.end(), 0L);
+    c.stats["splits_max"] = *std::max_element(splits.begin(), splits.end());
+    c.stats["pixels_at_budget"] =
+        std::count(splits.begin(), splits.end(), static_cast<cl_int>(c.spec.integer("max_splits")));
+    c.stats["max_err_est"] = *std::max_element(err.px.begin(), err.px.end());
+    c.extraImages["err"] = std::move(err);
+}
+
 void referenceIo(Family& f)
 {
     f.args = {"errout", "splits_out", "rel_tol", "max_splits"};
-    f.setArgs = [](LaunchContext& c) {
-        size_t n = static_cast<size_t>(c.res()) * c.res();
-        c.named["err"] = c.outputReals(n);
-        c.named["splits"] = c.outputInts(n);
-        c.arg("errout", c.named["err"]);
-        c.arg("splits_out", c.named["splits"]);
-        c.realArg("rel_tol", c.spec.num("tol"));
-        c.arg("max_splits", static_cast<cl_int>(c.spec.integer("max_splits")));
-    };
-    f.finish = [](LaunchContext& c) {
-        size_t n = static_cast<size_t>(c.res()) * c.res();
-        cl::Buffer& errB = c.named.at("err");
-        cl::Buffer& splitB = c.named.at("splits");
-        Image err(c.res(), c.res());
-        err.px = c.readReals(errB, n);
-        std::vector<cl_int> splits(n);
-        c.rt.queue().enqueueReadBuffer(splitB, CL_TRUE, 0, n * sizeof(cl_int), splits.data());
-        long total = std::accumulate(splits.begin(), splits.end(), 0L);
-        int maxSplits = *std::max_element(splits.begin(), splits.end());
-        long capped = std::count(splits.begin(), splits.end(), static_cast<cl_int>(c.spec.integer("max_splits")));
-        c.stats["splits_total"] = total;
-        c.stats["splits_max"] = maxSplits;
-        c.stats["pixels_at_budget"] = capped;
-        c.stats["max_err_est"] = *std::max_element(err.px.begin(), err.px.end());
-        c.extraImages["err"] = std::move(err);
-    };
+    f.setArgs = bindReferenceArgs;
+    f.finish = finishReference;
+    f.defines = [](const MethodSpec&) { return std::string(); };
+    f.expensive = true;
 }
 
 void registerReference(Registry& r)
@@ -52,8 +54,6 @@ void registerReference(Registry& r)
         Param::integer("max_splits", 128, 0, 128, Scale::Linear,
                        "cell splits per pixel at most (the store holds 4 + 3 x 128 cells)"),
     };
-    f.defines = [](const MethodSpec&) { return std::string(); };
-    f.expensive = true;
     f.bandRows = 16;
     referenceIo(f);
     r.add(f);

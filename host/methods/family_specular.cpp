@@ -14,8 +14,6 @@
 
 namespace lb::methods {
 
-void referenceIo(Family& f);  // family_reference.cpp
-
 void registerSpecular(Registry& r)
 {
     {
@@ -30,8 +28,6 @@ void registerSpecular(Registry& r)
             Param::integer("max_splits", 160, 0, 160, Scale::Linear,
                            "adaptive cell splits per pixel at most (the store holds 640 cells)"),
         };
-        f.defines = [](const MethodSpec&) { return std::string(); };
-        f.expensive = true;
         f.bandRows = 8;
         referenceIo(f);
         r.add(f);

@@ -98,6 +98,28 @@ struct LaunchContext {
     }
     void realArg(const std::string& name, double value);  // float or double as the program was built
     cl_uint argIndex(const std::string& name) const;
+
+    // A `real` argument of bind(): float or double as the program was built.
+    struct Real {
+        double v;
+    };
+    // Binds a pass kernel's arguments 0, 1, ... in order (buffers, cl_int,
+    // Real{x}); returns the kernel.
+    template <class... A>
+    cl::Kernel& bind(cl::Kernel& k, const A&... a)
+    {
+        cl_uint i = 0;
+        (bindOne(k, i++, a), ...);
+        return k;
+    }
+
+private:
+    template <class T>
+    void bindOne(cl::Kernel& k, cl_uint i, const T& v)
+    {
+        k.setArg(i, v);
+    }
+    void bindOne(cl::Kernel& k, cl_uint i, Real r) { ocl::setReal(k, i, r.v, dbl()); }
 };
 
 struct Family {
@@ -153,6 +175,14 @@ struct Family {
     bool expensive = false;
     int bandRows = 0;
 };
+
+// The adaptive references (family_reference.cpp: the diffuse, specular and
+// indirect scenes'): their kernels take errout, splits_out, rel_tol (spec
+// "tol") and max_splits among Family::args.
+void bindReferenceArgs(LaunchContext& c);  // the per-pixel error and split buffers, the four arguments
+void finishReference(LaunchContext& c);    // extra image "err", the split statistics
+// Both for a kernel whose arguments are just those four; no defines, expensive.
+void referenceIo(Family& f);
 
 // "straight-line" when the kernel built with `defines` is one of the family's
 // straight-line forms, "general" when the family has such forms but this
