@@ -59,71 +59,23 @@ TEST(Ggx, MatchesTextbookFormAndIsReciprocal)
     EXPECT_EQ(f64::lb_ggx_brdf(0, 0, 1, 0.3, 0, -0.1, 0.3), 0.0);
 }
 
-// Directional albedo rho(w_o) = int f_r cos_i dw_i over the half vector h
-// (dw_i = 4 (w_o . h) dw_h): rho = int D G2 (w_o . h) / cos_o dw_h. The lobe
-// is unrolled by tan theta_h = alpha tan psi, psi in [0, pi/2), where
-// D sin theta_h dtheta_h = sin psi cos psi / (pi cos theta_h) dpsi:
-//   rho = (1/pi) int dpsi int dphi sin psi cos psi / cos theta_h G2 (w_o . h) / cos_o,
-// and for each theta_h the azimuths with w_i above the horizon are exactly
-// |phi| <= phimax (cos phi > -cos th_o cos 2 th_h / (sin th_o sin 2 th_h)), so
-// the only kink (G2 -> 0 at the horizon) sits at the inner interval's end;
-// psi is split where phimax leaves pi and reaches 0. Composite 8-point
-// Gauss-Legendre, 64 x 64 panels per piece. Independent of the
-// header's rearranged f_r (G2 from DESIGN 8's tan form) and of the VNDF sampler.
-double albedoQuadrature(double a, double theta)
-{
-    static const double x8[8] = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290, -0.1834346424956498,
-                                 0.1834346424956498,  0.5255324099163290,  0.7966664774136267,  0.9602898564975363};
-    static const double w8[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066458778873, 0.3626837833783620,
-                                 0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
-    glm::dvec3 wo(std::sin(theta), 0, std::cos(theta));
-    auto lambda = [a](glm::dvec3 w) {
-        double t2 = (1 - w.z * w.z) / (w.z * w.z);
-        return (-1 + std::sqrt(1 + a * a * t2)) / 2;
-    };
-    const int panels = 64;
-    double sum = 0;
-    // psi split where phimax leaves pi (theta_h = pi/4 - theta_o/2) and reaches
-    // 0 (theta_h = pi/4 + theta_o/2): the inner range's kinks, as nodes
-    double thetaO = theta;
-    double cuts[4] = {0, std::atan(std::tan(std::max(0.0, M_PI / 4 - thetaO / 2)) / a),
-                      std::atan(std::tan(std::min(M_PI / 2 - 1e-12, M_PI / 4 + thetaO / 2)) / a), M_PI / 2};
-    for (int seg = 0; seg < 3; ++seg)
-    for (int pv = 0; pv < panels; ++pv)
-        for (int iv = 0; iv < 8; ++iv) {
-            double len = cuts[seg + 1] - cuts[seg];
-            if (!(len > 0)) continue;
-            double psi = cuts[seg] + len * (pv + 0.5 + 0.5 * x8[iv]) / panels, wv = 0.5 * len * w8[iv] / panels;
-            double th = std::atan(a * std::tan(psi));
-            double den = std::sin(theta) * std::sin(2 * th), phimax;
-            if (den > 0)
-                phimax = std::acos(std::clamp(-std::cos(theta) * std::cos(2 * th) / den, -1.0, 1.0));
-            else  // normal view (or h along n): w_i.z = cos 2 th_h for every phi
-                phimax = std::cos(2 * th) > 0 ? M_PI : 0.0;
-            double jac = std::sin(psi) * std::cos(psi) / (M_PI * std::cos(th));
-            for (int pp = 0; pp < panels; ++pp)
-                for (int ip = 0; ip < 8; ++ip) {
-                    double phi = phimax * (pp + 0.5 + 0.5 * x8[ip]) / panels, wp = 0.5 * w8[ip] * phimax / panels;
-                    glm::dvec3 h(std::sin(th) * std::cos(phi), std::sin(th) * std::sin(phi), std::cos(th));
-                    double oh = glm::dot(wo, h);
-                    if (oh <= 0) continue;
-                    glm::dvec3 wi = 2 * oh * h - wo;
-                    if (wi.z <= 0) continue;
-                    double g2 = 1 / (1 + lambda(wi) + lambda(wo));
-                    sum += wv * wp * jac * g2 * oh / wo.z;
-                }
-        }
-    return 2 * sum;  // phi in [-phimax, phimax]: symmetric about the plane of w_o
-}
+// Directional albedo rho(w_o) = int f_r cos_i dw_i by the fit's quadrature
+// (ltc::albedo, host/ltc/fit.cpp: Gauss-Legendre over the half vector, the
+// lobe unrolled, psi split at the horizon's kinks) at 64^2 panels, twice the
+// fit's 32. Its integrand is the header's f_r, which
+// MatchesTextbookFormAndIsReciprocal holds to DESIGN's G2 form pointwise
+// (1e-12 relative).
+double albedoQuadrature(double a, double theta) { return ltc::albedo(a, theta, 64); }
 
 TEST(Ggx, EnergyAtMostOneAndAlbedoAgrees)
 {
     // rho <= 1 (no Fresnel: the only loss is G2 and the tail reflected below
-    // the horizon, alpha^2 / (1 + alpha^2) at normal view). The fit's albedo
-    // (ltc::albedo: the same unrolling, written over the header's f_r cos,
-    // 32^2 panels) against this one (64^2 panels, DESIGN's G2). Both split
-    // psi at the kinks; from 32 to 256 panels the values move by < 6e-6
-    // (alpha = 0.02, normal view; < 1e-7 elsewhere): asserted 2e-5.
+    // the horizon, alpha^2 / (1 + alpha^2) at normal view: the GGX normals
+    // within theta_h of n hold tan^2 / (alpha^2 + tan^2) of the projected
+    // measure, and w_i leaves the hemisphere beyond theta_h = pi/4). The
+    // fit's albedo (32^2 panels) converged: from 32 to 256 panels the values
+    // move by < 6e-6 (alpha = 0.02, normal view; < 1e-7 elsewhere): asserted
+    // 2e-5 against 64^2 panels.
     for (double a : kAlphas)
         for (double th : {0.0, 0.5, 1.0, 1.3, 1.5}) {
             double rho = albedoQuadrature(a, th);
