@@ -73,3 +73,22 @@ def load_records(path):
     if not isinstance(recs, list):
         raise ValueError("{}: no 'records' list (not a lumibench results file)".format(path))
     return recs
+
+
+def pooled_nmse(recs):
+    """NMSE of the records' images stitched side by side into one, as
+    lumibench's report pools them (metrics::pooled, host/metrics/metrics.h):
+    each record's SSE = nmse * P * mean_ref * mean_test (thesis Eq. 6.7 solved
+    for the sum) with P its finite pixels (pixels - nonfinite; 1 for records
+    without a pixel count), then
+        NMSE = (sum SSE / sum P) / (mean_ref * mean_test)
+    with the P-weighted means. NaN when either mean is not positive."""
+    p = sr = st = sse = 0.0
+    for r in recs:
+        pi = float(r["pixels"] - r.get("nonfinite", 0)) if "pixels" in r else 1.0
+        p += pi
+        sr += pi * r["mean_ref"]
+        st += pi * r["mean_test"]
+        sse += r["nmse"] * pi * r["mean_ref"] * r["mean_test"]
+    mr, mt = (sr / p, st / p) if p > 0 else (0.0, 0.0)
+    return sse / p / (mr * mt) if mr > 0 and mt > 0 else float("nan")

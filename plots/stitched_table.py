@@ -14,9 +14,9 @@ MCI, and how many equal-time pairs missed the tolerance. Standard library only.
 
 Usage: python3 plots/stitched_table.py DIR/results.json[.xz]|DIR/results.csv|DIR [--methods A,B,...]
 
-(lumibench's own report computes the same quantity for its tables,
-metrics::pooled in host/metrics/metrics.h, weighting each rotation by its
-pixels; for equal pixel counts, as here, the two forms are one.)
+(The quantity is lumibench's own pooled NMSE, metrics::pooled in
+host/metrics/metrics.h, which weights each rotation by its pixels; for equal
+pixel counts, as here, that is the form above: results_io.pooled_nmse.)
 """
 import argparse
 import collections
@@ -25,14 +25,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from results_io import load_records  # noqa: E402
-
-
-def stitched(recs):
-    mse = sum(r["nmse"] * r["mean_ref"] * r["mean_test"] for r in recs) / len(recs)
-    mr = sum(r["mean_ref"] for r in recs) / len(recs)
-    mt = sum(r["mean_test"] for r in recs) / len(recs)
-    return mse / (mr * mt) if mr > 0 and mt > 0 else float("nan")
+from results_io import load_records, pooled_nmse as stitched  # noqa: E402
 
 
 def fmt(x):
