@@ -128,6 +128,9 @@ void registerIndirectReference(Registry& r)
 
 bool powerOfTwo(long n) { return n > 0 && (n & (n - 1)) == 0; }
 
+int rsmSide(const LaunchContext& c) { return static_cast<int>(c.spec.integer("rsm")); }     // texels per side
+int clusterCount(const LaunchContext& c) { return static_cast<int>(c.spec.integer("k")); }  // kmeans, acrsm
+
 std::vector<Param> rsmParams()
 {
     return {
@@ -156,7 +159,7 @@ std::string rsmDefines(const MethodSpec& s)
 // The RSM buffer and its pass kernel, bound.
 void setupRsm(LaunchContext& c)
 {
-    const int T = static_cast<int>(c.spec.integer("rsm"));
+    const int T = rsmSide(c);
     c.named["tex"] = c.outputReals(static_cast<size_t>(kTex) * T * T);
     // 128: direct=reference's split budget; 1e-3: the cubature's default plane shift
     c.bind(c.pass("rsm"), c.named["P"], c.named["lum"], c.named["tex"], cl_int(T),
@@ -165,7 +168,7 @@ void setupRsm(LaunchContext& c)
 
 cl::Event launchRsm(LaunchContext& c)
 {
-    const int T = static_cast<int>(c.spec.integer("rsm"));
+    const int T = rsmSide(c);
     return c.rt.launch2D(c.pass("rsm"), T, T, 8, 8);
 }
 
@@ -173,7 +176,7 @@ cl::Event launchRsm(LaunchContext& c)
 // clusterings, the flux of lit texels no cluster took.
 void finishRsm(LaunchContext& c)
 {
-    const int T = static_cast<int>(c.spec.integer("rsm"));
+    const int T = rsmSide(c);
     auto tex = c.readReals(c.named.at("tex"), static_cast<size_t>(kTex) * T * T);
     double flux = 0;
     for (int i = 0; i < T * T; ++i) flux += tex[kTex * i + 6];
@@ -204,7 +207,7 @@ void finishRsm(LaunchContext& c)
 // buffer `lights` (their indices into "pick").
 void setupSampling(LaunchContext& c, int n, const std::string& lights)
 {
-    const int T = static_cast<int>(c.spec.integer("rsm"));
+    const int T = rsmSide(c);
     c.named["rowsum"] = c.outputReals(T);
     c.named["pick"] = c.outputInts(n);
     c.bind(c.pass("row_sums"), c.named["tex"], cl_int(T), c.named["rowsum"]);
@@ -213,7 +216,7 @@ void setupSampling(LaunchContext& c, int n, const std::string& lights)
 
 void launchSampling(LaunchContext& c, int n, std::vector<StageEvent>& ev)
 {
-    const int T = static_cast<int>(c.spec.integer("rsm"));
+    const int T = rsmSide(c);
     ev.push_back({"cluster", c.rt.launch1D(c.pass("row_sums"), T, 64)});
     ev.push_back({"cluster", c.rt.launch1D(c.pass("sample"), n, 64)});
 }
@@ -279,7 +282,7 @@ std::vector<Param> clusterParams(long k, long iters)
 
 void setupClusters(LaunchContext& c)
 {
-    const int T = static_cast<int>(c.spec.integer("rsm")), K = static_cast<int>(c.spec.integer("k"));
+    const int T = rsmSide(c), K = clusterCount(c);
     setupRsm(c);
     bindRender(c, K, 0.0);
     c.named["centres"] = c.outputReals(static_cast<size_t>(kTex) * K);
@@ -300,7 +303,7 @@ void setupClusters(LaunchContext& c)
 
 void lloydSums(LaunchContext& c, std::vector<StageEvent>& ev)
 {
-    const int T = static_cast<int>(c.spec.integer("rsm")), K = static_cast<int>(c.spec.integer("k"));
+    const int T = rsmSide(c), K = clusterCount(c);
     ev.push_back({"cluster", c.rt.launch2D(c.pass("km_partial"), K, T, 8, 8)});
     ev.push_back({"cluster", c.rt.launch1D(c.pass("km_reduce"), K, 64)});
 }
@@ -318,7 +321,7 @@ void registerKmeans(Registry& r)
     f.defines = rsmDefines;
     f.args = {"lights", "nlights", "clamp2"};
     f.setArgs = [](LaunchContext& c) {
-        const int T = static_cast<int>(c.spec.integer("rsm")), K = static_cast<int>(c.spec.integer("k"));
+        const int T = rsmSide(c), K = clusterCount(c);
         using Real = LaunchContext::Real;
         setupClusters(c);
         c.named["seedlights"] = c.outputReals(static_cast<size_t>(kTex) * K);
@@ -328,7 +331,7 @@ void registerKmeans(Registry& r)
                Real{c.spec.num("wn")}, Real{c.spec.num("wb")}, c.named["label"]);
     };
     f.prePasses = [](LaunchContext& c) {
-        const int T = static_cast<int>(c.spec.integer("rsm")), K = static_cast<int>(c.spec.integer("k"));
+        const int T = rsmSide(c), K = clusterCount(c);
         std::vector<StageEvent> ev;
         ev.push_back({"rsm", launchRsm(c)});
         launchSampling(c, K, ev);
@@ -375,7 +378,7 @@ void registerAcrsm(Registry& r)
     f.args = {"lights", "nlights", "clamp2"};
     f.settleFrames = [](const MethodSpec& s) { return static_cast<int>(s.integer("settle")); };
     f.setArgs = [](LaunchContext& c) {
-        const int T = static_cast<int>(c.spec.integer("rsm")), K = static_cast<int>(c.spec.integer("k"));
+        const int T = rsmSide(c), K = clusterCount(c);
         setupClusters(c);
         int levels = 0;
         while ((1 << levels) < T) ++levels;
@@ -408,7 +411,7 @@ void registerAcrsm(Registry& r)
                Real{c.spec.num("wx")}, Real{c.spec.num("wn")}, Real{c.spec.num("wb")}, c.named["label"]);
     };
     f.prePasses = [](LaunchContext& c) {
-        const int T = static_cast<int>(c.spec.integer("rsm")), K = static_cast<int>(c.spec.integer("k"));
+        const int T = rsmSide(c), K = clusterCount(c);
         const int levels = c.stats["levels"].get<int>();
         std::vector<StageEvent> ev;
         ev.push_back({"rsm", launchRsm(c)});

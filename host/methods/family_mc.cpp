@@ -2,7 +2,7 @@
 #include "methods/registry.h"
 #include "methods/samples.h"
 #include "methods/specialize.h"
-#include "photometry/lut.h"
+#include "methods/straight.h"
 
 namespace lb::methods {
 
@@ -25,9 +25,7 @@ void registerMc(Registry& r)
     f.sceneDefines = [](const MethodSpec& s, const Scene& scene, const photometry::Table& t) {
         return analyse(scene, t, s.str("lookup") == "lut", s.str("specialize") == "auto").defines();
     };
-    f.lumBuffer = [](const MethodSpec& s, const photometry::Table& t) {
-        return s.str("lookup") == "lut" ? photometry::buildLut(t).packed : t.packed();
-    };
+    f.lumBuffer = lookupBuffer;
     f.args = {"st", "n"};
     f.setArgs = [](LaunchContext& c) {
         int n = static_cast<int>(c.spec.integer("n"));

@@ -9,7 +9,7 @@
 #include "ltc/ltc.h"
 #include "methods/registry.h"
 #include "methods/samples.h"
-#include "photometry/lut.h"
+#include "methods/straight.h"
 
 
 namespace lb::methods {
@@ -50,9 +50,7 @@ void registerSpecular(Registry& r)
                           "intensity lookup: the exact bilinear one (docs/specular.md's runs) or the trig-free "
                           "table (photometry/lut.h) that ltc and the diffuse mc use by default"),
         };
-        f.lumBuffer = [](const MethodSpec& s, const photometry::Table& t) {
-            return s.str("lookup") == "lut" ? photometry::buildLut(t).packed : t.packed();
-        };
+        f.lumBuffer = lookupBuffer;
         f.defines = [](const MethodSpec& s) {
             const std::string& m = s.str("sampling");
             std::string d = m == "light" ? std::string() : (m == "vndf" ? "-DLB_SMC_SAMPLING=1" : "-DLB_SMC_SAMPLING=2");
@@ -92,9 +90,7 @@ void registerSpecular(Registry& r)
                           "intensity lookup: trig-free table (photometry/lut.h, as cubature's default) or the exact "
                           "bilinear one"),
         };
-        f.lumBuffer = [](const MethodSpec& s, const photometry::Table& t) {
-            return s.str("lookup") == "lut" ? photometry::buildLut(t).packed : t.packed();
-        };
+        f.lumBuffer = lookupBuffer;
         f.defines = [](const MethodSpec& s) {
             std::string d;
             const std::string& rad = s.str("radiance");

@@ -7,6 +7,11 @@
 
 namespace lb::methods {
 
+std::vector<float> lookupBuffer(const MethodSpec& s, const photometry::Table& t)
+{
+    return s.str("lookup") == "lut" ? photometry::buildLut(t).packed : t.packed();
+}
+
 void addStraightLineOptions(Family& f, const std::string& define, StraightApplies applies)
 {
     f.params.push_back(Param::choice("lookup", "lut", {"lut", "exact"},
@@ -32,9 +37,7 @@ void addStraightLineOptions(Family& f, const std::string& define, StraightApplie
         sp.lut1d = sp.lut && on && photometry::isRotational(t);
         return sp.defines() + (on ? " " + define : std::string());
     };
-    f.lumBuffer = [](const MethodSpec& s, const photometry::Table& t) {
-        return s.str("lookup") == "lut" ? photometry::buildLut(t).packed : t.packed();
-    };
+    f.lumBuffer = lookupBuffer;
     f.lanes = [uses](const MethodSpec& s, const Scene& scene, const photometry::Table&, const ocl::DeviceInfo& dev,
                      Precision p) {
         if (!uses(s, scene) || s.str("lookup") != "lut" || p == Precision::Double) return 1;

@@ -21,6 +21,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace lb::methods {
 
@@ -28,5 +29,10 @@ namespace lb::methods {
 using StraightApplies = std::function<bool(const Scene&, const MethodSpec&)>;
 
 void addStraightLineOptions(Family& f, const std::string& define, StraightApplies applies);
+
+// The `lum` buffer (Family::lumBuffer) of a family with the `lookup`
+// parameter: the trig-free table of photometry/lut.h for lookup=lut, else the
+// exact one. These families (and mc, the specular mc and ltc) use it.
+std::vector<float> lookupBuffer(const MethodSpec& s, const photometry::Table& t);
 
 } // namespace lb::methods
