@@ -12,7 +12,8 @@ grad_nmse (neighbouring-pixel differences, sees bumps and ripples) and FLIP
 
 1. per luminaire and regime (h 0.1: near the light; h >= 1.1: far), each
    method's geometric-mean NMSE and grad_nmse and arithmetic-mean FLIP;
-2. per luminaire, in how many scenes MCI-24, MCI-40 and MCI-eq beat SCT under
+2. per luminaire and regime, SCT's mean error over MCI-24's and MCI-40's, and
+   in how many scenes MCI-24, MCI-40 and MCI-eq beat SCT under
    each metric (the thesis' claim: MCI-24/40 beat SCT in NMSE except on
    PERLUCE, yet show light bumps near the light);
 3. the luminaires ranked by SCT's error under each metric (the paper's claim:
@@ -96,6 +97,27 @@ def means_table(scenes, labels):
     return out
 
 
+def ratio_table(scenes, num, dens):
+    """Per luminaire and regime: num's mean error over each of dens' (the means of means_table),
+    per metric; above 1: num is worse."""
+    out = ["| luminaire | regime | " + " | ".join(f"{num} / {d}: {m}" for d in dens for m in METRICS) + " |",
+           "|---" * (2 + len(dens) * len(METRICS)) + "|"]
+    for lum in sorted({k[0] for k in scenes}):
+        for g in ("h 0.1", "h >= 1.1"):
+            keys = [k for k in scenes if k[0] == lum and regime(k[1]) == g]
+            if not keys:
+                continue
+            cells = []
+            for d in dens:
+                for m in METRICS:
+                    mean = amean if m == "flip" else gmean
+                    a = mean([scenes[k][num].get(m) for k in keys if num in scenes[k]])
+                    b = mean([scenes[k][d].get(m) for k in keys if d in scenes[k]])
+                    cells.append(fmt(a / b) if a is not None and b else "-")
+            out.append(f"| {lum} | {g} | " + " | ".join(cells) + " |")
+    return out
+
+
 def beats_table(scenes, challengers, base, where, title):
     """Per luminaire and metric: in how many scenes (of those where both are defined) a challenger's
     error is below the base's. `where` filters the scenes."""
@@ -162,6 +184,11 @@ def main():
             "Geometric mean over the regime's scenes (NMSE, grad_nmse), arithmetic mean (FLIP).", ""]
     out += means_table(scenes, labels)
     challengers = [c for c in ("MCI-24", "MCI-40", "MCI-eq") if c in labels]
+    if "SCT" in labels and challengers:
+        out += ["", "### SCT's error over MCI's", "",
+                "The means above divided: above 1, SCT is worse. A metric that sees MCI's light bumps "
+                "and not SCT's smooth bias gives a smaller ratio than NMSE near the light.", ""]
+        out += ratio_table(scenes, "SCT", [c for c in challengers if c != "MCI-eq"] or challengers)
     for where, title in ((lambda k: True, "### MCI against SCT, every scene"),
                          (lambda k: k[1] <= 0.11, "### MCI against SCT near the light (h 0.1)")):
         out += [""] + beats_table(scenes, challengers, "SCT", where, title)

@@ -45,6 +45,8 @@ TEST(Plots, VisualClaimsTables)
     EXPECT_NE(out.find("4 scenes: 2 luminaires, heights 0.1, 1.1"), std::string::npos) << out;
     // geometric means of one scene each: the values themselves
     EXPECT_NE(out.find("| A | h 0.1 | grad_nmse | 0.01 | 0.04 |"), std::string::npos) << out;
+    // SCT's mean over MCI-24's at A, h 0.1: NMSE 4 / 1, grad_nmse 0.01 / 0.04, FLIP 0.2 / 0.2
+    EXPECT_NE(out.find("| A | h 0.1 | 4 | 0.25 | 1 |"), std::string::npos) << out;
     // A: MCI-24 below SCT in NMSE 2 / 2, grad_nmse 1 / 2 (only at h 1.1), FLIP 0 / 2 (ties);
     // B: 0 / 2, 2 / 2, 0 / 2. Near the light (h 0.1) only: A 1 / 1, 0 / 1, 0 / 1.
     EXPECT_NE(out.find("| A | 2 / 2 | 1 / 2 | 0 / 2 |"), std::string::npos) << out;
@@ -57,6 +59,22 @@ TEST(Plots, VisualClaimsTables)
     out = test::shellOutput(script + (dir / "bad.json").string() + " 2>&1", &code);
     EXPECT_NE(code, 0) << out;
     fs::remove_all(dir);
+}
+
+// The counts docs/visual-claims.md quotes come from the committed run.
+TEST(Plots, VisualClaimsReproducesTheCommittedRun)
+{
+    int code = -1;
+    std::string out = test::shellOutput("python3 " + test::sourceDir() + "/plots/visual_claims.py " +
+                                            test::sourceDir() + "/experiments/results/visual-claims-pocl-xeon.json.xz 2>&1",
+                                        &code);
+    ASSERT_EQ(code, 0) << out;
+    EXPECT_NE(out.find("28 scenes: 7 luminaires"), std::string::npos) << out;
+    EXPECT_NE(out.find("| **all** | 26 / 28 | 27 / 28 | 26 / 28 | 26 / 28 | 28 / 28 | 25 / 28 | 4 / 28 | 4 / 28 | 5 / 28 |"),
+              std::string::npos)
+        << out;
+    EXPECT_NE(out.find("| ARCOS3 | h 0.1 | 6.63 | 1.26 | 2.22 |"), std::string::npos) << out;
+    EXPECT_NE(out.find("| ARCOS3 | 0.405 (7) | 0.000666 (7) | 0.224 (7) |"), std::string::npos) << out;
 }
 
 } // namespace
