@@ -10,6 +10,7 @@ import csv
 import json
 import lzma
 import os
+import sys
 
 # CSV columns that hold text even when they look like a number.
 TEXT = {"method", "spec", "role", "scene", "luminaire", "precision", "device", "driver", "equal_time_to",
@@ -66,6 +67,9 @@ def load_records(path):
     if path.endswith(".csv"):
         with open(path, newline="") as f:
             return [_record(row) for row in csv.DictReader(f)]
+    if os.path.exists(path + ".journal"):
+        sys.stderr.write("{0}: warning: {0}.journal holds records not yet folded in (a run in progress or "
+                         "interrupted); `lumibench report DIR` folds them in\n".format(path))
     opener = lzma.open if path.endswith(".xz") else open
     with opener(path, "rt") as f:
         doc = json.load(f)

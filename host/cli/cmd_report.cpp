@@ -20,6 +20,7 @@ void addReportCommand(CLI::App& app)
     cmd->add_flag("--no-plots", *noPlots, "Tables only");
     cmd->callback([dir, noPlots] {
         const std::string json = (std::filesystem::path(*dir) / "results.json").string();
+        if (results::exists(json)) results::compact(json, {});  // an interrupted run's journal folded in
         results::saveCsv(json, results::load(json));
         std::string note = *noPlots ? std::string("--no-plots") : experiments::makePlots(*dir);
         if (!note.empty() && !*noPlots) std::cerr << "lumibench: warning: plots not made: " << note << '\n';

@@ -240,7 +240,16 @@ json makeContext(const std::string& device, const std::string& driver, const jso
     return c;
 }
 
-Results load(const std::string& path)
+std::string journalPath(const std::string& path) { return path + ".journal"; }
+
+bool exists(const std::string& path)
+{
+    return std::filesystem::exists(path) || std::filesystem::exists(journalPath(path));
+}
+
+namespace {
+
+Results loadDocument(const std::string& path)
 {
     // 1 GiB: a results file of a million records is ~1 GB; anything larger is not one.
     const std::string text = util::readFile(path, "a results file (JSON)", size_t(1) << 30);
@@ -257,32 +266,128 @@ Results load(const std::string& path)
     }
 }
 
+// Adds the journal's context (where the document has none) and records to doc.
+void foldJournal(const std::string& jpath, Results& doc)
+{
+    const std::string text = util::readFile(jpath, "a results journal (JSON lines)", size_t(1) << 30);
+    size_t begin = 0, line = 0;
+    for (size_t end; (end = text.find('\n', begin)) != std::string::npos; begin = end + 1) {
+        ++line;
+        try {
+            json j = json::parse(text.substr(begin, end - begin));
+            if (j.contains("record"))
+                doc.records.push_back(j.at("record").get<Record>());
+            else if (j.contains("context") && doc.context.empty())
+                doc.context = j.at("context");
+            else if (!j.contains("context"))
+                throw InputError("neither a record nor a context");
+        } catch (const json::exception& e) {
+            throw InputError(fmt::format("{}:{}: not a journal line: {}", jpath, line, e.what()));
+        } catch (const InputError& e) {
+            throw InputError(fmt::format("{}:{}: {}", jpath, line, e.what()));
+        }
+    }
+    // text after the last newline: an append that was cut off, no record
+    dedupe(doc.records);
+}
+
+// Held while a process appends to or compacts a results file: the document
+// is replaced by every save, so a lock on it would not serialise anything.
+struct FileLock {
+    int fd;
+    explicit FileLock(const std::string& path)
+    {
+        const std::string lockPath = path + ".lock";
+        fd = ::open(lockPath.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
+        if (fd < 0) throw Error(fmt::format("{}: cannot open lock file: {}", lockPath, std::strerror(errno)));
+        if (::flock(fd, LOCK_EX) != 0) {
+            int e = errno;
+            ::close(fd);
+            throw Error(fmt::format("{}: cannot lock: {}", lockPath, std::strerror(e)));
+        }
+    }
+    ~FileLock() { ::close(fd); }  // closing releases the flock
+    FileLock(const FileLock&) = delete;
+    FileLock& operator=(const FileLock&) = delete;
+};
+
+uintmax_t sizeOr0(const std::string& path)
+{
+    std::error_code ec;
+    uintmax_t n = std::filesystem::file_size(path, ec);
+    return ec ? 0 : n;
+}
+
+void compactLocked(const std::string& path, const json& context)
+{
+    Results doc;
+    if (exists(path))
+        doc = load(path);
+    else
+        doc.context = context;
+    save(path, doc);  // then removes the journal: after a crash between the two, load folds it again (dedupe)
+}
+
+} // namespace
+
+Results load(const std::string& path)
+{
+    const std::string jpath = journalPath(path);
+    const bool journal = std::filesystem::exists(jpath);
+    Results doc;
+    if (!journal || std::filesystem::exists(path)) doc = loadDocument(path);
+    if (journal) foldJournal(jpath, doc);
+    return doc;
+}
+
 void save(const std::string& path, const Results& doc)
 {
     util::writeFileAtomic(path, json(doc).dump(1) + '\n');
+    std::error_code ec;
+    std::filesystem::remove(journalPath(path), ec);
+    if (ec) throw Error(fmt::format("{}: cannot remove: {}", journalPath(path), ec.message()));
 }
 
 void appendRecord(const std::string& path, const json& context, const Record& r)
 {
-    // An exclusive lock on a side file: the results file itself is replaced by
-    // every save, so a lock on it would not serialise anything.
-    const std::string lockPath = path + ".lock";
-    int fd = ::open(lockPath.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
-    if (fd < 0) throw Error(fmt::format("{}: cannot open lock file: {}", lockPath, std::strerror(errno)));
-    struct Unlock {
+    FileLock lock(path);
+    const std::string jpath = journalPath(path);
+    int fd = ::open(jpath.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
+    if (fd < 0) throw Error(fmt::format("{}: cannot open: {}", jpath, std::strerror(errno)));
+    struct Close {
         int fd;
-        ~Unlock() { ::close(fd); }  // closing releases the flock
-    } unlock{fd};
-    if (::flock(fd, LOCK_EX) != 0) throw Error(fmt::format("{}: cannot lock: {}", lockPath, std::strerror(errno)));
+        ~Close() { ::close(fd); }
+    } closer{fd};
+    auto fail = [&](const char* what) { return Error(fmt::format("{}: cannot {}: {}", jpath, what, std::strerror(errno))); };
+    off_t size = ::lseek(fd, 0, SEEK_END);
+    if (size < 0) throw fail("seek");
+    char last = '\n';
+    if (size > 0 && ::pread(fd, &last, 1, size - 1) != 1) throw fail("read");
+    if (last != '\n') {  // a cut-off append: keep the journal up to its last newline
+        const std::string text = util::readFile(jpath, "a results journal (JSON lines)", size_t(1) << 30);
+        size_t keep = text.rfind('\n');
+        size = keep == std::string::npos ? 0 : off_t(keep + 1);
+        if (::ftruncate(fd, size) != 0) throw fail("truncate");
+    }
+    std::string text;
+    if (size == 0 && !std::filesystem::exists(path)) text = json{{"context", context}}.dump() + '\n';
+    text += json{{"record", json(r)}}.dump() + '\n';
+    for (size_t done = 0; done < text.size();) {
+        ssize_t n = ::pwrite(fd, text.data() + done, text.size() - done, size + off_t(done));
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) throw fail("write");  // a full disk: the part written is cut off by the next append
+        done += size_t(n);
+    }
+    if (::fsync(fd) != 0) throw fail("flush");
+    // Amortised O(1): fold the journal in once it outgrows the document.
+    const uintmax_t journalBytes = uintmax_t(size) + text.size();
+    if (journalBytes > std::max<uintmax_t>(uintmax_t(64) << 10, sizeOr0(path))) compactLocked(path, context);
+}
 
-    Results doc;
-    if (std::filesystem::exists(path))
-        doc = load(path);
-    else
-        doc.context = context;
-    doc.records.push_back(r);
-    dedupe(doc.records);  // replaces a record of the same cell (e.g. an out-of-date one)
-    save(path, doc);
+void compact(const std::string& path, const json& context)
+{
+    FileLock lock(path);
+    compactLocked(path, context);
 }
 
 Results mergeResults(const std::vector<std::string>& paths, MergeStats* stats)

@@ -96,21 +96,42 @@ void from_json(const nlohmann::json& j, Results& d);
 nlohmann::json makeContext(const std::string& device, const std::string& driver,
                            const nlohmann::json& extra = nlohmann::json::object());
 
-// Reads a results file; throws lb::InputError naming the file (and the record
-// index) when it is missing, not JSON or not a results document.
+// A results file is the JSON document at `path` and, while records are being
+// appended, its journal `path`.journal: JSON lines, {"context": {...}} (only
+// when the document did not exist yet) or {"record": {...}}, each ended by a
+// newline and flushed to disk before appendRecord returns. A last line without
+// its newline (an append cut off by a crash or a full disk) is no record: load
+// ignores it and the next append cuts it off.
+std::string journalPath(const std::string& path);
+
+// Whether `path` or its journal exists.
+bool exists(const std::string& path);
+
+// Reads a results file: the document, then the journal's records (dedupe: a
+// journal record replaces the document's of the same cell). Throws
+// lb::InputError naming the file (and the record index or journal line) when
+// both are missing, or either is not JSON or not a results document.
 Results load(const std::string& path);
 
 // Writes `doc` atomically: to a temporary file beside `path`, flushed to disk,
 // then renamed over `path`, so that a reader or an interrupted run sees the
-// old or the new document, never half of one. Throws lb::Error.
+// old or the new document, never half of one; then removes the journal, so
+// that `path` holds exactly `doc`. Throws lb::Error.
 void save(const std::string& path, const Results& doc);
 
 // Adds `r` to the results file at `path` (created with `context` when it does
 // not exist; an existing file keeps its context). A record with the same cell
-// key is replaced, so a re-run cell is not counted twice. Atomic as save(),
-// and serialised with other processes appending to the same file by an
-// exclusive lock on `path`.lock (left in place).
+// key replaces the earlier one on load, so a re-run cell is not counted twice.
+// O(1) per record: one line appended to the journal (amortised: the journal is
+// folded into the document once it outgrows it, and at least 64 KiB).
+// Serialised with other processes appending to the same file by an exclusive
+// lock on `path`.lock (left in place).
 void appendRecord(const std::string& path, const nlohmann::json& context, const Record& r);
+
+// Folds the journal into the document (save(path, load(path))), under the
+// lock; creates the document with `context` and no records when neither
+// exists. A run ends with it, so that other tools read results.json alone.
+void compact(const std::string& path, const nlohmann::json& context);
 
 struct MergeStats {
     size_t files = 0, records_in = 0, records_out = 0, replaced = 0;

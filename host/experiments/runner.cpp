@@ -237,7 +237,7 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
     util::removeStaleTemporaries(opt.outDir);  // left by a killed run
     std::map<std::string, json> doneInputs;     // key -> inputs
     std::map<std::string, double> doneTimes;    // key -> median ms (equal-time targets)
-    if (fs::exists(resultsPath)) {
+    if (results::exists(resultsPath)) {
         for (const auto& r : results::load(resultsPath).records) {
             doneInputs[r.key()] = r.inputs;
             doneTimes[r.key()] = r.time_ms.median;
@@ -506,7 +506,7 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
         }
     }
     sum.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
-    if (!fs::exists(resultsPath)) results::save(resultsPath, results::Results{context, {}});
+    results::compact(resultsPath, context);  // the journal folded in: results.json holds every record
     results::saveCsv(resultsPath, results::load(resultsPath));  // DIR/results.csv, the same records as a table
     return sum;
 }

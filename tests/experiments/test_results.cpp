@@ -1,11 +1,14 @@
 // The results JSON document: round trip, atomic append, merge.
 #include "experiments/report.h"
 #include "experiments/results.h"
+#include "testutil.h"
 #include "util/error.h"
+#include "util/fileio.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -13,6 +16,7 @@
 #include <string>
 
 #include <sys/wait.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace lb {
@@ -206,6 +210,76 @@ TEST_F(Results, AppendCreatesAddsAndReplacesByKey)
     EXPECT_EQ(d.records[0].error.nmse, 3.0);
     EXPECT_EQ(d.records[1].error.nmse, 2.0);
     EXPECT_EQ(strays(), 0);
+}
+
+// Appending does not rewrite the document: one journal line per record, so
+// a run of n cells costs O(n), not O(n^2). The document of 2000 records stays
+// untouched (same inode and size) by the next append; load sees all 2001.
+TEST_F(Results, AppendWritesOneJournalLineNotTheDocument)
+{
+    const std::string p = file("big.json");
+    results::Results doc{json{{"device", "x"}}, {}};
+    for (int i = 0; i < 2000; ++i) doc.records.push_back(cell("mc", 0.001 * (i + 1), i));
+    results::save(p, doc);
+    struct stat before {};
+    ASSERT_EQ(stat(p.c_str(), &before), 0);
+    results::appendRecord(p, json::object(), cell("point", 0.1, 7.0));
+    struct stat after {};
+    ASSERT_EQ(stat(p.c_str(), &after), 0);
+    EXPECT_EQ(before.st_ino, after.st_ino);
+    EXPECT_EQ(before.st_size, after.st_size);
+    const std::string journal = util::readFile(results::journalPath(p), "journal", 1 << 20);
+    EXPECT_EQ(std::count(journal.begin(), journal.end(), '\n'), 1) << journal;  // no context line: the document has it
+    auto d = results::load(p);
+    ASSERT_EQ(d.records.size(), 2001u);
+    EXPECT_EQ(d.records.back().method, "point");
+    // compact folds it in: the document alone holds every record, the journal is gone
+    results::compact(p, json::object());
+    EXPECT_FALSE(fs::exists(results::journalPath(p)));
+    EXPECT_EQ(json::parse(util::readFile(p, "results", 1 << 26))["records"].size(), 2001u);
+    EXPECT_EQ(strays(), 0);
+}
+
+// The journal is folded into the document once it outgrows it (and 64 KiB):
+// appends stay amortised O(1) and results.json is never far behind.
+TEST_F(Results, JournalIsFoldedInOnceItOutgrowsTheDocument)
+{
+    const std::string p = file("grow.json");
+    for (int i = 0; i < 400; ++i) results::appendRecord(p, json{{"device", "x"}}, cell("mc", 0.01 * (i + 1), i));
+    ASSERT_TRUE(fs::exists(p));  // 400 lines of ~500 bytes exceed 64 KiB: folded in at least once
+    const auto docBytes = fs::file_size(p);
+    const auto journalBytes = fs::exists(results::journalPath(p)) ? fs::file_size(results::journalPath(p)) : 0;
+    EXPECT_LE(journalBytes, std::max<uintmax_t>(64 << 10, docBytes) + 2048);
+    auto d = results::load(p);
+    EXPECT_EQ(d.records.size(), 400u);
+    EXPECT_EQ(d.context["device"], "x");
+}
+
+// An append cut off by a crash or a full disk leaves a line without its
+// newline: no record on load, cut off by the next append. A broken complete
+// line is an error naming the journal and the line.
+TEST_F(Results, CutOffJournalLineIsNoRecord)
+{
+    const std::string p = file("torn.json");
+    results::appendRecord(p, json{{"device", "x"}}, cell("mc", 0.1, 1.0));
+    results::appendRecord(p, json::object(), cell("mc", 1.1, 2.0));
+    {
+        std::ofstream j(results::journalPath(p), std::ios::app);
+        j << "{\"record\": {\"method\": \"mc\", \"par";
+    }
+    auto d = results::load(p);
+    ASSERT_EQ(d.records.size(), 2u);
+    EXPECT_EQ(d.context["device"], "x");  // from the journal's context line: no document yet
+    results::appendRecord(p, json::object(), cell("mc", 3.1, 3.0));
+    d = results::load(p);
+    ASSERT_EQ(d.records.size(), 3u);
+    EXPECT_EQ(d.records[2].error.nmse, 3.0);
+    {
+        std::ofstream j(results::journalPath(p), std::ios::app);
+        j << "{\"recor\": 1}\n";
+    }
+    std::string msg = test::inputErrorOf([&] { results::load(p); });
+    EXPECT_NE(msg.find(results::journalPath(p) + ":5:"), std::string::npos) << msg;  // context, 3 records, then it
 }
 
 TEST_F(Results, ConcurrentAppendsLoseNothing)
