@@ -115,25 +115,12 @@ LB_FN real lb_val_irradiance(real3 x, real3 nx, real3 c, real3 nc, real phi, rea
 
 /* ---- E_dir on the surfaces for the converged bounce: each surface k is cut
  * into gs x gt cells (grid[3k], grid[3k+1]), each with the 4 x 4
- * Gauss-Legendre nodes of area_ref.h; E_dir at node (is, it) of surface k is
+ * Gauss-Legendre nodes of adaptive.h; E_dir at node (is, it) of surface k is
  * edir[grid[3k+2] + it * 4 gs + is] (is, it the node's column and row over
  * the whole surface). Between the nodes E_dir is the cell's bicubic Lagrange
  * interpolant through its 16 nodes (exact for constants; for the smooth parts
  * of E_dir of order h^4). */
 #define LB_BOUNCE_GRID 15 /* ints in grid[]: (gs, gt, first node) per surface */
-
-/* 4-point Gauss-Legendre nodes and weights on [0, 1] (the same as area_ref.h's
- * lb_gl_x/w, here as functions: no __constant arrays on the host). */
-LB_FN real lb_gl4_x(int i)
-{
-    return i == 0 ? R(0.0694318442029737124)
-                  : (i == 1 ? R(0.330009478207571868) : (i == 2 ? R(0.669990521792428132) : R(0.930568155797026288)));
-}
-
-LB_FN real lb_gl4_w(int i)
-{
-    return (i == 0 || i == 3) ? R(0.173927422568726929) : R(0.326072577431273071);
-}
 
 /* Lagrange basis polynomial i through the 4 Gauss nodes, at u in [0, 1]. */
 LB_FN real lb_gl4_lagrange(int i, real u)
@@ -200,10 +187,13 @@ LB_FN real lb_bounce_rule(__global const real* edir, __global const int* grid, i
     return q * hs * ht * length(a) * length(b);
 }
 
-/* Value (sum over the 4 children) and error estimate of a cell whose own rule is q. */
-LB_FN real lb_bounce_refine(__global const real* edir, __global const int* grid, int k, real3 x, real3 nx, real s0,
-                            real t0, real hs, real ht, real q, real* err)
+/* Value (the rule summed over the cell's 4 children) and error estimate
+ * (|rule on the cell - that sum|) of the cell [s0, s0 + hs] x [t0, t0 + ht]
+ * of surface k. */
+LB_FN real lb_bounce_cell(__global const real* edir, __global const int* grid, int k, real3 x, real3 nx, real s0,
+                          real t0, real hs, real ht, real* err)
 {
+    real q = lb_bounce_rule(edir, grid, k, x, nx, s0, t0, hs, ht);
     real a = R(0.5) * hs, b = R(0.5) * ht;
     real v = lb_bounce_rule(edir, grid, k, x, nx, s0, t0, a, b) + lb_bounce_rule(edir, grid, k, x, nx, s0 + a, t0, a, b) +
              lb_bounce_rule(edir, grid, k, x, nx, s0, t0 + b, a, b) +
@@ -230,7 +220,7 @@ LB_FN int lb_bounce_init_cells(int k, int* ns, int* nt)
  * have albedo rho and direct irradiance edir (the node grid above):
  *   E_ind(x) = (rho / pi) sum_k int_k E_dir(y) cos_x cos_y / r^2 dA(y),
  * by globally adaptive cubature over the five surfaces together (the cell of
- * the largest error estimate is split, as in area_ref.h), until the summed
+ * the largest error estimate is split: adaptive.h), until the summed
  * estimate is <= rel_tol E_ind or max_splits splits are spent. *err gets the
  * quadrature's error estimate (lux), *splits the splits made. The error of
  * E_dir's interpolation is the caller's (lb_bounce_interp_err). */
@@ -240,59 +230,30 @@ LB_FN real lb_bounce_irradiance(__global const real* edir, __global const int* g
     int ck[LB_BOUNCE_CELLS];
     real cs[LB_BOUNCE_CELLS], ct[LB_BOUNCE_CELLS], chs[LB_BOUNCE_CELLS], cht[LB_BOUNCE_CELLS], cv[LB_BOUNCE_CELLS],
         ce[LB_BOUNCE_CELLS];
-    int n = 0;
-    real total = R(0), toterr = R(0);
+    lb_adapt c = lb_adapt_store(ck, cs, ct, chs, cht, cv, ce, LB_BOUNCE_CELLS);
     for (int k = 0; k < LB_ROOM_NSURF; ++k) {
         int ns, nt;
         lb_bounce_init_cells(k, &ns, &nt);
         for (int j = 0; j < nt; ++j)
             for (int i = 0; i < ns; ++i) {
-                if (n >= LB_BOUNCE_MAXINIT)
+                if (c.n >= LB_BOUNCE_MAXINIT)
                     break;
                 real hs = R(1) / (real)ns, ht = R(1) / (real)nt;
                 real s0 = hs * (real)i, t0 = ht * (real)j;
-                real q = lb_bounce_rule(edir, grid, k, x, nx, s0, t0, hs, ht);
                 real e;
-                real v = lb_bounce_refine(edir, grid, k, x, nx, s0, t0, hs, ht, q, &e);
-                ck[n] = k; cs[n] = s0; ct[n] = t0; chs[n] = hs; cht[n] = ht; cv[n] = v; ce[n] = e;
-                ++n;
-                total += v;
-                toterr += e;
+                real v = lb_bounce_cell(edir, grid, k, x, nx, s0, t0, hs, ht, &e);
+                lb_adapt_add(&c, k, s0, t0, hs, ht, v, e);
             }
     }
-    int splits = 0;
-    int budget = LB_IMIN(max_splits, LB_BOUNCE_MAXSPLITS);
-    while (toterr > rel_tol * fabs(total) && n + 3 <= LB_BOUNCE_CELLS && splits < budget) {
-        int m = 0;
-        for (int i = 1; i < n; ++i)
-            if (ce[i] > ce[m])
-                m = i;
-        if (!(ce[m] > R(0)))
-            break;
-        int k = ck[m];
-        real s0 = cs[m], t0 = ct[m], hs = R(0.5) * chs[m], ht = R(0.5) * cht[m];
-        total -= cv[m];
-        toterr -= ce[m];
-        for (int q4 = 0; q4 < 4; ++q4) {
-            real s = s0 + ((q4 & 1) ? hs : R(0)), t = t0 + ((q4 & 2) ? ht : R(0));
-            real q = lb_bounce_rule(edir, grid, k, x, nx, s, t, hs, ht);
-            real e;
-            real v = lb_bounce_refine(edir, grid, k, x, nx, s, t, hs, ht, q, &e);
-            int slot = q4 == 0 ? m : n++;
-            ck[slot] = k; cs[slot] = s; ct[slot] = t; chs[slot] = hs; cht[slot] = ht; cv[slot] = v; ce[slot] = e;
-            total += v;
-            toterr += e;
-        }
-        ++splits;
+    while (lb_adapt_next(&c, rel_tol, LB_IMIN(max_splits, LB_BOUNCE_MAXSPLITS))) {
+        real e;
+        real v = lb_bounce_cell(edir, grid, c.k, x, nx, c.s, c.t, c.hs, c.ht, &e);
+        lb_adapt_put(&c, v, e);
     }
-    total = R(0);
-    toterr = R(0);
-    for (int i = 0; i < n; ++i) {
-        total += cv[i];
-        toterr += ce[i];
-    }
+    *splits_made = c.splits;
+    real toterr;
+    real total = lb_adapt_sum(&c, &toterr);
     *err = rho / LB_PI * toterr;
-    *splits_made = splits;
     return rho / LB_PI * total;
 }
 

@@ -11,6 +11,7 @@
 #include "voronoi.h"
 #include "ggx.h"
 #include "ltc.h"
+#include "adaptive.h"
 #include "specref.h"
 /* The point-sample baselines' straight-line forms, one pixel per call (they
  * use rect_lanes.inc's sample and triangle helpers, instantiated by

@@ -2,7 +2,7 @@
  * 8): the area form
  *   L_s(x, w_o) = (1/A) int_light I(d) f_r(w, w_o) max(0, n_x . w) / r^2 dA
  *              = int_[0,1]^2 g(s, t) ds dt
- * by globally adaptive cubature (the scheme of kernels/reference.cl: cells
+ * by globally adaptive cubature (adaptive.h, the scheme of area_ref.h: cells
  * with a 4x4 Gauss-Legendre rule summed over their 4 children, error =
  * |parent rule - children|, the worst cell split until the summed error is
  * <= rel_tol |L_s|), with a first mesh that finds the peaks.
@@ -54,25 +54,14 @@ LB_FN real lb_sref_g(__global const float* lum, const lb_sref_ctx* c, real s, re
     return lb_intensity_local(lum, lb_to_light_frame(c->L, -w)) * f * cz / r2;
 }
 
-/* 4-point Gauss-Legendre nodes and weights on [0, 1]. */
-LB_FN real lb_sref_glx(int i)
-{
-    return i == 0 ? R(0.0694318442029737124)
-                  : (i == 1 ? R(0.330009478207571868) : (i == 2 ? R(0.669990521792428132) : R(0.930568155797026288)));
-}
-LB_FN real lb_sref_glw(int i)
-{
-    return (i == 0 || i == 3) ? R(0.173927422568726929) : R(0.326072577431273071);
-}
-
 LB_FN real lb_sref_rule(__global const float* lum, const lb_sref_ctx* c, real s0, real t0, real h)
 {
     real q = R(0);
     for (int j = 0; j < 4; ++j) {
         real row = R(0);
         for (int i = 0; i < 4; ++i)
-            row += lb_sref_glw(i) * lb_sref_g(lum, c, s0 + h * lb_sref_glx(i), t0 + h * lb_sref_glx(j));
-        q += lb_sref_glw(j) * row;
+            row += lb_gl4_w(i) * lb_sref_g(lum, c, s0 + h * lb_gl4_x(i), t0 + h * lb_gl4_x(j));
+        q += lb_gl4_w(j) * row;
     }
     return q * h * h;
 }
@@ -163,42 +152,18 @@ LB_FN real lb_specular_reference(__global const float* lum, lb_light L, real3 x,
             ch[slot] = hh;
         }
     }
-    real total = R(0), toterr = R(0);
+    lb_adapt a = lb_adapt_store(0, cs, ct, ch, ch, cv, ce, LB_SREF_CELLS);
     for (int k = 0; k < n; ++k) {
-        cv[k] = lb_sref_refine(lum, &c, cs[k], ct[k], ch[k], &ce[k]);
-        total += cv[k];
-        toterr += ce[k];
+        real e;
+        real v = lb_sref_refine(lum, &c, cs[k], ct[k], ch[k], &e);
+        lb_adapt_add(&a, 0, cs[k], ct[k], ch[k], ch[k], v, e);
     }
-    int sp = 0;
-    while (toterr > rel_tol * fabs(total) && n + 3 <= LB_SREF_CELLS && sp < max_splits) {
-        int k = 0;
-        for (int i = 1; i < n; ++i)
-            if (ce[i] > ce[k])
-                k = i;
-        if (!(ce[k] > R(0)))
-            break;
-        real s0 = cs[k], t0 = ct[k], hh = R(0.5) * ch[k];
-        total -= cv[k];
-        toterr -= ce[k];
-        for (int q4 = 0; q4 < 4; ++q4) {
-            real s = s0 + ((q4 & 1) ? hh : R(0)), t = t0 + ((q4 & 2) ? hh : R(0));
-            real e;
-            real v = lb_sref_refine(lum, &c, s, t, hh, &e);
-            int slot = q4 == 0 ? k : n++;
-            cs[slot] = s; ct[slot] = t; ch[slot] = hh; cv[slot] = v; ce[slot] = e;
-            total += v;
-            toterr += e;
-        }
-        ++sp;
+    while (lb_adapt_next(&a, rel_tol, max_splits)) {
+        real e;
+        real v = lb_sref_refine(lum, &c, a.s, a.t, a.hs, &e);
+        lb_adapt_put(&a, v, e);
     }
-    total = R(0);
-    toterr = R(0);
-    for (int i = 0; i < n; ++i) {
-        total += cv[i];
-        toterr += ce[i];
-    }
-    *err = toterr;
-    *splits = sp;
-    *cells = n;
-    return total;
+    *splits = a.splits;
+    *cells = a.n;
+    return lb_adapt_sum(&a, err);
 }

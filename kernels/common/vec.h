@@ -8,6 +8,7 @@
  *   - literals through R(x) so that float code never silently promotes to
  *     double; vectors built with R3(x, y, z);
  *   - functions declared LB_FN; names are unique (OpenCL C has no overloads);
+ *   - tables of constants declared LB_CONSTANT (__constant in OpenCL C);
  *   - only the OpenCL built-ins that GLM / <cmath> also provide under the same
  *     name: dot, cross, normalize, length, clamp, mix, sqrt, fabs, fmin, fmax,
  *     atan2, acos, asin, sin, cos, floor, ceil, copysign;
@@ -32,6 +33,7 @@ typedef float3 real3;
 #endif
 
 #define LB_FN static inline
+#define LB_CONSTANT __constant
 #define R3(x, y, z) ((real3)((x), (y), (z)))
 #define R2(x, y) ((real2)((x), (y)))
 #define LB_IMIN(a, b) min((a), (b))
@@ -40,6 +42,7 @@ typedef float3 real3;
 #else /* C++ host: the includer has defined real, real2, real3 and LB_REAL_IS_DOUBLE */
 
 #define LB_FN inline
+#define LB_CONSTANT static const
 #define R3(x, y, z) (real3((x), (y), (z)))
 #define R2(x, y) (real2((x), (y)))
 #define LB_IMIN(a, b) ((a) < (b) ? (a) : (b))
