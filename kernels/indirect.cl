@@ -175,18 +175,23 @@ LB_FN real ind_metric(__global const real* c, __global const real* t, real wx, r
            wn * (R(1) - fabs(c[3] * t[3] + c[4] * t[4] + c[5] * t[5])) + wb * (bs > R(0) ? fabs(c[6] - b) / bs : R(0));
 }
 
-__kernel void km_assign(__global const real* tex, int T, __global const real* centres, int K, real wx, real wn,
-                        real wb, __global int* label)
+/* The centre nearest (Eq. 4.4) to texel (i, j) of the T x T map, -1 when
+ * the texel is unlit or no centre qualifies. With a state (acrsm) only the
+ * active centres (state[2] == 0) whose window of `window` texels (side)
+ * holds the texel qualify (Eq. 4.5); kmeans passes none: every centre. */
+LB_FN int ind_nearest(__global const real* tex, int T, int i, int j, __global const real* centres,
+                      __global const real* state, int K, real window, real wx, real wn, real wb)
 {
-    int i = get_global_id(0), j = get_global_id(1);
-    if (i >= T || j >= T)
-        return;
-    int idx = j * T + i;
-    __global const real* t = tex + IND_TEX * idx;
+    __global const real* t = tex + IND_TEX * (j * T + i);
     int best = -1;
     if (t[6] > R(0)) {
-        real bm = R(0);
+        real bm = R(0), hw = R(0.5) * window, x = (real)i + R(0.5), y = (real)j + R(0.5);
         for (int k = 0; k < K; ++k) {
+            if (state) {
+                __global const real* s = state + IND_TEX * k;
+                if (s[2] != R(0) || fabs(x - s[0]) > hw || fabs(y - s[1]) > hw)
+                    continue;
+            }
             real m = ind_metric(centres + IND_TEX * k, t, wx, wn, wb);
             if (best < 0 || m < bm) {
                 bm = m;
@@ -194,7 +199,16 @@ __kernel void km_assign(__global const real* tex, int T, __global const real* ce
             }
         }
     }
-    label[idx] = best;
+    return best;
+}
+
+__kernel void km_assign(__global const real* tex, int T, __global const real* centres, int K, real wx, real wn,
+                        real wb, __global int* label)
+{
+    int i = get_global_id(0), j = get_global_id(1);
+    if (i >= T || j >= T)
+        return;
+    label[j * T + i] = ind_nearest(tex, T, i, j, centres, 0, K, R(0), wx, wn, wb);
 }
 
 /* Sums of cluster k over texel row j (K x T work-items). */
@@ -416,23 +430,7 @@ __kernel void ac_map(__global const real* tex, int T, __global const real* centr
     int i = get_global_id(0), j = get_global_id(1);
     if (i >= T || j >= T)
         return;
-    int idx = j * T + i;
-    __global const real* t = tex + IND_TEX * idx;
-    int best = -1;
-    if (t[6] > R(0)) {
-        real bm = R(0), hw = R(0.5) * window, x = (real)i + R(0.5), y = (real)j + R(0.5);
-        for (int k = 0; k < K; ++k) {
-            __global const real* s = state + IND_TEX * k;
-            if (s[2] != R(0) || fabs(x - s[0]) > hw || fabs(y - s[1]) > hw)
-                continue;
-            real m = ind_metric(centres + IND_TEX * k, t, wx, wn, wb);
-            if (best < 0 || m < bm) {
-                bm = m;
-                best = k;
-            }
-        }
-    }
-    label[idx] = best;
+    label[j * T + i] = ind_nearest(tex, T, i, j, centres, state, K, window, wx, wn, wb);
 }
 
 #define IND_AC_MAXK 1024
@@ -506,10 +504,8 @@ __kernel void ac_evaluate(int K, int T, __global real* state, __global const rea
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
                      __global const real* lights, int nlights, real clamp2)
 {
-    int col = get_global_id(0);
-    int row = row0 + (int)get_global_id(1);
-    int res = (int)P[LB_P_RES];
-    if (col >= res || row >= res)
+    int col, row, res;
+    if (!lb_work_item_pixel(P, row0, &col, &row, &res))
         return;
     real3 x = lb_pixel_position(P, row, col);
     real3 nx = lb_p3(P, LB_P_NX);

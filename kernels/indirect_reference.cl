@@ -95,10 +95,8 @@ __kernel void render(__global const real* P, __global const float* lum, __global
                      __global const real* edir, __global const int* grid, __global const real* delta,
                      __global real* errout, __global int* splits_out, real rel_tol, int max_splits)
 {
-    int col = get_global_id(0);
-    int row = row0 + (int)get_global_id(1);
-    int res = (int)P[LB_P_RES];
-    if (col >= res || row >= res)
+    int col, row, res;
+    if (!lb_work_item_pixel(P, row0, &col, &row, &res))
         return;
     real3 x = lb_pixel_position(P, row, col);
     real3 nx = lb_p3(P, LB_P_NX);

@@ -28,10 +28,8 @@
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
                      __global real* errout, __global int* splits_out, real rel_tol, int max_splits)
 {
-    int col = get_global_id(0);
-    int row = row0 + (int)get_global_id(1);
-    int res = (int)P[LB_P_RES];
-    if (col >= res || row >= res)
+    int col, row, res;
+    if (!lb_work_item_pixel(P, row0, &col, &row, &res))
         return;
     real err;
     int splits;

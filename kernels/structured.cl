@@ -35,10 +35,8 @@ __kernel void render(__global const real* P, __global const float* lum, __global
 
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0)
 {
-    int col = get_global_id(0);
-    int row = row0 + (int)get_global_id(1);
-    int res = (int)P[LB_P_RES];
-    if (col >= res || row >= res)
+    int col, row, res;
+    if (!lb_work_item_pixel(P, row0, &col, &row, &res))
         return;
     lb_light L = lb_scene_light(P);
     real3 x = lb_pixel_position(P, row, col);

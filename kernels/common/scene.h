@@ -73,6 +73,18 @@ LB_FN real3 lb_pixel_position(__global const real* P, int row, int col)
               R(0));
 }
 
+#ifdef __OPENCL_C_VERSION__
+/* The one-pixel kernels' work-item set-up: its pixel (col, row) of rows
+ * row0 .. of the res x res image; 0 when it has none (a partial last group). */
+LB_FN int lb_work_item_pixel(__global const real* P, int row0, int* col, int* row, int* res)
+{
+    *col = (int)get_global_id(0);
+    *row = row0 + (int)get_global_id(1);
+    *res = (int)P[LB_P_RES];
+    return *col < *res && *row < *res;
+}
+#endif
+
 /* Direction d (world) expressed in the luminaire's photometric frame (u, v, n). */
 LB_FN real3 lb_to_light_frame(lb_light L, real3 d)
 {
