@@ -58,14 +58,14 @@ inline std::string sharedDir()
     return std::filesystem::is_directory(p / "luminaires") ? p.string() : std::string();
 }
 
-#define LB_REQUIRE_SHARED(dir)                                   \
-    std::string dir = ::lb::test::sharedDir();                   \
+#define LB_REQUIRE_SHARED(dir)                 \
+    std::string dir = ::lb::test::sharedDir(); \
     if (dir.empty()) GTEST_SKIP() << "../shared is not present";
 
 inline std::string sourceDir() { return LB_SOURCE_DIR; }
 
 struct CliResult {
-    int code = -1;    // exit status, -1 if the program did not exit normally
+    int code = -1;  // exit status, -1 if the program did not exit normally
     std::string out;  // stdout
     std::string err;  // stderr
 };
@@ -91,7 +91,7 @@ inline CliResult runCli(const std::string& args)
 {
     static std::atomic<int> counter{0};
     auto errFile = std::filesystem::temp_directory_path() /
-                   ("lb-cli-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ".err");
+        ("lb-cli-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ".err");
     CliResult r;
     r.out = shellOutput(std::string(LB_BINARY) + " " + args + " 2>" + errFile.string(), &r.code);
     if (FILE* f = std::fopen(errFile.c_str(), "r")) {
@@ -125,4 +125,4 @@ inline std::string inputErrorOf(const std::function<void()>& f)
     return "(no error)";
 }
 
-} // namespace lb::test
+}  // namespace lb::test

@@ -101,7 +101,7 @@ std::vector<std::string> benchSpecs(bool quick)
     return v;
 }
 
-} // namespace
+}  // namespace
 
 nlohmann::json run(ocl::Runtime& rt, const photometry::Table& table, const Scene& scene0, const Options& opt)
 {
@@ -201,9 +201,8 @@ nlohmann::json run(ocl::Runtime& rt, const photometry::Table& table, const Scene
         verify = b.mc(neq);
     }
     double cr = cub / mc8;
-    doc["cubature"] = {{"time_ms", cub},   {"mc8_ms", mc8},        {"ratio", cr},        {"target", 1.0},
-                       {"ok", cr <= 1.0},  {"equal_time_n", neq},  {"verify_ms", verify},
-                       {"fit_n", fitN}};
+    doc["cubature"] = {{"time_ms", cub},  {"mc8_ms", mc8},       {"ratio", cr},         {"target", 1.0},
+                       {"ok", cr <= 1.0}, {"equal_time_n", neq}, {"verify_ms", verify}, {"fit_n", fitN}};
 
     // 5. The fair-equal-time goals: every variant in its fastest form before
     // its verdict. Each ratio from its own alternating rounds (Bench::ratio).
@@ -221,8 +220,13 @@ nlohmann::json run(ocl::Runtime& rt, const photometry::Table& table, const Scene
                    Goal{"np / cp", "np", "cp", 2.0}, Goal{"mrp / cp", "mrp", "cp", 2.0},
                    Goal{"cubature / mc 8", "cubature", "mc:n=8", 1.0}}) {
         double r = b.ratio(g.num, g.den);
-        goals.push_back({{"name", g.name}, {"numerator", g.num}, {"denominator", g.den}, {"ratio", r},
-                         {"rounds", std::max(opt.reps, 11)}, {"target", g.target}, {"ok", r <= g.target}});
+        goals.push_back({{"name", g.name},
+                         {"numerator", g.num},
+                         {"denominator", g.den},
+                         {"ratio", r},
+                         {"rounds", std::max(opt.reps, 11)},
+                         {"target", g.target},
+                         {"ok", r <= g.target}});
     }
     doc["goals"] = goals;
 
@@ -269,8 +273,8 @@ nlohmann::json run(ocl::Runtime& rt, const photometry::Table& table, const Scene
             pa.setLocal(opt.lx, opt.ly);
             pb.setLocal(opt.lx, opt.ly);
             int rounds = std::max(opt.reps, 11);
-            auto t = rt.timeInterleaved(
-                {[&] { return pa.launch(0, sp.res); }, [&] { return pb.launch(0, scene.res); }}, rounds, 1);
+            auto t = rt.timeInterleaved({[&] { return pa.launch(0, sp.res); }, [&] { return pb.launch(0, scene.res); }},
+                                        rounds, 1);
             std::vector<double> q;
             for (size_t i = 0; i < t[0].samples_ms.size(); ++i) q.push_back(t[0].samples_ms[i] / t[1].samples_ms[i]);
             rows.push_back({{"numerator", "ltc (specular scene)"},
@@ -313,7 +317,8 @@ std::string format(const nlohmann::json& d)
     if (d.contains("goals"))
         for (const auto& g : d["goals"])
             o << fmt::format("{:<36} {:>6.2f} (target <= {:g}: {})\n", g["name"].get<std::string>(),
-                             g["ratio"].get<double>(), g["target"].get<double>(), g["ok"].get<bool>() ? "met" : "MISSED");
+                             g["ratio"].get<double>(), g["target"].get<double>(),
+                             g["ok"].get<bool>() ? "met" : "MISSED");
     if (d.contains("indirect")) {
         o << fmt::format("indirect scene ({}): ms total = rsm + cluster + eval\n",
                          d["indirect"]["scene"].get<std::string>());
@@ -331,4 +336,4 @@ std::string format(const nlohmann::json& d)
     return o.str();
 }
 
-} // namespace lb::bench
+}  // namespace lb::bench

@@ -18,10 +18,10 @@ namespace lb::bench {
 struct Options {
     int res = 512;
     int reps = 5;
-    int samples = 32;     // N of the samples/s comparison (naive vs fast MC)
-    int rounds = 3;       // alternating naive / fast rounds (median of each)
-    size_t lx = 8, ly = 8; // local size
-    bool quick = false;   // fewer methods and MC fit points (tests)
+    int samples = 32;  // N of the samples/s comparison (naive vs fast MC)
+    int rounds = 3;  // alternating naive / fast rounds (median of each)
+    size_t lx = 8, ly = 8;  // local size
+    bool quick = false;  // fewer methods and MC fit points (tests)
 };
 
 // Runs the benchmark; returns the JSON document `bench --json` prints:
@@ -35,4 +35,4 @@ nlohmann::json run(ocl::Runtime& rt, const photometry::Table& table, const Scene
 // Human-readable table of run()'s document.
 std::string format(const nlohmann::json& doc);
 
-} // namespace lb::bench
+}  // namespace lb::bench

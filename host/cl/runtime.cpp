@@ -24,6 +24,7 @@ namespace fs = std::filesystem;
 std::string errorString(cl_int code)
 {
     const char* s = "unknown OpenCL error";
+    // clang-format off
     switch (code) {
 #define E(x) case x: s = #x; break;
         E(CL_SUCCESS) E(CL_DEVICE_NOT_FOUND) E(CL_DEVICE_NOT_AVAILABLE) E(CL_COMPILER_NOT_AVAILABLE)
@@ -49,6 +50,7 @@ std::string errorString(cl_int code)
     case -1001: s = "CL_PLATFORM_NOT_FOUND_KHR (no OpenCL platform: is pocl-opencl-icd installed?)"; break;
     default: break;
     }
+    // clang-format on
     return fmt::format("{} ({})", s, code);
 }
 
@@ -67,7 +69,7 @@ std::vector<DeviceInfo> listDevices()
     try {
         cl::Platform::get(&platforms);
     } catch (const cl::Error& e) {
-        if (e.err() == -1001) return out; // no ICD: an empty list, not a crash
+        if (e.err() == -1001) return out;  // no ICD: an empty list, not a crash
         throw;
     }
     for (auto& p : platforms) {
@@ -75,7 +77,7 @@ std::vector<DeviceInfo> listDevices()
         try {
             p.getDevices(CL_DEVICE_TYPE_ALL, &devs);
         } catch (const cl::Error&) {
-            continue; // a platform without devices
+            continue;  // a platform without devices
         }
         for (auto& d : devs) {
             DeviceInfo i;
@@ -88,7 +90,7 @@ std::vector<DeviceInfo> listDevices()
             i.type = typeName(d.getInfo<CL_DEVICE_TYPE>());
             i.fp64 = d.getInfo<CL_DEVICE_EXTENSIONS>().find("cl_khr_fp64") != std::string::npos;
             i.pocl = i.platform.find("Portable Computing Language") != std::string::npos ||
-                     i.version.find("PoCL") != std::string::npos;
+                i.version.find("PoCL") != std::string::npos;
             i.computeUnits = d.getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>();
             i.globalMem = d.getInfo<CL_DEVICE_GLOBAL_MEM_SIZE>();
             i.device = d;
@@ -101,8 +103,7 @@ std::vector<DeviceInfo> listDevices()
 int chooseDevice(int requested)
 {
     auto devs = listDevices();
-    if (devs.empty())
-        throw Error("no OpenCL device found (install pocl-opencl-icd: scripts/install-deps.sh)");
+    if (devs.empty()) throw Error("no OpenCL device found (install pocl-opencl-icd: scripts/install-deps.sh)");
     int idx = requested;
     std::string from = "--device";
     if (idx < 0) {
@@ -110,7 +111,8 @@ int chooseDevice(int requested)
             char* end = nullptr;
             long v = std::strtol(env, &end, 10);
             if (*end != '\0' || v < 0)
-                throw InputError(fmt::format("LUMIBENCH_DEVICE={}: expected a device index (see `lumibench devices`)", env));
+                throw InputError(
+                    fmt::format("LUMIBENCH_DEVICE={}: expected a device index (see `lumibench devices`)", env));
             idx = static_cast<int>(v);
             from = "LUMIBENCH_DEVICE";
         }
@@ -121,8 +123,8 @@ int chooseDevice(int requested)
         return 0;
     }
     if (idx >= static_cast<int>(devs.size()))
-        throw InputError(fmt::format("{} {}: only {} device(s) available (see `lumibench devices`)", from, idx,
-                                     devs.size()));
+        throw InputError(
+            fmt::format("{} {}: only {} device(s) available (see `lumibench devices`)", from, idx, devs.size()));
     return idx;
 }
 
@@ -211,7 +213,8 @@ cl::Program& Runtime::program(const std::string& file, const std::string& option
 {
     fs::path path = fs::path(kernelDir()) / file;
     std::string src = readFile(path);
-    std::string key = file + '\n' + options + '\n' + headerDigest_ + '\n' + std::to_string(std::hash<std::string>{}(src));
+    std::string key =
+        file + '\n' + options + '\n' + headerDigest_ + '\n' + std::to_string(std::hash<std::string>{}(src));
     if (auto it = cache_.find(key); it != cache_.end()) return it->second;
 
     // PoCL splits options at spaces and keeps quotes: the kernel path must not contain spaces.
@@ -300,4 +303,4 @@ void setReal(cl::Kernel& k, cl_uint idx, double v, bool dbl)
         k.setArg(idx, static_cast<float>(v));
 }
 
-} // namespace lb::ocl
+}  // namespace lb::ocl

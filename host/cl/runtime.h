@@ -23,13 +23,13 @@ constexpr int kMaxReps = 1000;
 std::string errorString(cl_int code);
 
 struct DeviceInfo {
-    int index = 0;           // position in listDevices(): what --device takes
-    std::string platform;    // platform name
-    std::string name;        // device name
+    int index = 0;  // position in listDevices(): what --device takes
+    std::string platform;  // platform name
+    std::string name;  // device name
     std::string vendor;
-    std::string version;     // device OpenCL version
-    std::string driver;      // driver version
-    std::string type;        // CPU, GPU, ACCELERATOR
+    std::string version;  // device OpenCL version
+    std::string driver;  // driver version
+    std::string type;  // CPU, GPU, ACCELERATOR
     bool fp64 = false;
     bool pocl = false;
     cl_uint computeUnits = 0;
@@ -107,4 +107,4 @@ private:
 // Sets a kernel argument of type `real`: float or double as the program was built.
 void setReal(cl::Kernel& k, cl_uint idx, double v, bool dbl);
 
-} // namespace lb::ocl
+}  // namespace lb::ocl

@@ -28,11 +28,13 @@ void addBenchCommand(CLI::App& app)
     auto* cmd = app.add_subcommand("bench", "Benchmark the kernels against a naive MC kernel");
     cmd->add_option("--luminaire", o->luminaire, "IES or LDT file or short name")->capture_default_str();
     cmd->add_option("--height", o->height, "Height h of the light (m, 0 .. 1e4)")->capture_default_str();
-    cmd->add_option("--rotation", o->rotation, "Rotation R (radians in 0 .. 2pi, or e.g. 3pi/4)")->capture_default_str();
+    cmd->add_option("--rotation", o->rotation, "Rotation R (radians in 0 .. 2pi, or e.g. 3pi/4)")
+        ->capture_default_str();
     cmd->add_option("--res", o->res, "Image resolution N (1 .. 16384)")->capture_default_str();
     cmd->add_option("--reps", o->reps, "Timed launches after one warm-up (median; 1 .. 1000)")->capture_default_str();
     cmd->add_option("--samples", o->samples, "MC N of the samples/s comparison (1 .. 2^20)")->capture_default_str();
-    cmd->add_option("--rounds", o->rounds, "Alternating naive / fast rounds (median of each; 1 .. 1000)")->capture_default_str();
+    cmd->add_option("--rounds", o->rounds, "Alternating naive / fast rounds (median of each; 1 .. 1000)")
+        ->capture_default_str();
     cmd->add_option("--local", o->local, "Work-group size WxH")->capture_default_str();
     cmd->add_option("--device", o->device, "OpenCL device index >= 0 (lumibench devices)");
     cmd->add_flag("--quick", o->quick, "Fewer methods and fit points (smoke tests)");
@@ -69,4 +71,4 @@ void addBenchCommand(CLI::App& app)
     });
 }
 
-} // namespace lb::cli
+}  // namespace lb::cli

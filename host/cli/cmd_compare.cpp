@@ -29,7 +29,7 @@ namespace {
 struct CompareArgs {
     std::string ref, test, png;
     bool json = false;
-    double k = 0;      // 0: default 1 / mean(reference)
+    double k = 0;  // 0: default 1 / mean(reference)
     double bound = 0;  // 0: UEB and |LEB|
 };
 
@@ -95,25 +95,29 @@ void runCompare(const CompareArgs& a)
                                  num(j["bound_over"].get<double>()), num(j["bound_under"].get<double>()));
 }
 
-} // namespace
+}  // namespace
 
 void addCompareCommand(CLI::App& app)
 {
-    auto* cmd = app.add_subcommand(
-        "compare",
-        "Error metrics (NMSE, NRMSE, relMSE, UEB, LEB, grad_nmse, FLIP) of TEST.exr against REFERENCE.exr, and pictures");
+    auto* cmd = app.add_subcommand("compare",
+                                   "Error metrics (NMSE, NRMSE, relMSE, UEB, LEB, grad_nmse, FLIP) of TEST.exr against "
+                                   "REFERENCE.exr, and pictures");
     auto a = std::make_shared<CompareArgs>();
     cmd->add_option("reference", a->ref, "Reference image (OpenEXR, channel Y, lux)")->required();
     cmd->add_option("test", a->test, "Test image of the same size")->required();
-    cmd->add_flag("--json", a->json, "Print one JSON object (nmse, nrmse, relmse, ueb, leb, nonfinite, pixels, "
-                                     "mean_ref, mean_test, grad_nmse, grad_pairs, flip, ...) instead of a table; "
-                                     "flip is null when flip-evaluator cannot be imported");
-    cmd->add_option("--png", a->png, "Write PREFIX_ref.png, PREFIX_test.png (tone mapped) and PREFIX_err.png "
-                                     "(orange too bright, blue too dark, white no error, magenta non-finite)");
-    cmd->add_option("--k", a->k, "Tone-mapping scale: display L/(1+L) of L = k E (default 1/mean(reference); "
-                                 "give one k to every row of a figure; positive and finite)");
-    cmd->add_option("--bound", a->bound, "Error (lux) at which the error picture saturates on both sides "
-                                         "(default UEB for orange, |LEB| for blue; positive and finite)");
+    cmd->add_flag("--json", a->json,
+                  "Print one JSON object (nmse, nrmse, relmse, ueb, leb, nonfinite, pixels, "
+                  "mean_ref, mean_test, grad_nmse, grad_pairs, flip, ...) instead of a table; "
+                  "flip is null when flip-evaluator cannot be imported");
+    cmd->add_option("--png", a->png,
+                    "Write PREFIX_ref.png, PREFIX_test.png (tone mapped) and PREFIX_err.png "
+                    "(orange too bright, blue too dark, white no error, magenta non-finite)");
+    cmd->add_option("--k", a->k,
+                    "Tone-mapping scale: display L/(1+L) of L = k E (default 1/mean(reference); "
+                    "give one k to every row of a figure; positive and finite)");
+    cmd->add_option("--bound", a->bound,
+                    "Error (lux) at which the error picture saturates on both sides "
+                    "(default UEB for orange, |LEB| for blue; positive and finite)");
     cmd->callback([a, cmd] {
         // Any positive finite value; the bounds only keep nan, inf and 0 out.
         if (cmd->count("--k")) util::checkRange("--k", a->k, 1e-300, 1e300);
@@ -122,4 +126,4 @@ void addCompareCommand(CLI::App& app)
     });
 }
 
-} // namespace lb::cli
+}  // namespace lb::cli

@@ -12,8 +12,9 @@ namespace lb::cli {
 
 void addDevicesCommand(CLI::App& app)
 {
-    auto* cmd = app.add_subcommand("devices", "List OpenCL devices; the index is what --device and "
-                                              "$LUMIBENCH_DEVICE take (default: the first PoCL device)");
+    auto* cmd = app.add_subcommand("devices",
+                                   "List OpenCL devices; the index is what --device and "
+                                   "$LUMIBENCH_DEVICE take (default: the first PoCL device)");
     auto json = std::make_shared<bool>(false);
     cmd->add_flag("--json", *json, "Print a JSON array instead of a table");
     cmd->callback([json] {
@@ -22,9 +23,16 @@ void addDevicesCommand(CLI::App& app)
         if (*json) {
             nlohmann::json a = nlohmann::json::array();
             for (auto& d : devs)
-                a.push_back({{"index", d.index}, {"platform", d.platform}, {"name", d.name}, {"vendor", d.vendor},
-                             {"version", d.version}, {"driver", d.driver}, {"type", d.type}, {"fp64", d.fp64},
-                             {"compute_units", d.computeUnits}, {"global_mem_bytes", d.globalMem},
+                a.push_back({{"index", d.index},
+                             {"platform", d.platform},
+                             {"name", d.name},
+                             {"vendor", d.vendor},
+                             {"version", d.version},
+                             {"driver", d.driver},
+                             {"type", d.type},
+                             {"fp64", d.fp64},
+                             {"compute_units", d.computeUnits},
+                             {"global_mem_bytes", d.globalMem},
                              {"default", d.index == def}});
             std::cout << a.dump(2) << '\n';
             return;
@@ -41,4 +49,4 @@ void addDevicesCommand(CLI::App& app)
     });
 }
 
-} // namespace lb::cli
+}  // namespace lb::cli

@@ -27,22 +27,26 @@ void printCell(const ltc::Table& t, int i, int j, void* user)
                  t.theta(j), c.norm, c.error, c.l1);
 }
 
-} // namespace
+}  // namespace
 
 void addLtcCommand(CLI::App& app)
 {
-    auto* cmd = app.add_subcommand("ltc", "The LTC table of the specular scene (Heitz et al. 2016 fit, data/ltc/ggx.json)");
+    auto* cmd =
+        app.add_subcommand("ltc", "The LTC table of the specular scene (Heitz et al. 2016 fit, data/ltc/ggx.json)");
     cmd->require_subcommand(1);
 
-    auto* fit = cmd->add_subcommand("fit", "Fit the LTC table (deterministic) and write it; prints the fit error per cell");
+    auto* fit =
+        cmd->add_subcommand("fit", "Fit the LTC table (deterministic) and write it; prints the fit error per cell");
     auto o = std::make_shared<ltc::FitOptions>();
     auto out = std::make_shared<std::string>();
     auto quiet = std::make_shared<bool>(false);
     fit->add_option("--out", *out, "table file to write (JSON)")->required();
     fit->add_option("--size", o->size, "cells per side (roughness x view angle)")->check(CLI::Range(2, 1024));
     fit->add_option("--samples", o->samples, "sample grid per side of the fit error")->check(CLI::Range(4, 1024));
-    fit->add_option("--norm-panels", o->normPanels, "Gauss-Legendre panels per side of the albedo")->check(CLI::Range(4, 1024));
-    fit->add_option("--max-eval", o->maxEval, "Nelder-Mead evaluations per cell at most")->check(CLI::Range(10, 100000));
+    fit->add_option("--norm-panels", o->normPanels, "Gauss-Legendre panels per side of the albedo")
+        ->check(CLI::Range(4, 1024));
+    fit->add_option("--max-eval", o->maxEval, "Nelder-Mead evaluations per cell at most")
+        ->check(CLI::Range(10, 100000));
     fit->add_option("--power", o->power, "exponent of the fit error (Heitz et al.: 3)")->check(CLI::Range(1.0, 4.0));
     fit->add_flag("--quiet", *quiet, "no per-cell lines");
     fit->callback([o, out, quiet] {
@@ -54,8 +58,8 @@ void addLtcCommand(CLI::App& app)
             worst = std::max(worst, c.l1);
             mean += c.l1;
         }
-        fmt::print("wrote {} ({} x {} cells); relative L1 fit error: mean {:.4f}, max {:.4f}\n", *out, o->size,
-                   o->size, mean / t.cells.size(), worst);
+        fmt::print("wrote {} ({} x {} cells); relative L1 fit error: mean {:.4f}, max {:.4f}\n", *out, o->size, o->size,
+                   mean / t.cells.size(), worst);
     });
 
     auto* info = cmd->add_subcommand("info", "Summary of an LTC table file (default: the committed one)");
@@ -70,9 +74,9 @@ void addLtcCommand(CLI::App& app)
             mean += c.l1;
         }
         fmt::print("{}: {} x {} cells, samples {}, norm panels {}; relative L1 fit error mean {:.4f}, max {:.4f}\n",
-                   path, t.options.size, t.options.size, t.options.samples, t.options.normPanels,
-                   mean / t.cells.size(), worst);
+                   path, t.options.size, t.options.size, t.options.samples, t.options.normPanels, mean / t.cells.size(),
+                   worst);
     });
 }
 
-} // namespace lb::cli
+}  // namespace lb::cli

@@ -42,10 +42,14 @@ nlohmann::json summary(const Table& t)
     if (t.format == "ies") {
         photometry::IesExtra x;
         photometry::readIes(t.source, &x);
-        j["ies"] = {{"version", x.version},         {"tilt", x.tilt},
-                    {"lamps", x.lamps},             {"lamp_lumens", x.lampLumens},
-                    {"multiplier", x.multiplier},   {"ballast_factor", x.ballastFactor},
-                    {"ballast_lamp_factor", x.ballastLampFactor}, {"input_watts", x.inputWatts}};
+        j["ies"] = {{"version", x.version},
+                    {"tilt", x.tilt},
+                    {"lamps", x.lamps},
+                    {"lamp_lumens", x.lampLumens},
+                    {"multiplier", x.multiplier},
+                    {"ballast_factor", x.ballastFactor},
+                    {"ballast_lamp_factor", x.ballastLampFactor},
+                    {"input_watts", x.inputWatts}};
     }
     return j;
 }
@@ -59,7 +63,7 @@ double angleArg(const std::string& s, const char* what)
     return v;
 }
 
-} // namespace
+}  // namespace
 
 void addLuminaireCommand(CLI::App& app)
 {
@@ -97,7 +101,8 @@ void addLuminaireCommand(CLI::App& app)
         }
     });
 
-    auto* dump = cmd->add_subcommand("dump", "The unfolded table (C, gamma, cd) and the summary as JSON (plots/polar.py)");
+    auto* dump =
+        cmd->add_subcommand("dump", "The unfolded table (C, gamma, cd) and the summary as JSON (plots/polar.py)");
     auto dfile = std::make_shared<std::string>();
     dump->add_option("file", *dfile, "IES or LDT file")->required();
     dump->add_flag("--json", "JSON output (the only format)");
@@ -120,7 +125,8 @@ void addLuminaireCommand(CLI::App& app)
     syn->add_option("--out", *out, "Output file, FILE.ldt or FILE.ies (default: print the summary only)");
     syn->add_option("--flux", params->flux, "Luminous flux in lm")->capture_default_str();
     syn->add_option("--n", params->n, "Phong exponent")->capture_default_str();
-    syn->add_option("--gamma-step", params->gammaStep, "Gamma step in degrees of the exact profiles")->capture_default_str();
+    syn->add_option("--gamma-step", params->gammaStep, "Gamma step in degrees of the exact profiles")
+        ->capture_default_str();
     syn->callback([kind, out, params] {
         Table t = photometry::synth(*kind, *params);
         if (!out->empty()) {
@@ -138,4 +144,4 @@ void addLuminaireCommand(CLI::App& app)
     });
 }
 
-} // namespace lb::cli
+}  // namespace lb::cli

@@ -26,12 +26,14 @@ void addMergeCommand(CLI::App& app)
     };
     auto o = std::make_shared<Opts>();
     auto* cmd = app.add_subcommand(
-        "merge", "Merge result directories of shards into one. Records are kept one per cell (method, parameters, "
-                 "luminaire, height, rotation, res, precision, device); of several, the one from the later input "
-                 "wins. An equal-time MCI partner's cell is its scene, device and matched method, so each method "
-                 "keeps one partner per scene: the later input's.");
+        "merge",
+        "Merge result directories of shards into one. Records are kept one per cell (method, parameters, "
+        "luminaire, height, rotation, res, precision, device); of several, the one from the later input "
+        "wins. An equal-time MCI partner's cell is its scene, device and matched method, so each method "
+        "keeps one partner per scene: the later input's.");
     cmd->add_option("inputs", o->inputs, "Result directories (with results.json) or results files")->required();
-    cmd->add_option("--out", o->out, "Output directory (DIR/results.json, results.csv, report.md, report.html, plots/)")->required();
+    cmd->add_option("--out", o->out, "Output directory (DIR/results.json, results.csv, report.md, report.html, plots/)")
+        ->required();
     cmd->add_flag("--no-report", o->noReport, "Do not write report.md, report.html and plots");
     cmd->add_flag("--force", o->force, "Write into a non-empty --out directory (its results.json is replaced)");
     cmd->callback([o] {
@@ -69,8 +71,7 @@ void addMergeCommand(CLI::App& app)
         }
         std::cerr << fmt::format("merged {} files: {} records in, {} out ({} replaced by a later one of the same "
                                  "cell) -> {}/results.json\n",
-                                 st.files,
-                                 st.records_in, st.records_out, st.replaced, o->out);
+                                 st.files, st.records_in, st.records_out, st.replaced, o->out);
         std::cerr << fmt::format("table: {}/results.csv\n", o->out);
         if (!o->noReport) {
             std::string note = experiments::makePlots(o->out);
@@ -81,4 +82,4 @@ void addMergeCommand(CLI::App& app)
     });
 }
 
-} // namespace lb::cli
+}  // namespace lb::cli

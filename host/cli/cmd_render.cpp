@@ -18,8 +18,12 @@ namespace lb::cli {
 
 nlohmann::json sceneJson(const Scene& scene)
 {
-    nlohmann::json j = {{"kind", sceneKindName(scene.kind)}, {"height", scene.height}, {"rotation", scene.rotation},
-                        {"width", scene.width},  {"length", scene.length},                {"extent", scene.extent},
+    nlohmann::json j = {{"kind", sceneKindName(scene.kind)},
+                        {"height", scene.height},
+                        {"rotation", scene.rotation},
+                        {"width", scene.width},
+                        {"length", scene.length},
+                        {"extent", scene.extent},
                         {"res", scene.res}};
     if (scene.kind == SceneKind::Specular) {
         j["alpha"] = scene.alpha;
@@ -37,8 +41,10 @@ Scene sceneFromFlags(double height, const std::string& rotation, const std::stri
     auto x = size.find_first_of("xX");
     if (x == std::string::npos) throw InputError(fmt::format("--size: expected WxL in metres, got '{}'", size));
     scene.width = util::checkRange("--size W", util::parseReal("--size W", size.substr(0, x)), 0, kMaxSceneLength, "m");
-    scene.length = util::checkRange("--size L", util::parseReal("--size L", size.substr(x + 1)), 0, kMaxSceneLength, "m");
-    if (!(scene.width > 0 && scene.length > 0)) throw InputError(fmt::format("--size: expected W, L > 0, got '{}'", size));
+    scene.length =
+        util::checkRange("--size L", util::parseReal("--size L", size.substr(x + 1)), 0, kMaxSceneLength, "m");
+    if (!(scene.width > 0 && scene.length > 0))
+        throw InputError(fmt::format("--size: expected W, L > 0, got '{}'", size));
     scene.extent = util::checkRange("--extent", extent, 0, kMaxSceneLength, "m");
     if (!(scene.extent > 0)) throw InputError(fmt::format("--extent: expected a number > 0, got {}", extent));
     scene.res = util::checkRange("--res", res, 1, kMaxRes);
@@ -55,7 +61,8 @@ void sceneKindFromFlags(const CLI::App& cmd, const std::string& kind, double alp
     }
     const bool spec = scene.kind == SceneKind::Specular, ind = scene.kind == SceneKind::Indirect;
     for (const char* f : {"--alpha", "--eye"})
-        if (cmd.count(f) && !spec) throw InputError(fmt::format("{}: only the specular scene has it (--scene specular)", f));
+        if (cmd.count(f) && !spec)
+            throw InputError(fmt::format("{}: only the specular scene has it (--scene specular)", f));
     if (cmd.count("--albedo") && !ind) throw InputError("--albedo: only the indirect scene has it (--scene indirect)");
     scene.alpha = util::checkRange("--alpha", alpha, kMinAlpha, kMaxAlpha);
     scene.albedo = util::checkRange("--albedo", albedo, 0.0, 1.0);
@@ -69,8 +76,10 @@ void sceneKindFromFlags(const CLI::App& cmd, const std::string& kind, double alp
             b = c + 1;
         }
         if (v.size() != 3) throw InputError(fmt::format("--eye: expected X,Y,Z in metres, got '{}'", eye));
-        for (int k = 0; k < 3; ++k) scene.eye[k] = util::checkRange("--eye", v[k], -kMaxSceneLength, kMaxSceneLength, "m");
-        if (!(scene.eye.z > 0)) throw InputError(fmt::format("--eye: the eye must be above the floor (Z > 0), got '{}'", eye));
+        for (int k = 0; k < 3; ++k)
+            scene.eye[k] = util::checkRange("--eye", v[k], -kMaxSceneLength, kMaxSceneLength, "m");
+        if (!(scene.eye.z > 0))
+            throw InputError(fmt::format("--eye: the eye must be above the floor (Z > 0), got '{}'", eye));
     }
 }
 
@@ -107,8 +116,10 @@ void addRenderCommand(CLI::App& app)
     cmd->add_option("--albedo", o->albedo, "Indirect scene: albedo of walls and ceiling (0 .. 1)")
         ->capture_default_str();
     cmd->add_option("--height", o->height, "Height h of the light (m, 0 .. 1e4)")->required();
-    cmd->add_option("--rotation", o->rotation, "Rotation R in radians (0 .. 2pi; pi/2 .. pi in the papers), e.g. 2.356 "
-                                               "or 3pi/4")->required();
+    cmd->add_option("--rotation", o->rotation,
+                    "Rotation R in radians (0 .. 2pi; pi/2 .. pi in the papers), e.g. 2.356 "
+                    "or 3pi/4")
+        ->required();
     cmd->add_option("--size", o->size, "Light size WxL in metres (each > 0, <= 1e4)")->capture_default_str();
     cmd->add_option("--res", o->res, "Image resolution N (N x N pixels, 1 .. 16384)")->capture_default_str();
     cmd->add_option("--extent", o->extent, "Side S of the imaged square (m, > 0, <= 1e4)")->capture_default_str();
@@ -161,7 +172,9 @@ void addRenderCommand(CLI::App& app)
                 {"platform", rt.info().platform},
                 {"precision", methods::precisionName(prec)},
                 {"time_ms",
-                 {{"median", r.timing.median_ms}, {"min", r.timing.min_ms}, {"max", r.timing.max_ms},
+                 {{"median", r.timing.median_ms},
+                  {"min", r.timing.min_ms},
+                  {"max", r.timing.max_ms},
                   {"reps", r.timing.reps}}},
                 {"build_s", r.buildSeconds},
                 {"nonfinite", r.nonfinite},
@@ -175,4 +188,4 @@ void addRenderCommand(CLI::App& app)
     });
 }
 
-} // namespace lb::cli
+}  // namespace lb::cli

@@ -15,7 +15,8 @@ void addReportCommand(CLI::App& app)
 {
     auto dir = std::make_shared<std::string>();
     auto noPlots = std::make_shared<bool>(false);
-    auto* cmd = app.add_subcommand("report", "Write DIR/results.csv, DIR/report.md, DIR/report.html and DIR/plots/ from DIR/results.json");
+    auto* cmd = app.add_subcommand(
+        "report", "Write DIR/results.csv, DIR/report.md, DIR/report.html and DIR/plots/ from DIR/results.json");
     cmd->add_option("dir", *dir, "Results directory")->required();
     cmd->add_flag("--no-plots", *noPlots, "Tables only");
     cmd->callback([dir, noPlots] {
@@ -29,4 +30,4 @@ void addReportCommand(CLI::App& app)
     });
 }
 
-} // namespace lb::cli
+}  // namespace lb::cli

@@ -24,13 +24,15 @@ void addRunCommand(CLI::App& app)
     auto o = std::make_shared<Opts>();
     auto* cmd = app.add_subcommand("run", "Run an experiment file (experiments/*.json) into a results directory");
     cmd->add_option("experiment", o->exp, "Experiment file, e.g. experiments/smoke.json")->required();
-    cmd->add_option("--out", o->out, "Results directory (results.json, results.csv, report.md, report.html, plots/, images/); "
-                                     "a rerun resumes: it skips the cells already there and recomputes those "
-                                     "whose inputs changed (scene, method, reference, luminaire file content, "
-                                     "kernel sources, reps, time_res)")
+    cmd->add_option("--out", o->out,
+                    "Results directory (results.json, results.csv, report.md, report.html, plots/, images/); "
+                    "a rerun resumes: it skips the cells already there and recomputes those "
+                    "whose inputs changed (scene, method, reference, luminaire file content, "
+                    "kernel sources, reps, time_res)")
         ->required();
-    cmd->add_option("--luminaires", o->luminaires, "Use every .ldt/.ies file in this directory instead of the "
-                                                   "experiment's list");
+    cmd->add_option("--luminaires", o->luminaires,
+                    "Use every .ldt/.ies file in this directory instead of the "
+                    "experiment's list");
     cmd->add_option("--shard", o->shard, "Run shard K of N: the scenes with index % N == K-1")->capture_default_str();
     cmd->add_option("--res", o->res, "Override the experiment's resolution (1 .. 16384)");
     cmd->add_option("--reps", o->reps, "Override the experiment's timed runs per cell (5 .. 1000)");
@@ -67,4 +69,4 @@ void addRunCommand(CLI::App& app)
     });
 }
 
-} // namespace lb::cli
+}  // namespace lb::cli

@@ -19,18 +19,21 @@ namespace lb::cli {
 void addSequenceCommand(CLI::App& app)
 {
     struct Opts {
-        std::string luminaire, path = "rotate", rotation = "pi", from, to, precision = "float", out, reference = "reference";
+        std::string luminaire, path = "rotate", rotation = "pi", from, to, precision = "float", out,
+                               reference = "reference";
         std::vector<std::string> methods;
         double height = 1.1, albedo = 0.5;
         int res = 32, frames = 8, device = -1;
         bool noCache = false;
     };
     auto o = std::make_shared<Opts>();
-    auto* cmd = app.add_subcommand("sequence", "Animated sequence of the indirect scene: per-frame metrics and flicker");
+    auto* cmd =
+        app.add_subcommand("sequence", "Animated sequence of the indirect scene: per-frame metrics and flicker");
     cmd->add_option("--luminaire", o->luminaire, "IES or LDT file (or analytic:cos<n>[:two])")->required();
     cmd->add_option("--method", o->methods, "Method SPEC (repeatable), e.g. acrsm:k=64")->required();
-    cmd->add_option("--path", o->path, "rotate (R from --from to --to at --height) or lift (height from --from to --to "
-                                       "at --rotation)")
+    cmd->add_option("--path", o->path,
+                    "rotate (R from --from to --to at --height) or lift (height from --from to --to "
+                    "at --rotation)")
         ->capture_default_str();
     cmd->add_option("--from", o->from, "Path start (rotate: default pi/2; lift: default 0.1 m)");
     cmd->add_option("--to", o->to, "Path end (rotate: default pi; lift: default 1.1 m)");
@@ -57,8 +60,10 @@ void addSequenceCommand(CLI::App& app)
         } else if (o->path != "rotate") {
             throw InputError(fmt::format("--path: expected rotate or lift, got '{}'", o->path));
         }
-        if (!o->from.empty()) path.from = o->path == "rotate" ? util::parseAngle("--from", o->from) : util::parseReal("--from", o->from);
-        if (!o->to.empty()) path.to = o->path == "rotate" ? util::parseAngle("--to", o->to) : util::parseReal("--to", o->to);
+        if (!o->from.empty())
+            path.from = o->path == "rotate" ? util::parseAngle("--from", o->from) : util::parseReal("--from", o->from);
+        if (!o->to.empty())
+            path.to = o->path == "rotate" ? util::parseAngle("--to", o->to) : util::parseReal("--to", o->to);
         methods::Precision prec = methods::parsePrecision(o->precision);
         photometry::Table table = methods::loadLuminaire(o->luminaire);
         ocl::Runtime rt(deviceFlag(*cmd, o->device));
@@ -73,11 +78,11 @@ void addSequenceCommand(CLI::App& app)
         j["albedo"] = base.albedo;
         util::writeFileAtomic(o->out, j.dump(1) + "\n");
         for (auto& [spec, v] : j["flicker"].items())
-            std::cout << fmt::format("{:40s} flicker {:.4g} (per sequence {:.4g})  mean NMSE {:.4g}  mean time {:.3f} ms\n",
-                                     spec, v.get<double>(), j["flicker_seq"][spec].get<double>(),
-                                     j["mean"][spec]["nmse"].get<double>(),
-                                     j["mean"][spec]["time_ms"].get<double>());
+            std::cout << fmt::format(
+                "{:40s} flicker {:.4g} (per sequence {:.4g})  mean NMSE {:.4g}  mean time {:.3f} ms\n", spec,
+                v.get<double>(), j["flicker_seq"][spec].get<double>(), j["mean"][spec]["nmse"].get<double>(),
+                j["mean"][spec]["time_ms"].get<double>());
     });
 }
 
-} // namespace lb::cli
+}  // namespace lb::cli

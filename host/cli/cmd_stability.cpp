@@ -23,8 +23,9 @@ void addStabilityCommand(CLI::App& app)
         int device = -1;
     };
     auto o = std::make_shared<Opts>();
-    auto* cmd = app.add_subcommand("stability", "Run every method in float and double on the catalogue of extreme "
-                                                "scenes; exit 1 when a requirement fails");
+    auto* cmd = app.add_subcommand("stability",
+                                   "Run every method in float and double on the catalogue of extreme "
+                                   "scenes; exit 1 when a requirement fails");
     cmd->add_option("--res", o->run.res, "Image resolution N (cases in the light plane use N + 1 when N is even)")
         ->capture_default_str();
     cmd->add_flag("--quick", o->run.quick, "Only the quick subset of the catalogue (CI)");
@@ -54,4 +55,4 @@ void addStabilityCommand(CLI::App& app)
     });
 }
 
-} // namespace lb::cli
+}  // namespace lb::cli

@@ -43,4 +43,4 @@ void addTuneCommand(CLI::App& app)
     });
 }
 
-} // namespace lb::cli
+}  // namespace lb::cli

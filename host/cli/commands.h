@@ -37,4 +37,4 @@ void sceneKindFromFlags(const CLI::App& cmd, const std::string& kind, double alp
 // The scene as `render --json` prints it (kind and the kind's values included).
 nlohmann::json sceneJson(const Scene& scene);
 
-} // namespace lb::cli
+}  // namespace lb::cli

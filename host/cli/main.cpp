@@ -35,8 +35,8 @@ int main(int argc, char** argv)
             std::string a = argv[i];
             if (a == "--") break;
             if (a.size() > 3 && a.rfind("--", 0) == 0 && a.back() == '=' && a.find('=') == a.size() - 1)
-                throw lb::InputError(fmt::format("{}: expected a value after '=', got an empty value",
-                                                 a.substr(0, a.size() - 1)));
+                throw lb::InputError(
+                    fmt::format("{}: expected a value after '=', got an empty value", a.substr(0, a.size() - 1)));
         }
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -83,11 +83,30 @@ struct Reader {
     }
 };
 
-const std::set<std::string> kKeys = {"name",      "description", "luminaire_dir", "luminaires", "heights",
-                                     "rotations", "methods",     "equal_time",    "mci_curve",  "mc",
-                                     "equal_time_fit", "reference", "res",        "precision",  "size",
-                                     "extent",    "reps",        "equal_time_tolerance", "save_images", "time_res",
-                                     "scene",     "alpha",       "eye",           "albedo"};
+const std::set<std::string> kKeys = {"name",
+                                     "description",
+                                     "luminaire_dir",
+                                     "luminaires",
+                                     "heights",
+                                     "rotations",
+                                     "methods",
+                                     "equal_time",
+                                     "mci_curve",
+                                     "mc",
+                                     "equal_time_fit",
+                                     "reference",
+                                     "res",
+                                     "precision",
+                                     "size",
+                                     "extent",
+                                     "reps",
+                                     "equal_time_tolerance",
+                                     "save_images",
+                                     "time_res",
+                                     "scene",
+                                     "alpha",
+                                     "eye",
+                                     "albedo"};
 
 // Every .ldt / .ies file of a directory, sorted; of a .ldt and a .ies with the
 // same stem only the .ldt (the suite ships both forms of each luminaire).
@@ -125,7 +144,7 @@ std::string resolveDir(const std::string& dir)
     return (fs::path(LB_SOURCE_DIR) / p).string();  // relative to the source tree
 }
 
-} // namespace
+}  // namespace
 
 Experiment loadExperiment(const std::string& path, const Overrides& ov)
 {
@@ -141,9 +160,10 @@ Experiment loadExperiment(const std::string& path, const Overrides& ov)
     Reader r{path, j};
     for (auto it = j.begin(); it != j.end(); ++it)
         if (!kKeys.count(it.key()))
-            r.fail(it.key(), "unknown key (known: name, description, luminaire_dir, luminaires, heights, rotations, "
-                             "methods, equal_time, mci_curve, mc, equal_time_fit, reference, res, precision, size, "
-                             "extent, reps, equal_time_tolerance, save_images, time_res, scene, alpha, eye, albedo)");
+            r.fail(it.key(),
+                   "unknown key (known: name, description, luminaire_dir, luminaires, heights, rotations, "
+                   "methods, equal_time, mci_curve, mc, equal_time_fit, reference, res, precision, size, "
+                   "extent, reps, equal_time_tolerance, save_images, time_res, scene, alpha, eye, albedo)");
 
     Experiment e;
     e.path = path;
@@ -158,7 +178,7 @@ Experiment loadExperiment(const std::string& path, const Overrides& ov)
         e.luminaires = luminaireFiles(ov.luminaireDir, "--luminaires");
     } else {
         auto names = j.contains("luminaires") && j["luminaires"] == "*" ? std::vector<std::string>{"*"}
-                                                                          : r.strings("luminaires");
+                                                                        : r.strings("luminaires");
         if (names.size() == 1 && names[0] == "*") {
             e.luminaires = luminaireFiles(e.luminaireDir, path + ": key \"luminaires\"");
         } else {
@@ -180,7 +200,8 @@ Experiment loadExperiment(const std::string& path, const Overrides& ov)
     if (!rs.is_array() || rs.empty()) r.fail("rotations", "expected a non-empty list");
     for (const auto& x : rs) {
         std::string text = x.is_string() ? x.get<std::string>() : x.dump();
-        if (!x.is_string() && !x.is_number()) r.fail("rotations", fmt::format("expected radians or an expression like 3pi/4, found {}", x.dump()));
+        if (!x.is_string() && !x.is_number())
+            r.fail("rotations", fmt::format("expected radians or an expression like 3pi/4, found {}", x.dump()));
         e.rotations.push_back(util::parseAngle(r.name("rotations"), text));
         e.rotationText.push_back(text);
     }
@@ -308,4 +329,4 @@ void parseShard(const std::string& text, int& k, int& n)
     if (n < 1 || k < 1 || k > n) throw InputError(fmt::format("--shard: expected 1 <= K <= N, got '{}'", text));
 }
 
-} // namespace lb::experiments
+}  // namespace lb::experiments

@@ -43,8 +43,8 @@ struct Experiment {
     std::vector<std::string> luminaires;  // file paths (resolved)
     std::vector<double> heights, rotations;
     std::vector<std::string> rotationText;  // as written (labels)
-    std::vector<std::string> methods;       // SPEC strings
-    std::vector<std::string> equalTime;     // subset of methods
+    std::vector<std::string> methods;  // SPEC strings
+    std::vector<std::string> equalTime;  // subset of methods
     std::vector<long> mciCurve, equalTimeFit;
     std::string mc = "mc", reference = "reference";
     int res = 64;
@@ -65,9 +65,9 @@ constexpr int kMinExperimentReps = 5;
 // Command-line overrides applied after reading the file (range-checked like
 // the keys they replace; unset = the file's value).
 struct Overrides {
-    std::string luminaireDir;    // --luminaires DIR: every .ldt/.ies file in DIR
-    std::optional<int> res;      // --res N
-    std::optional<int> reps;     // --reps K
+    std::string luminaireDir;  // --luminaires DIR: every .ldt/.ies file in DIR
+    std::optional<int> res;  // --res N
+    std::optional<int> reps;  // --reps K
     std::optional<int> timeRes;  // --time-res N
 };
 
@@ -84,7 +84,7 @@ struct SceneId {
     int res = 0;
     double width = 1, length = 1, extent = 5;
     SceneKindKeys kindKeys;  // the experiment's scene kind and its values
-    double alpha = 0.25;     // specular: this scene's alpha (one of kindKeys.alphas)
+    double alpha = 0.25;  // specular: this scene's alpha (one of kindKeys.alphas)
     size_t index = 0;  // position in the enumeration (shard assignment)
     Scene scene() const;
     // short, file-name safe: "lambert_h0.1_r3pi-4_float", specular scenes
@@ -102,4 +102,4 @@ bool inShard(const SceneId& s, int k, int n);
 // Parses "K/N" (1 <= K <= N); InputError otherwise.
 void parseShard(const std::string& text, int& k, int& n);
 
-} // namespace lb::experiments
+}  // namespace lb::experiments

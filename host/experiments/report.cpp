@@ -42,10 +42,7 @@ std::string label(const results::Record& r)
     return str(r.extra, "spec", r.method);
 }
 
-std::string role(const results::Record& r)
-{
-    return r.equal_time_to ? "equal_time" : str(r.extra, "role", "method");
-}
+std::string role(const results::Record& r) { return r.equal_time_to ? "equal_time" : str(r.extra, "role", "method"); }
 
 std::string sci(double v) { return std::isfinite(v) ? fmt::format("{:.3e}", v) : "n/a"; }
 
@@ -86,11 +83,20 @@ std::string htmlEscape(const std::string& s)
     std::string o;
     for (char c : s) {
         switch (c) {
-        case '&': o += "&amp;"; break;
-        case '<': o += "&lt;"; break;
-        case '>': o += "&gt;"; break;
-        case '"': o += "&quot;"; break;
-        default: o += c;
+        case '&':
+            o += "&amp;";
+            break;
+        case '<':
+            o += "&lt;";
+            break;
+        case '>':
+            o += "&gt;";
+            break;
+        case '"':
+            o += "&quot;";
+            break;
+        default:
+            o += c;
         }
     }
     return o;
@@ -233,9 +239,15 @@ json viewerData(const std::string& dir, const std::vector<results::Record>& recs
             k = tonemap::defaultK(ref);
         } catch (const InputError&) {
         }
-        json sc = {{"label", s},         {"luminaire", r0.luminaire}, {"height", r0.height},
-                   {"rotation", r0.rotation}, {"precision", r0.precision}, {"width", ref.width},
-                   {"height_px", ref.height}, {"k", k},                    {"ref", floatsB64(ref)}};
+        json sc = {{"label", s},
+                   {"luminaire", r0.luminaire},
+                   {"height", r0.height},
+                   {"rotation", r0.rotation},
+                   {"precision", r0.precision},
+                   {"width", ref.width},
+                   {"height_px", ref.height},
+                   {"k", k},
+                   {"ref", floatsB64(ref)}};
         json methods = json::array(), mci = json::object();
         for (const auto* r : byScene[s]) {
             const bool eq = role(*r) == "equal_time";
@@ -265,7 +277,7 @@ json viewerData(const std::string& dir, const std::vector<results::Record>& recs
     return scenes;
 }
 
-} // namespace
+}  // namespace
 
 std::string makePlots(const std::string& dir)
 {
@@ -358,15 +370,17 @@ void writeReport(const std::string& dir, const std::string& plotNote)
         Table t{heading, note, {"luminaire", "precision", "h"}, {}, ""};
         if (kinds) t.head.insert(t.head.begin() + 1, "scene");
         if (carried == 0) {
-            t.empty = fmt::format("No record carries {} (records of an older lumibench{}).", key,
-                                  key == "flip" ? ", or flip-evaluator was not available: scripts/install-deps.sh" : "");
+            t.empty =
+                fmt::format("No record carries {} (records of an older lumibench{}).", key,
+                            key == "flip" ? ", or flip-evaluator was not available: scripts/install-deps.sh" : "");
             tables.push_back(t);
             return;
         }
         t.note += "MCI=M is Monte Carlo at the time of method M (its mean N over the rotations in brackets).";
         for (const auto& col : cols) t.head.push_back(col);
         for (const auto& [k, m] : rows) {
-            std::vector<Cell> row = {{std::get<0>(k)}, {std::get<2>(k)}, num(std::get<3>(k), fmt::format("{}", std::get<3>(k)))};
+            std::vector<Cell> row = {
+                {std::get<0>(k)}, {std::get<2>(k)}, num(std::get<3>(k), fmt::format("{}", std::get<3>(k)))};
             if (kinds) row.insert(row.begin() + 1, Cell{std::get<1>(k)});
             for (const auto& col : cols) {
                 auto it = m.find(col);
@@ -428,12 +442,14 @@ void writeReport(const std::string& dir, const std::string& plotNote)
         auto rr = rel.find(col);
         auto [straight, general] = forms[col];
         std::string form = general == 0 ? (straight ? "straight-line" : "")
-                           : straight == 0 ? "**general**"
-                                           : fmt::format("**general** in {} of {} scenes", general, straight + general);
+            : straight == 0             ? "**general**"
+                                        : fmt::format("**general** in {} of {} scenes", general, straight + general);
         const double ms = a.second ? a.first / a.second : NAN;
         const double relv = rr != rel.end() && rr->second.second ? std::exp(rr->second.first / rr->second.second) : NAN;
-        times.rows.push_back({{col}, num(ms, fmt::format("{:.4f}", ms)),
-                              num(relv, std::isfinite(relv) ? fmt::format("{:.2f}", relv) : "n/a"), {form}});
+        times.rows.push_back({{col},
+                              num(ms, fmt::format("{:.4f}", ms)),
+                              num(relv, std::isfinite(relv) ? fmt::format("{:.2f}", relv) : "n/a"),
+                              {form}});
     }
     tables.push_back(times);
 
@@ -455,15 +471,23 @@ void writeReport(const std::string& dir, const std::string& plotNote)
                 double v = it != errBy.end() ? it->second.*f : NAN;
                 return num(v, sci(v));
             };
-            const double tm = r.extra.value("equal_time_target_ms", NAN), ratio = r.extra.value("equal_time_ratio", NAN);
+            const double tm = r.extra.value("equal_time_target_ms", NAN),
+                         ratio = r.extra.value("equal_time_ratio", NAN);
             const double n = r.n ? double(*r.n) : 0;
             pairs.rows.push_back(
-                {{r.luminaire}, num(r.height, fmt::format("{}", r.height)),
-                 num(r.rotation, fmt::format("{:.4f}", r.rotation)), {m}, num(tm, fmt::format("{:.4f}", tm)),
-                 num(n, fmt::format("{}", r.n ? *r.n : 0)), num(r.time_ms.median, fmt::format("{:.4f}", r.time_ms.median)),
+                {{r.luminaire},
+                 num(r.height, fmt::format("{}", r.height)),
+                 num(r.rotation, fmt::format("{:.4f}", r.rotation)),
+                 {m},
+                 num(tm, fmt::format("{:.4f}", tm)),
+                 num(n, fmt::format("{}", r.n ? *r.n : 0)),
+                 num(r.time_ms.median, fmt::format("{:.4f}", r.time_ms.median)),
                  num(ratio, fmt::format("{:.3f}{}", ratio, r.extra.value("equal_time_ok", false) ? "" : " (!)")),
-                 of(&metrics::Metrics::nmse), num(r.error.nmse, sci(r.error.nmse)), of(&metrics::Metrics::grad_nmse),
-                 num(r.error.grad_nmse, sci(r.error.grad_nmse)), of(&metrics::Metrics::flip),
+                 of(&metrics::Metrics::nmse),
+                 num(r.error.nmse, sci(r.error.nmse)),
+                 of(&metrics::Metrics::grad_nmse),
+                 num(r.error.grad_nmse, sci(r.error.grad_nmse)),
+                 of(&metrics::Metrics::flip),
                  num(r.error.flip, sci(r.error.flip))});
         }
         tables.push_back(pairs);
@@ -483,8 +507,10 @@ void writeReport(const std::string& dir, const std::string& plotNote)
         return std::make_pair(rank(a), a) < std::make_pair(rank(b), b);
     });
     std::string plotsMissing;
-    if (!plotNote.empty()) plotsMissing = "Plots not made: " + plotNote + ".";
-    else if (pngs.empty()) plotsMissing = "No plots in `plots/` (run `lumibench report DIR`).";
+    if (!plotNote.empty())
+        plotsMissing = "Plots not made: " + plotNote + ".";
+    else if (pngs.empty())
+        plotsMissing = "No plots in `plots/` (run `lumibench report DIR`).";
 
     // report.md
     {
@@ -511,7 +537,8 @@ void writeReport(const std::string& dir, const std::string& plotNote)
             o << "<tr><th>" << htmlEscape(row[0].text) << "</th><td>" << htmlEscape(row[1].text) << "</td></tr>";
         o << "</table>\n<p>" << inlineHtml(summary) << " Click a column head to sort.</p>\n";
         o << "<nav>Sections: <a href=\"#viewer\">pictures</a>";
-        for (size_t i = 0; i < tables.size(); ++i) o << fmt::format(" · <a href=\"#t{}\">{}</a>", i, htmlEscape(tables[i].title));
+        for (size_t i = 0; i < tables.size(); ++i)
+            o << fmt::format(" · <a href=\"#t{}\">{}</a>", i, htmlEscape(tables[i].title));
         o << " · <a href=\"#plots\">plots</a></nav>\n";
         o << "<section id=\"viewer\"><h2>Pictures</h2>\n";
         if (shown == 0)
@@ -535,10 +562,10 @@ void writeReport(const std::string& dir, const std::string& plotNote)
         // JSON inside <script>: "</" would end the element; JSON allows "<\/".
         std::string data = viewer.dump();
         for (size_t pos = 0; (pos = data.find("</", pos)) != std::string::npos; pos += 3) data.replace(pos, 2, "<\\/");
-        o << "<script type=\"application/json\" id=\"lbdata\">" << data << "</script>\n<script>"
-          << report_page::kScript << "</script>\n</body></html>\n";
+        o << "<script type=\"application/json\" id=\"lbdata\">" << data << "</script>\n<script>" << report_page::kScript
+          << "</script>\n</body></html>\n";
         util::writeFileAtomic((fs::path(dir) / "report.html").string(), o.str());
     }
 }
 
-} // namespace lb::experiments
+}  // namespace lb::experiments

@@ -38,4 +38,4 @@ void writeReport(const std::string& dir, const std::string& plotNote = "");
 
 inline constexpr size_t kMaxInlineBytes = size_t(48) << 20;
 
-} // namespace lb::experiments
+}  // namespace lb::experiments

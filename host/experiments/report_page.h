@@ -242,4 +242,4 @@ inline constexpr const char* kScript = R"JS(
 })();
 )JS";
 
-} // namespace lb::experiments::report_page
+}  // namespace lb::experiments::report_page

@@ -60,15 +60,16 @@ double numField(const json& j, const char* key)
     auto it = j.find(key);
     if (it == j.end()) throw InputError(fmt::format("missing key \"{}\"", key));
     if (it->is_null()) return kNaN;
-    if (!it->is_number()) throw InputError(fmt::format("key \"{}\": expected a number or null, found {} {}", key,
-                                                       typeName(*it), it->dump()));
+    if (!it->is_number())
+        throw InputError(
+            fmt::format("key \"{}\": expected a number or null, found {} {}", key, typeName(*it), it->dump()));
     return it->get<double>();
 }
 
 const std::set<std::string> kKnownKeys = {
-    "method", "params", "luminaire", "height", "rotation", "res", "precision", "device", "driver", "time_ms",
-    "nmse", "nrmse", "relmse", "ueb", "leb", "nonfinite", "pixels", "mean_ref", "mean_test", "grad_nmse",
-    "grad_pairs", "flip", "equal_time_to", "n", "inputs"};
+    "method",    "params",    "luminaire",  "height", "rotation",      "res", "precision", "device", "driver",
+    "time_ms",   "nmse",      "nrmse",      "relmse", "ueb",           "leb", "nonfinite", "pixels", "mean_ref",
+    "mean_test", "grad_nmse", "grad_pairs", "flip",   "equal_time_to", "n",   "inputs"};
 // The scene-kind keys (scene/scene_keys.h), collected into Record::sceneKeys.
 const std::set<std::string> kSceneKeys = {"scene_kind", "alpha", "eye", "albedo"};
 
@@ -86,7 +87,7 @@ std::string capture(const std::string& cmd)
     return b == std::string::npos ? "" : out.substr(b, e - b + 1);
 }
 
-} // namespace
+}  // namespace
 
 std::string Record::key() const
 {
@@ -126,8 +127,11 @@ void to_json(json& j, const Record& r)
     j["precision"] = r.precision;
     j["device"] = r.device;
     j["driver"] = r.driver;
-    j["time_ms"] = {{"median", num(r.time_ms.median)}, {"min", num(r.time_ms.min)}, {"max", num(r.time_ms.max)},
-                    {"reps", r.time_ms.reps}, {"res", r.time_ms.res}};
+    j["time_ms"] = {{"median", num(r.time_ms.median)},
+                    {"min", num(r.time_ms.min)},
+                    {"max", num(r.time_ms.max)},
+                    {"reps", r.time_ms.reps},
+                    {"res", r.time_ms.res}};
     j.update(json(r.error));  // nmse, ..., mean_test, grad_nmse, grad_pairs, flip (metrics.h)
     if (r.equal_time_to) j["equal_time_to"] = *r.equal_time_to;
     if (r.n) j["n"] = *r.n;
@@ -176,7 +180,8 @@ void from_json(const json& j, Record& r)
     if (j.contains("n")) r.n = field<int64_t>(j, "n");
     if (j.contains("inputs")) {
         r.inputs = j["inputs"];
-        if (!r.inputs.is_object()) throw InputError(fmt::format("key \"inputs\": expected an object, found {}", r.inputs.dump()));
+        if (!r.inputs.is_object())
+            throw InputError(fmt::format("key \"inputs\": expected an object, found {}", r.inputs.dump()));
     }
     for (auto it = j.begin(); it != j.end(); ++it) {
         if (kSceneKeys.count(it.key()))
@@ -186,10 +191,7 @@ void from_json(const json& j, Record& r)
     }
 }
 
-void to_json(json& j, const Results& d)
-{
-    j = json{{"context", d.context}, {"records", d.records}};
-}
+void to_json(json& j, const Results& d) { j = json{{"context", d.context}, {"records", d.records}}; }
 
 void from_json(const json& j, Results& d)
 {
@@ -219,7 +221,8 @@ json makeContext(const std::string& device, const std::string& driver, const jso
     std::string commit = capture("git -C '" + dir + "' rev-parse HEAD 2>/dev/null");
     c["commit"] = commit.empty() ? "unknown" : commit;
     if (!commit.empty())
-        c["commit_dirty"] = !capture("git -C '" + dir + "' status --porcelain --untracked-files=no 2>/dev/null").empty();
+        c["commit_dirty"] =
+            !capture("git -C '" + dir + "' status --porcelain --untracked-files=no 2>/dev/null").empty();
 
     std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
     std::tm tm{};
@@ -328,7 +331,7 @@ void compactLocked(const std::string& path, const json& context)
     save(path, doc);  // then removes the journal: after a crash between the two, load folds it again (dedupe)
 }
 
-} // namespace
+}  // namespace
 
 Results load(const std::string& path)
 {
@@ -358,7 +361,9 @@ void appendRecord(const std::string& path, const json& context, const Record& r)
         int fd;
         ~Close() { ::close(fd); }
     } closer{fd};
-    auto fail = [&](const char* what) { return Error(fmt::format("{}: cannot {}: {}", jpath, what, std::strerror(errno))); };
+    auto fail = [&](const char* what) {
+        return Error(fmt::format("{}: cannot {}: {}", jpath, what, std::strerror(errno)));
+    };
     off_t size = ::lseek(fd, 0, SEEK_END);
     if (size < 0) throw fail("seek");
     char last = '\n';
@@ -434,13 +439,13 @@ std::string csvValue(const json& v)
     return csvField(v.dump());
 }
 
-} // namespace
+}  // namespace
 
 std::string toCsv(const Results& doc)
 {
-    const std::vector<std::string> head = {"method", "spec", "role", "scene", "luminaire", "height", "rotation", "res",
-                                           "precision", "device", "driver", "time_ms_median", "time_ms_min",
-                                           "time_ms_max", "time_ms_reps", "time_ms_res"};
+    const std::vector<std::string> head = {
+        "method",    "spec",   "role",   "scene",          "luminaire",   "height",      "rotation",     "res",
+        "precision", "device", "driver", "time_ms_median", "time_ms_min", "time_ms_max", "time_ms_reps", "time_ms_res"};
     std::vector<std::string> metricCols;
     const json metricKeys = metrics::Metrics{};
     for (auto it = metricKeys.begin(); it != metricKeys.end(); ++it) metricCols.push_back(it.key());
@@ -494,9 +499,10 @@ std::string toCsv(const Results& doc)
         for (const auto& m : metricCols) f.push_back(csvValue(j.value(m, json(nullptr))));
         f.push_back(csvValue(j.value("equal_time_to", json(nullptr))));
         f.push_back(csvValue(j.value("n", json(nullptr))));
-        for (const auto& p : params) f.push_back(r.params.contains(p) && !r.params[p].is_structured()
-                                                     ? csvValue(r.params[p])
-                                                     : (r.params.contains(p) ? csvField(r.params[p].dump()) : ""));
+        for (const auto& p : params)
+            f.push_back(r.params.contains(p) && !r.params[p].is_structured()
+                            ? csvValue(r.params[p])
+                            : (r.params.contains(p) ? csvField(r.params[p].dump()) : ""));
         for (const auto& x : extras) f.push_back(csvValue(j.contains(x) && flat(j[x]) ? j[x] : json(nullptr)));
         for (size_t i = 0; i < f.size(); ++i) out += (i ? "," : "") + f[i];
         out += "\n";
@@ -514,4 +520,4 @@ void saveCsv(const std::string& resultsJsonPath, const Results& doc)
     util::writeFileAtomic(csvPathFor(resultsJsonPath), toCsv(doc));
 }
 
-} // namespace lb::results
+}  // namespace lb::results

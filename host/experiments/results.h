@@ -39,17 +39,17 @@ struct TimeMs {
 };
 
 struct Record {
-    std::string method;                                 // DESIGN section 4 name, e.g. "mc"
+    std::string method;  // DESIGN section 4 name, e.g. "mc"
     nlohmann::json params = nlohmann::json::object();  // method parameters, e.g. {"n": 24}
-    std::string luminaire;                              // file name or synthetic name
-    double height = 0, rotation = 0;                    // metres, radians (DESIGN section 2)
-    int res = 0;                                        // image is res x res
-    std::string precision = "float";                    // "float" | "double"
+    std::string luminaire;  // file name or synthetic name
+    double height = 0, rotation = 0;  // metres, radians (DESIGN section 2)
+    int res = 0;  // image is res x res
+    std::string precision = "float";  // "float" | "double"
     std::string device, driver;
     TimeMs time_ms;
-    metrics::Metrics error;                  // serialised flat: nmse, nrmse, ... at the record's top level
+    metrics::Metrics error;  // serialised flat: nmse, nrmse, ... at the record's top level
     std::optional<std::string> equal_time_to;  // MC at equal time: the method spec it matches
-    std::optional<int64_t> n;                  // sample count where it is a result (N_eq), not a parameter
+    std::optional<int64_t> n;  // sample count where it is a result (N_eq), not a parameter
     // Everything else the record was computed from, as the runner writes it
     // (runner.h): light size, extent, reps, time_res, the reference SPEC and
     // digests of the luminaire file and of the kernel sources. Empty in
@@ -169,4 +169,4 @@ std::string csvPathFor(const std::string& resultsJsonPath);
 // Writes toCsv(doc) atomically to csvPathFor(resultsJsonPath).
 void saveCsv(const std::string& resultsJsonPath, const Results& doc);
 
-} // namespace lb::results
+}  // namespace lb::results

@@ -38,7 +38,8 @@ long solveN(std::vector<std::pair<long, double>> pts, double targetMs)
     };
     if (pts.empty()) return 1;
     if (pts.size() == 1) return clampN(double(pts[0].first) * targetMs / pts[0].second);  // t proportional to N
-    if (targetMs <= pts.front().second) return pts.front().first > 1 ? clampN(pts.front().first * targetMs / pts.front().second) : 1;
+    if (targetMs <= pts.front().second)
+        return pts.front().first > 1 ? clampN(pts.front().first * targetMs / pts.front().second) : 1;
     // The first segment whose end reaches the target, else the last one (extrapolated).
     size_t i = 1;
     while (i + 1 < pts.size() && pts[i].second < targetMs) ++i;
@@ -102,7 +103,6 @@ std::vector<Cell> cellsOf(const Experiment& e)
     for (const auto& m : e.equalTime) cells.push_back({"equal_time", m, methods::parseSpec(m, e.kind())});
     return cells;
 }
-
 
 std::string hms(double s)
 {
@@ -206,7 +206,7 @@ struct SceneRun {
     }
 };
 
-} // namespace
+}  // namespace
 
 RunSummary run(const Experiment& e, const RunOptions& opt)
 {
@@ -216,18 +216,17 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
     const std::string resultsPath = (fs::path(opt.outDir) / "results.json").string();
 
     ocl::Runtime rt(opt.device);
-    json context = results::makeContext(
-        rt.info().name, rt.info().driver,
-        {{"platform", rt.info().platform},
-         {"experiment", e.name},
-         {"experiment_file", e.path},
-         {"experiment_spec", e.raw},
-         {"luminaire_dir", e.luminaireDir},
-         {"res", e.res},
-         {"reps", e.reps},
-         {"time_res", e.timeRes},
-         {"equal_time_tolerance", e.equalTimeTolerance},
-         {"shard", fmt::format("{}/{}", opt.shardK, opt.shardN)}});
+    json context = results::makeContext(rt.info().name, rt.info().driver,
+                                        {{"platform", rt.info().platform},
+                                         {"experiment", e.name},
+                                         {"experiment_file", e.path},
+                                         {"experiment_spec", e.raw},
+                                         {"luminaire_dir", e.luminaireDir},
+                                         {"res", e.res},
+                                         {"reps", e.reps},
+                                         {"time_res", e.timeRes},
+                                         {"equal_time_tolerance", e.equalTimeTolerance},
+                                         {"shard", fmt::format("{}/{}", opt.shardK, opt.shardN)}});
 
     // Resume: the cells already written, by cell key (an equal-time partner,
     // whose N was chosen at run time, by scene, device and the SPEC it
@@ -235,8 +234,8 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
     // only when its inputs are this run's; otherwise it is recomputed and
     // its record replaced.
     util::removeStaleTemporaries(opt.outDir);  // left by a killed run
-    std::map<std::string, json> doneInputs;     // key -> inputs
-    std::map<std::string, double> doneTimes;    // key -> median ms (equal-time targets)
+    std::map<std::string, json> doneInputs;  // key -> inputs
+    std::map<std::string, double> doneTimes;  // key -> median ms (equal-time targets)
     if (results::exists(resultsPath)) {
         for (const auto& r : results::load(resultsPath).records) {
             doneInputs[r.key()] = r.inputs;
@@ -322,7 +321,7 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
 
         if (!tables.count(sid.luminaire)) tables.emplace(sid.luminaire, methods::loadLuminaire(sid.luminaire));
         const photometry::Table& table = tables.at(sid.luminaire);
-        SceneRun sr{e, sid, rt, table, opt, resultsPath, context, sid.scene(), methods::parsePrecision(sid.precision),
+        SceneRun sr{e,  sid, rt, table, opt, resultsPath, context, sid.scene(), methods::parsePrecision(sid.precision),
                     {}, {}};
         if (e.saveImages) {
             sr.imageDir = (fs::path(opt.outDir) / "images" / sid.label()).string();
@@ -379,9 +378,8 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
                     }
                 }
                 auto mcAt = [&](long n) {
-                    return methods::parseSpec(e.mc + (e.mc.find(':') == std::string::npos ? ":" : ",") + "n=" +
-                                                  std::to_string(n),
-                                              e.kind());
+                    return methods::parseSpec(
+                        e.mc + (e.mc.find(':') == std::string::npos ? ":" : ",") + "n=" + std::to_string(n), e.kind());
                 };
                 // N on the measured t(N), then it and its neighbour on the
                 // method's side timed against the method in alternating
@@ -399,7 +397,7 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
                 double ratio = NAN;
                 std::vector<ocl::Timing> bestT;  // (method, MC at bestN) of bestN's rounds
                 std::map<long, double> measured;  // N -> median round ratio
-                long next = solveN(pts, tM);      // first aim: the curve
+                long next = solveN(pts, tM);  // first aim: the curve
                 for (int attempt = 0; attempt < 3; ++attempt) {
                     // the aimed N and its neighbour towards the target on the
                     // curve; later tries: the aimed N and both neighbours
@@ -511,4 +509,4 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
     return sum;
 }
 
-} // namespace lb::experiments
+}  // namespace lb::experiments

@@ -62,11 +62,11 @@ struct RunOptions {
 };
 
 struct RunSummary {
-    size_t scenes = 0;      // scenes of this shard
-    size_t cells = 0;       // cells of this shard
-    size_t skipped = 0;     // already in results.json with this run's inputs
-    size_t stale = 0;       // in results.json but with other inputs: recomputed (counted in computed)
-    size_t computed = 0;    // rendered now
+    size_t scenes = 0;  // scenes of this shard
+    size_t cells = 0;  // cells of this shard
+    size_t skipped = 0;  // already in results.json with this run's inputs
+    size_t stale = 0;  // in results.json but with other inputs: recomputed (counted in computed)
+    size_t computed = 0;  // rendered now
     size_t equalTimeOff = 0;  // equal-time partners outside the tolerance
     double seconds = 0;
 };
@@ -89,4 +89,4 @@ long solveN(std::vector<std::pair<long, double>> points, double targetMs);
 // t at N on the same interpolation (proportional beyond its ends).
 double interpolateMs(std::vector<std::pair<long, double>> points, long n);
 
-} // namespace lb::experiments
+}  // namespace lb::experiments

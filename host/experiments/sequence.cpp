@@ -52,7 +52,7 @@ double flickerTerm(const Image& r0, const Image& r1, const Image& a0, const Imag
     return sum / n / (mr * ma);
 }
 
-} // namespace
+}  // namespace
 
 nlohmann::json runSequence(ocl::Runtime& rt, const photometry::Table& table, const Scene& base,
                            const SequencePath& path, const std::vector<std::string>& specs, methods::Precision p,
@@ -103,9 +103,7 @@ nlohmann::json runSequence(ocl::Runtime& rt, const photometry::Table& table, con
         for (double v : ref.px) mr += v;
         refMeanSum += mr / ref.px.size();
         prevR = std::move(ref);
-        frames.push_back({{"frame", f},
-                          {"param", path.kind == "rotate" ? sc.rotation : sc.height},
-                          {"methods", per}});
+        frames.push_back({{"frame", f}, {"param", path.kind == "rotate" ? sc.rotation : sc.height}, {"methods", per}});
     }
     nlohmann::json fl = nlohmann::json::object(), fls = nlohmann::json::object(), mean = nlohmann::json::object();
     const double seqMean = refMeanSum / path.frames;
@@ -122,4 +120,4 @@ nlohmann::json runSequence(ocl::Runtime& rt, const photometry::Table& table, con
             {"mean", mean}};
 }
 
-} // namespace lb::experiments
+}  // namespace lb::experiments

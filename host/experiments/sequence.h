@@ -44,7 +44,7 @@ Scene sequenceFrame(const Scene& base, const SequencePath& path, int f);
 struct SequenceOptions {
     std::string referenceSpec = "reference";
     methods::RenderOptions render;  // the reference's cache and progress
-    int reps = 1;                   // timed launches per frame (after the frame's image)
+    int reps = 1;  // timed launches per frame (after the frame's image)
 };
 
 // Runs the path for every method SPEC; returns the record: {"path", "frames":
@@ -54,4 +54,4 @@ nlohmann::json runSequence(ocl::Runtime& rt, const photometry::Table& table, con
                            const SequencePath& path, const std::vector<std::string>& specs, methods::Precision p,
                            const SequenceOptions& opt);
 
-} // namespace lb::experiments
+}  // namespace lb::experiments

@@ -26,7 +26,7 @@ V3 mul(const M3& m, const V3& v)
 double det(const M3& m)
 {
     return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+        m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
 }
 
 M3 inverse(const M3& m)
@@ -135,29 +135,29 @@ double albedoGL(const Brdf& b, int panels)
     double cuts[4] = {0, std::atan(std::tan(std::max(0.0, M_PI / 4 - thetaO / 2)) / a),
                       std::atan(std::tan(std::min(M_PI / 2 - 1e-12, M_PI / 4 + thetaO / 2)) / a), M_PI / 2};
     for (int seg = 0; seg < 3; ++seg)
-    for (int pv = 0; pv < panels; ++pv)
-        for (int iv = 0; iv < 8; ++iv) {
-            double len = cuts[seg + 1] - cuts[seg];
-            if (!(len > 0)) continue;
-            double psi = cuts[seg] + len * (pv + 0.5 + 0.5 * x8[iv]) / panels, wv = 0.5 * len * w8[iv] / panels;
-            double th = std::atan(a * std::tan(psi));
-            double den = so * std::sin(2 * th), phimax;
-            if (den > 0)
-                phimax = std::acos(std::clamp(-co * std::cos(2 * th) / den, -1.0, 1.0));
-            else
-                phimax = std::cos(2 * th) > 0 ? M_PI : 0.0;
-            double ct = std::cos(th), st = std::sin(th), cp = std::cos(psi);
-            double jac = a / (cp * cp) * ct * ct * st;
-            for (int pp = 0; pp < panels; ++pp)
-                for (int ip = 0; ip < 8; ++ip) {
-                    double phi = phimax * (pp + 0.5 + 0.5 * x8[ip]) / panels, wp = 0.5 * w8[ip] * phimax / panels;
-                    V3 h{st * std::cos(phi), st * std::sin(phi), ct};
-                    double oh = V[0] * h[0] + V[1] * h[1] + V[2] * h[2];
-                    if (!(oh > 0)) continue;
-                    V3 L{2 * oh * h[0] - V[0], 2 * oh * h[1] - V[1], 2 * oh * h[2] - V[2]};
-                    sum += wv * wp * jac * b.fcos(L) * 4 * oh;
-                }
-        }
+        for (int pv = 0; pv < panels; ++pv)
+            for (int iv = 0; iv < 8; ++iv) {
+                double len = cuts[seg + 1] - cuts[seg];
+                if (!(len > 0)) continue;
+                double psi = cuts[seg] + len * (pv + 0.5 + 0.5 * x8[iv]) / panels, wv = 0.5 * len * w8[iv] / panels;
+                double th = std::atan(a * std::tan(psi));
+                double den = so * std::sin(2 * th), phimax;
+                if (den > 0)
+                    phimax = std::acos(std::clamp(-co * std::cos(2 * th) / den, -1.0, 1.0));
+                else
+                    phimax = std::cos(2 * th) > 0 ? M_PI : 0.0;
+                double ct = std::cos(th), st = std::sin(th), cp = std::cos(psi);
+                double jac = a / (cp * cp) * ct * ct * st;
+                for (int pp = 0; pp < panels; ++pp)
+                    for (int ip = 0; ip < 8; ++ip) {
+                        double phi = phimax * (pp + 0.5 + 0.5 * x8[ip]) / panels, wp = 0.5 * w8[ip] * phimax / panels;
+                        V3 h{st * std::cos(phi), st * std::sin(phi), ct};
+                        double oh = V[0] * h[0] + V[1] * h[1] + V[2] * h[2];
+                        if (!(oh > 0)) continue;
+                        V3 L{2 * oh * h[0] - V[0], 2 * oh * h[1] - V[1], 2 * oh * h[2] - V[2]};
+                        sum += wv * wp * jac * b.fcos(L) * 4 * oh;
+                    }
+            }
     return 2 * sum;
 }
 
@@ -214,7 +214,7 @@ double objective(const std::vector<double>& x, std::vector<double>&, void* data)
     return std::isfinite(e) ? e : 1e300;
 }
 
-} // namespace
+}  // namespace
 
 double Table::alpha(int i) const
 {
@@ -222,10 +222,7 @@ double Table::alpha(int i) const
     return std::max(r * r, options.alphaMin);
 }
 
-double Table::theta(int j) const
-{
-    return std::min(double(j) / (options.size - 1) * M_PI / 2, options.thetaMax);
-}
+double Table::theta(int j) const { return std::min(double(j) / (options.size - 1) * M_PI / 2, options.thetaMax); }
 
 double ltcDensity(const Cell& c, double wx, double wy, double wz)
 {
@@ -244,8 +241,7 @@ double albedo(double alpha, double theta, int normPanels)
 Table fit(const FitOptions& o, void (*progress)(const Table&, int, int, void*), void* user)
 {
     if (o.size < 2 || o.size > 1024) throw InputError(fmt::format("ltc fit: --size {} (expected 2..1024)", o.size));
-    if (o.samples < 4 || o.normPanels < 4)
-        throw InputError("ltc fit: sample grids need at least 4 points per side");
+    if (o.samples < 4 || o.normPanels < 4) throw InputError("ltc fit: sample grids need at least 4 points per side");
     Table t;
     t.options = o;
     int n = o.size;
@@ -312,4 +308,4 @@ Table fit(const FitOptions& o, void (*progress)(const Table&, int, int, void*), 
     return t;
 }
 
-} // namespace lb::ltc
+}  // namespace lb::ltc

@@ -29,29 +29,29 @@
 namespace lb::ltc {
 
 struct FitOptions {
-    int size = 64;            // n: cells per side
-    int samples = 32;         // per side of the error's sample grid (Heitz: 32)
-    int normPanels = 32;      // per side of the albedo's Gauss-Legendre panels
-    double alphaMin = 1e-4;   // alpha of the roughness-0 row
-    double thetaMax = 1.57;   // theta_o of the last column (Heitz: 1.57)
-    int maxEval = 400;        // Nelder-Mead evaluations per cell at most
-    double power = 3;         // exponent of the error |norm D - f_r cos| (Heitz: 3)
+    int size = 64;  // n: cells per side
+    int samples = 32;  // per side of the error's sample grid (Heitz: 32)
+    int normPanels = 32;  // per side of the albedo's Gauss-Legendre panels
+    double alphaMin = 1e-4;  // alpha of the roughness-0 row
+    double thetaMax = 1.57;  // theta_o of the last column (Heitz: 1.57)
+    int maxEval = 400;  // Nelder-Mead evaluations per cell at most
+    double power = 3;  // exponent of the error |norm D - f_r cos| (Heitz: 3)
 };
 
 struct Cell {
     double m00 = 1, m02 = 0, m20 = 0, m22 = 1;  // M^-1 / (M^-1)_11
-    double norm = 0;                            // int f_r cos dw
-    double error = 0;                           // Heitz's objective at the fit
-    double l1 = 0;                              // int |norm D - f_r cos| dw / norm (same samples)
-    double m11 = 1, m22p = 1, m13 = 0;          // the fitted parameters (warm start)
+    double norm = 0;  // int f_r cos dw
+    double error = 0;  // Heitz's objective at the fit
+    double l1 = 0;  // int |norm D - f_r cos| dw / norm (same samples)
+    double m11 = 1, m22p = 1, m13 = 0;  // the fitted parameters (warm start)
 };
 
 struct Table {
     FitOptions options;
     std::vector<Cell> cells;  // index j * size + i (i: roughness, j: theta_o)
     const Cell& at(int i, int j) const { return cells[static_cast<size_t>(j) * options.size + i]; }
-    double alpha(int i) const;   // alpha of row i
-    double theta(int j) const;   // theta_o of column j
+    double alpha(int i) const;  // alpha of row i
+    double theta(int j) const;  // theta_o of column j
 };
 
 // The whole fit; `progress` (may be null) is called after each cell.
@@ -77,4 +77,4 @@ std::string defaultTablePath();
 // The default table, read once per process.
 const Table& defaultTable();
 
-} // namespace lb::ltc
+}  // namespace lb::ltc

@@ -17,7 +17,7 @@ namespace lb::ltc {
 namespace {
 constexpr const char* kFormat = "lumibench-ltc-ggx";
 constexpr int kVersion = 1;
-} // namespace
+}  // namespace
 
 std::string toJson(const Table& t)
 {
@@ -53,10 +53,7 @@ std::string toJson(const Table& t)
     return s;
 }
 
-void write(const Table& t, const std::string& path)
-{
-    util::writeFileAtomic(path, toJson(t));
-}
+void write(const Table& t, const std::string& path) { util::writeFileAtomic(path, toJson(t)); }
 
 Table read(const std::string& path)
 {
@@ -68,7 +65,8 @@ Table read(const std::string& path)
         throw InputError(fmt::format("{}: expected an LTC table (JSON): {}", path, e.what()));
     }
     auto need = [&](const char* k) -> const nlohmann::json& {
-        if (!j.is_object() || !j.contains(k)) throw InputError(fmt::format("{}: LTC table lacks the key \"{}\"", path, k));
+        if (!j.is_object() || !j.contains(k))
+            throw InputError(fmt::format("{}: LTC table lacks the key \"{}\"", path, k));
         return j.at(k);
     };
     try {
@@ -126,10 +124,7 @@ std::string dataDir()
 #endif
 }
 
-std::string defaultTablePath()
-{
-    return dataDir() + "/ltc/ggx.json";
-}
+std::string defaultTablePath() { return dataDir() + "/ltc/ggx.json"; }
 
 const Table& defaultTable()
 {
@@ -139,4 +134,4 @@ const Table& defaultTable()
     return t;
 }
 
-} // namespace lb::ltc
+}  // namespace lb::ltc

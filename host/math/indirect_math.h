@@ -11,11 +11,11 @@
 
 namespace lb::f32 {
 #include "../../kernels/common/indirect.h"
-} // namespace lb::f32
+}  // namespace lb::f32
 
 namespace lb::f64 {
 #include "../../kernels/common/indirect.h"
-} // namespace lb::f64
+}  // namespace lb::f64
 
 #undef R
 #undef R2

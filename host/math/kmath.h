@@ -13,24 +13,24 @@
 #define __global
 #endif
 
-#define LB_KMATH_USING                                                         \
-    using glm::clamp;                                                          \
-    using glm::cross;                                                          \
-    using glm::dot;                                                            \
-    using glm::length;                                                         \
-    using glm::mix;                                                            \
-    using glm::normalize;                                                      \
-    using std::acos;                                                           \
-    using std::asin;                                                           \
-    using std::atan2;                                                          \
-    using std::ceil;                                                           \
-    using std::copysign;                                                       \
-    using std::cos;                                                            \
-    using std::fabs;                                                           \
-    using std::floor;                                                          \
-    using std::fmax;                                                           \
-    using std::fmin;                                                           \
-    using std::sin;                                                            \
+#define LB_KMATH_USING    \
+    using glm::clamp;     \
+    using glm::cross;     \
+    using glm::dot;       \
+    using glm::length;    \
+    using glm::mix;       \
+    using glm::normalize; \
+    using std::acos;      \
+    using std::asin;      \
+    using std::atan2;     \
+    using std::ceil;      \
+    using std::copysign;  \
+    using std::cos;       \
+    using std::fabs;      \
+    using std::floor;     \
+    using std::fmax;      \
+    using std::fmin;      \
+    using std::sin;       \
     using std::sqrt;
 
 namespace lb::f32 {
@@ -41,7 +41,7 @@ LB_KMATH_USING
 #define LB_REAL_IS_DOUBLE 0
 #include "../../kernels/common/lbmath.h"
 #undef LB_REAL_IS_DOUBLE
-} // namespace lb::f32
+}  // namespace lb::f32
 
 namespace lb::f64 {
 using real = double;
@@ -51,7 +51,7 @@ LB_KMATH_USING
 #define LB_REAL_IS_DOUBLE 1
 #include "../../kernels/common/lbmath.h"
 #undef LB_REAL_IS_DOUBLE
-} // namespace lb::f64
+}  // namespace lb::f64
 
 #undef LB_KMATH_USING
 // The short literal macros are for kernel code only; keep them out of C++.

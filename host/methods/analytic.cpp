@@ -43,4 +43,4 @@ photometry::Table loadLuminaire(const std::string& s)
     return t;
 }
 
-} // namespace lb::methods
+}  // namespace lb::methods

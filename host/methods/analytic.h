@@ -19,4 +19,4 @@ photometry::Table cosineTable(int n, double i0 = 1000.0, bool twoSided = false, 
 // strings -> photometry::load(path).
 photometry::Table loadLuminaire(const std::string& pathOrAnalytic);
 
-} // namespace lb::methods
+}  // namespace lb::methods

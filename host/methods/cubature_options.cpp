@@ -45,7 +45,7 @@ double nonNegative(const std::string& key, const std::string& v)
     return d;
 }
 
-} // namespace
+}  // namespace
 
 int parseDynamicSet(const std::string& s)
 {
@@ -79,26 +79,42 @@ CubatureOptions CubatureOptions::parse(const std::map<std::string, std::string>&
 {
     CubatureOptions o;
     for (const auto& [k, v] : kv) {
-        if (k == "triangulation") o.triangulation = choose(k, v, {"fan", "delaunay"});
-        else if (k == "weighting") o.weighting = choose(k, v, {"sample", "average", "dotout"});
-        else if (k == "normalize") o.formfactor = choose(k, v, {"none", "formfactor"}) == 1;
-        else if (k == "dynamic") o.dynamic = parseDynamicSet(v);
-        else if (k == "plane_eps") o.planeEps = nonNegative(k, v);
-        else if (k == "horizon_eps") o.horizonEps = nonNegative(k, v);
-        else if (k == "corner_inset") o.cornerInset = nonNegative(k, v);
-        else if (k == "dyn_weight") o.dynWeight = nonNegative(k, v);
-        else if (k == "blend_dist") o.blendDist = nonNegative(k, v);
-        else if (k == "lookup") o.lut = choose(k, v, {"lut", "exact"}) == 0;
-        else if (k == "specialize") o.specialize = choose(k, v, {"auto", "none"}) == 0;
-        else if (k == "lanes") o.lanes = std::array<int, 3>{0, 1, 8}[choose(k, v, {"auto", "1", "8"})];
-        else if (k == "area") o.area = std::array<int, 3>{0, 2, 3}[choose(k, v, {"none", "gauss2", "gauss3"})];
-        else if (k == "area_q") o.areaQ = nonNegative(k, v);
-        else if (k == "area_sin") o.areaSin = nonNegative(k, v);
+        if (k == "triangulation")
+            o.triangulation = choose(k, v, {"fan", "delaunay"});
+        else if (k == "weighting")
+            o.weighting = choose(k, v, {"sample", "average", "dotout"});
+        else if (k == "normalize")
+            o.formfactor = choose(k, v, {"none", "formfactor"}) == 1;
+        else if (k == "dynamic")
+            o.dynamic = parseDynamicSet(v);
+        else if (k == "plane_eps")
+            o.planeEps = nonNegative(k, v);
+        else if (k == "horizon_eps")
+            o.horizonEps = nonNegative(k, v);
+        else if (k == "corner_inset")
+            o.cornerInset = nonNegative(k, v);
+        else if (k == "dyn_weight")
+            o.dynWeight = nonNegative(k, v);
+        else if (k == "blend_dist")
+            o.blendDist = nonNegative(k, v);
+        else if (k == "lookup")
+            o.lut = choose(k, v, {"lut", "exact"}) == 0;
+        else if (k == "specialize")
+            o.specialize = choose(k, v, {"auto", "none"}) == 0;
+        else if (k == "lanes")
+            o.lanes = std::array<int, 3>{0, 1, 8}[choose(k, v, {"auto", "1", "8"})];
+        else if (k == "area")
+            o.area = std::array<int, 3>{0, 2, 3}[choose(k, v, {"none", "gauss2", "gauss3"})];
+        else if (k == "area_q")
+            o.areaQ = nonNegative(k, v);
+        else if (k == "area_sin")
+            o.areaSin = nonNegative(k, v);
         else
-            throw InputError(fmt::format("cubature: unknown parameter '{}' (expected triangulation, weighting, "
-                                         "normalize, dynamic, plane_eps, horizon_eps, corner_inset, dyn_weight, blend_dist, "
-                                         "lookup, specialize, lanes, area, area_q, area_sin)",
-                                         k));
+            throw InputError(
+                fmt::format("cubature: unknown parameter '{}' (expected triangulation, weighting, "
+                            "normalize, dynamic, plane_eps, horizon_eps, corner_inset, dyn_weight, blend_dist, "
+                            "lookup, specialize, lanes, area, area_q, area_sin)",
+                            k));
     }
     return o;
 }
@@ -130,4 +146,4 @@ std::map<std::string, std::string> CubatureOptions::describe() const
             {"area_sin", fmt::format("{}", areaSin)}};
 }
 
-} // namespace lb::methods
+}  // namespace lb::methods

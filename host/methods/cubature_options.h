@@ -21,10 +21,10 @@ inline constexpr double kDefaultAreaQ = 0.5;
 inline constexpr double kDefaultAreaSin = 0.5;
 
 struct CubatureOptions {
-    int triangulation = 0; // 0 fan (paper 5.2), 1 delaunay (Lawson flips, thesis 5.2)
-    int weighting = 1;     // 0 sample (paper Eq. 9), 1 average (Eq. 10), 2 dotout
-    bool formfactor = false; // normalize: none | formfactor (thesis Eq. 5.11)
-    int dynamic = 1;       // bit set: 1 cp, 2 np, 4 mrp, 8 barycentre
+    int triangulation = 0;  // 0 fan (paper 5.2), 1 delaunay (Lawson flips, thesis 5.2)
+    int weighting = 1;  // 0 sample (paper Eq. 9), 1 average (Eq. 10), 2 dotout
+    bool formfactor = false;  // normalize: none | formfactor (thesis Eq. 5.11)
+    int dynamic = 1;  // bit set: 1 cp, 2 np, 4 mrp, 8 barycentre
     // plane_eps (metres): receivers closer than this to the light's plane are
     // moved to this distance (paper 5.3). 1 mm on a 1 m light: at that
     // distance the radiance's 1/|n_L . d| is resolved in float to ~1e-4
@@ -79,4 +79,4 @@ struct CubatureOptions {
 int parseDynamicSet(const std::string& s);
 std::string dynamicSetName(int mask);
 
-} // namespace lb::methods
+}  // namespace lb::methods

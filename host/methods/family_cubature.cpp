@@ -27,7 +27,7 @@ int popcount(int m)
     return n;
 }
 
-} // namespace
+}  // namespace
 
 namespace {
 
@@ -64,10 +64,11 @@ Family cubatureFamily()
         Param::real("dyn_weight", 1.0, 0.0, 4.0, Scale::Linear,
                     "scale of the dynamic samples' weights, all weights rescaled to the same sum (1 = the "
                     "triangulation's weights)"),
-        Param::real("blend_dist", 1e6, 0.4, 1e6, Scale::Log,
-                    "beyond this distance (m) from the light's centre the result blends linearly into a 3 x 3 grid "
-                    "MC estimate, fully MC from 1.5x on (thesis 6.6; the default 1e6 = never: beyond every scene of the "
-                    "suite, the h = 1000 far-field stability cases included)"),
+        Param::real(
+            "blend_dist", 1e6, 0.4, 1e6, Scale::Log,
+            "beyond this distance (m) from the light's centre the result blends linearly into a 3 x 3 grid "
+            "MC estimate, fully MC from 1.5x on (thesis 6.6; the default 1e6 = never: beyond every scene of the "
+            "suite, the h = 1000 far-field stability cases included)"),
         Param::choice("lookup", "lut", {"lut", "exact"},
                       "intensity lookup: trig-free table (photometry/lut.h, as mc) or the exact bilinear one"),
         Param::choice("specialize", "auto", {"auto", "none"},
@@ -114,7 +115,8 @@ Family cubatureFamily()
     f.lumBuffer = [](const MethodSpec& s, const photometry::Table& t) {
         return options(s).lut ? photometry::buildLut(t).packed : t.packed();
     };
-    f.args = {"stats", "want_stats", "plane_eps", "horizon_eps", "corner_inset", "dyn_weight", "blend_dist", "area_q", "area_sin"};
+    f.args = {"stats",      "want_stats", "plane_eps", "horizon_eps", "corner_inset",
+              "dyn_weight", "blend_dist", "area_q",    "area_sin"};
     f.statsSwitch = "want_stats";
     f.setArgs = [](LaunchContext& c) {
         CubatureOptions o = options(c.spec);
@@ -158,7 +160,7 @@ Family cubatureFamily()
     return f;
 }
 
-} // namespace
+}  // namespace
 
 void registerCubature(Registry& r) { r.add(cubatureFamily()); }
 
@@ -178,4 +180,4 @@ void registerRobust(Registry& r)
     r.add(f);
 }
 
-} // namespace lb::methods
+}  // namespace lb::methods

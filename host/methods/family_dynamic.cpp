@@ -27,7 +27,7 @@ Family dynamicFamily(const std::string& name, const std::string& define, const s
     f.setArgs = [skew](LaunchContext& c) { c.realArg("skew", skew ? c.spec.num("skew") : 0.1); };
     return f;
 }
-} // namespace
+}  // namespace
 
 void registerDynamic(Registry& r)
 {
@@ -35,10 +35,9 @@ void registerDynamic(Registry& r)
                         "-DLB_DYN_RECT", false));
     r.add(dynamicFamily("cp", "-DLB_DYN_CP", "one sample at the closest point of the clipped light", false,
                         "-DLB_DYN_RECT", true));
-    r.add(dynamicFamily("np", "-DLB_DYN_NP", "one sample at the (clamped) normal point", true, "-DLB_DYN_RECT",
+    r.add(dynamicFamily("np", "-DLB_DYN_NP", "one sample at the (clamped) normal point", true, "-DLB_DYN_RECT", true));
+    r.add(dynamicFamily("mrp", "-DLB_DYN_MRP", "one sample at the most representative point", true, "-DLB_DYN_RECT",
                         true));
-    r.add(dynamicFamily("mrp", "-DLB_DYN_MRP", "one sample at the most representative point", true,
-                        "-DLB_DYN_RECT", true));
 }
 
-} // namespace lb::methods
+}  // namespace lb::methods

@@ -15,14 +15,14 @@ namespace lb::methods {
 
 namespace {
 
-constexpr int kTex = 8;    // reals per texel / centre / light (kernels/indirect.cl)
+constexpr int kTex = 8;  // reals per texel / centre / light (kernels/indirect.cl)
 constexpr int kPart = 16;  // reals per cluster partial sum
 
 // ---- reference ----
 
 // The E_dir node grid of common/indirect.h for cells of about `cell` metres.
 struct NodeGrid {
-    std::vector<cl_int> grid;   // (gs, gt, first node) per surface
+    std::vector<cl_int> grid;  // (gs, gt, first node) per surface
     std::vector<cl_int> cells;  // first cell per surface, then the count
     int nodes = 0;
 };
@@ -48,8 +48,8 @@ NodeGrid nodeGrid(double cell)
 
 cl::Buffer intBuffer(LaunchContext& c, const std::vector<cl_int>& v)
 {
-    cl::Buffer b(c.rt.context(), CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, std::max<size_t>(v.size(), 1) * sizeof(cl_int),
-                 const_cast<cl_int*>(v.data()));
+    cl::Buffer b(c.rt.context(), CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR,
+                 std::max<size_t>(v.size(), 1) * sizeof(cl_int), const_cast<cl_int*>(v.data()));
     c.buffers.push_back(b);
     return b;
 }
@@ -128,7 +128,7 @@ void registerIndirectReference(Registry& r)
 
 bool powerOfTwo(long n) { return n > 0 && (n & (n - 1)) == 0; }
 
-int rsmSide(const LaunchContext& c) { return static_cast<int>(c.spec.integer("rsm")); }     // texels per side
+int rsmSide(const LaunchContext& c) { return static_cast<int>(c.spec.integer("rsm")); }  // texels per side
 int clusterCount(const LaunchContext& c) { return static_cast<int>(c.spec.integer("k")); }  // kmeans, acrsm
 
 std::vector<Param> rsmParams()
@@ -243,8 +243,8 @@ void registerVpl(Registry& r, const std::string& name)
     f.file = "indirect.cl";
     f.params = rsmParams();
     f.params.push_back(Param::integer("n", 256, 1, 1 << 16, Scale::Log, "number of VPLs", true));
-    f.params.push_back(Param::real("clamp", 0.1, 0.0, 1.0, Scale::Linear,
-                                   "distance (m) below which 1/r^2 is clamped (0: none)"));
+    f.params.push_back(
+        Param::real("clamp", 0.1, 0.0, 1.0, Scale::Linear, "distance (m) below which 1/r^2 is clamped (0: none)"));
     f.validate = checkRsm;
     f.defines = rsmDefines;
     f.args = {"lights", "nlights", "clamp2"};
@@ -270,7 +270,8 @@ std::vector<Param> clusterParams(long k, long iters)
 {
     auto p = rsmParams();
     p.push_back(Param::integer("k", k, 1, 1024, Scale::Log, "number of clusters (virtual area lights)", true));
-    p.push_back(Param::integer("iters", iters, 1, 64, Scale::Linear, "Lloyd iterations (mapping + averaging) per frame"));
+    p.push_back(
+        Param::integer("iters", iters, 1, 64, Scale::Linear, "Lloyd iterations (mapping + averaging) per frame"));
     p.push_back(Param::real("wx", 1.0, 0.0, 10.0, Scale::Linear, "weight of the normalized distance (seed Eq. 4.4)"));
     p.push_back(Param::real("wn", 1.0, 0.0, 10.0, Scale::Linear, "weight of the normal difference 1 - |n_c . n|"));
     p.push_back(Param::real("wb", 0.2, 0.0, 10.0, Scale::Linear,
@@ -292,9 +293,9 @@ void setupClusters(LaunchContext& c)
     c.named["state"] = c.outputReals(static_cast<size_t>(kTex) * K);
     std::vector<double> zero(static_cast<size_t>(kTex) * K, 0.0);
     std::vector<float> zf(zero.size(), 0.0f);
-    c.rt.queue().enqueueWriteBuffer(c.named["state"], CL_TRUE, 0,
-                                    c.dbl() ? zero.size() * sizeof(double) : zf.size() * sizeof(float),
-                                    c.dbl() ? static_cast<const void*>(zero.data()) : static_cast<const void*>(zf.data()));
+    c.rt.queue().enqueueWriteBuffer(
+        c.named["state"], CL_TRUE, 0, c.dbl() ? zero.size() * sizeof(double) : zf.size() * sizeof(float),
+        c.dbl() ? static_cast<const void*>(zero.data()) : static_cast<const void*>(zf.data()));
     c.bind(c.pass("km_partial"), c.named["tex"], cl_int(T), c.named["label"], cl_int(K), c.named["centres"],
            c.named["partial"]);
     c.bind(c.pass("km_reduce"), c.named["partial"], cl_int(T), cl_int(K), c.named["centres"], c.named["lights"],
@@ -370,8 +371,8 @@ void registerAcrsm(Registry& r)
         long levels = 0;
         while ((1L << levels) < s.integer("rsm")) ++levels;
         if (s.integer("warp_stop") >= levels)
-            throw InputError(fmt::format("method acrsm: warp_stop={} must be below log2(rsm) = {}",
-                                         s.integer("warp_stop"), levels));
+            throw InputError(
+                fmt::format("method acrsm: warp_stop={} must be below log2(rsm) = {}", s.integer("warp_stop"), levels));
         if (s.integer("k") > 1024) throw InputError("method acrsm: k at most 1024");
     };
     f.defines = rsmDefines;
@@ -394,9 +395,9 @@ void registerAcrsm(Registry& r)
         c.bind(c.pass("pyr_base"), c.named["tex"], cl_int(T), c.named["pyr"]);
         for (int m = 0; m < levels; ++m) {
             // one kernel object per level: the arguments differ
-            cl::Kernel& pd = c.passKernels.emplace(fmt::format("pyr_down{}", m),
-                                                   c.rt.kernel(c.family.file, "pyr_down", c.options))
-                                 .first->second;
+            cl::Kernel& pd =
+                c.passKernels.emplace(fmt::format("pyr_down{}", m), c.rt.kernel(c.family.file, "pyr_down", c.options))
+                    .first->second;
             c.bind(pd, c.named["pyr"], cl_int(off[m]), cl_int(T >> m), cl_int(off[m + 1]));
         }
         using Real = LaunchContext::Real;
@@ -418,8 +419,9 @@ void registerAcrsm(Registry& r)
         ev.push_back({"cluster", c.rt.launch2D(c.pass("pyr_base"), T, T, 8, 8)});
         for (int m = 0; m < levels; ++m) {
             const int n = std::max(1, (T >> m) / 2);
-            ev.push_back({"cluster", c.rt.launch2D(c.passKernels.at(fmt::format("pyr_down{}", m)), n, n,
-                                                   std::min(8, n), std::min(8, n))});
+            ev.push_back(
+                {"cluster",
+                 c.rt.launch2D(c.passKernels.at(fmt::format("pyr_down{}", m)), n, n, std::min(8, n), std::min(8, n))});
         }
         if (c.frame > 0) {
             cl::Kernel& e = c.pass("ac_evaluate");
@@ -441,7 +443,7 @@ void registerAcrsm(Registry& r)
     r.add(f);
 }
 
-} // namespace
+}  // namespace
 
 void registerIndirect(Registry& r)
 {
@@ -452,4 +454,4 @@ void registerIndirect(Registry& r)
     registerAcrsm(r);
 }
 
-} // namespace lb::methods
+}  // namespace lb::methods

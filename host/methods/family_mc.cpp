@@ -37,4 +37,4 @@ void registerMc(Registry& r)
     r.add(f);
 }
 
-} // namespace lb::methods
+}  // namespace lb::methods

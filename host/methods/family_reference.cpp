@@ -59,4 +59,4 @@ void registerReference(Registry& r)
     r.add(f);
 }
 
-} // namespace lb::methods
+}  // namespace lb::methods

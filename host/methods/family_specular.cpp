@@ -11,7 +11,6 @@
 #include "methods/samples.h"
 #include "methods/straight.h"
 
-
 namespace lb::methods {
 
 void registerSpecular(Registry& r)
@@ -53,7 +52,8 @@ void registerSpecular(Registry& r)
         f.lumBuffer = lookupBuffer;
         f.defines = [](const MethodSpec& s) {
             const std::string& m = s.str("sampling");
-            std::string d = m == "light" ? std::string() : (m == "vndf" ? "-DLB_SMC_SAMPLING=1" : "-DLB_SMC_SAMPLING=2");
+            std::string d =
+                m == "light" ? std::string() : (m == "vndf" ? "-DLB_SMC_SAMPLING=1" : "-DLB_SMC_SAMPLING=2");
             if (s.str("lookup") == "lut") d += d.empty() ? "-DLB_LUT" : " -DLB_LUT";
             return d;
         };
@@ -117,4 +117,4 @@ void registerSpecular(Registry& r)
     }
 }
 
-} // namespace lb::methods
+}  // namespace lb::methods

@@ -19,4 +19,4 @@ void registerStructured(Registry& r)
     r.add(f);
 }
 
-} // namespace lb::methods
+}  // namespace lb::methods

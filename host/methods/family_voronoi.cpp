@@ -38,4 +38,4 @@ void registerVoronoi(Registry& r)
     r.add(f);
 }
 
-} // namespace lb::methods
+}  // namespace lb::methods

@@ -34,7 +34,7 @@ Registry builtinFamilies()
     registerRobust(r);
     return r;
 }
-} // namespace
+}  // namespace
 
 std::string kernelForm(const Family& f, const std::string& defines)
 {
@@ -154,7 +154,10 @@ cl_uint LaunchContext::argIndex(const std::string& name) const
     throw Error(fmt::format("method {}: kernel argument '{}' is not declared in Family::args", family.name, name));
 }
 
-void LaunchContext::realArg(const std::string& name, double value) { ocl::setReal(kernel, argIndex(name), value, dbl()); }
+void LaunchContext::realArg(const std::string& name, double value)
+{
+    ocl::setReal(kernel, argIndex(name), value, dbl());
+}
 
 std::vector<double> LaunchContext::readReals(cl::Buffer& b, size_t n)
 {
@@ -169,4 +172,4 @@ std::vector<double> LaunchContext::readReals(cl::Buffer& b, size_t n)
     return out;
 }
 
-} // namespace lb::methods
+}  // namespace lb::methods

@@ -68,14 +68,14 @@ struct LaunchContext {
     const photometry::Table& table;
     Precision precision;
     cl::Kernel kernel;
-    std::vector<cl::Buffer> buffers;            // kept alive until the render ends
-    std::map<std::string, Image> extraImages;   // e.g. "err" for the reference
-    std::map<std::string, cl::Buffer> named;    // buffers setArgs hands to finish (e.g. "stats")
+    std::vector<cl::Buffer> buffers;  // kept alive until the render ends
+    std::map<std::string, Image> extraImages;  // e.g. "err" for the reference
+    std::map<std::string, cl::Buffer> named;  // buffers setArgs hands to finish (e.g. "stats")
     nlohmann::json stats = nlohmann::json::object();  // named counters for the result file
-    int lanes = 1;                              // pixels of a row per work-item (Family::lanes)
-    std::string options{};                      // the program's -D options
+    int lanes = 1;  // pixels of a row per work-item (Family::lanes)
+    std::string options{};  // the program's -D options
     std::map<std::string, cl::Kernel> passKernels{};
-    int frame = 0;                              // launches since the last reset (stateful methods)
+    int frame = 0;  // launches since the last reset (stateful methods)
     // A kernel of the family's program (Family::file built with `options`) by
     // name, made once: the pre-passes' kernels.
     cl::Kernel& pass(const std::string& name);
@@ -124,12 +124,12 @@ private:
 
 struct Family {
     std::string name;
-    std::string summary;                 // one line for --help and README
+    std::string summary;  // one line for --help and README
     // The scenes it renders (DESIGN 2, 8, 9). A name may be registered once per
     // scene kind: e.g. a "reference" for the specular scene in its own family
     // file and kernel, beside the diffuse one.
     std::vector<SceneKind> scenes{SceneKind::Diffuse};
-    std::string file;                    // kernels/<file>
+    std::string file;  // kernels/<file>
     std::string kernelName = "render";
     std::vector<Param> params;
     // Optional check of a whole spec after its values are parsed (combinations
@@ -180,7 +180,7 @@ struct Family {
 // indirect scenes'): their kernels take errout, splits_out, rel_tol (spec
 // "tol") and max_splits among Family::args.
 void bindReferenceArgs(LaunchContext& c);  // the per-pixel error and split buffers, the four arguments
-void finishReference(LaunchContext& c);    // extra image "err", the split statistics
+void finishReference(LaunchContext& c);  // extra image "err", the split statistics
 // Both for a kernel whose arguments are just those four; no defines, expensive.
 void referenceIo(Family& f);
 
@@ -208,4 +208,4 @@ const Registry& registry();
 const Family& family(const std::string& name, SceneKind kind = SceneKind::Diffuse);
 bool renders(const Family& f, SceneKind kind);
 
-} // namespace lb::methods
+}  // namespace lb::methods

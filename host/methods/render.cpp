@@ -90,8 +90,8 @@ void storeCached(const std::string& base, const std::string& key, const RenderRe
     nlohmann::json images = nlohmann::json::object(), extra = nlohmann::json::array();
     auto add = [&](const std::string& name, const std::string& suffix, const Image& img) {
         std::string bytes = encodeExr(img);
-        images[name] = {{"file", stem + suffix}, {"width", img.width}, {"height", img.height},
-                        {"digest", util::digestHex(bytes)}};
+        images[name] = {
+            {"file", stem + suffix}, {"width", img.width}, {"height", img.height}, {"digest", util::digestHex(bytes)}};
         files.emplace_back(base + suffix, std::move(bytes));
     };
     add("main", ".exr", r.image);
@@ -99,8 +99,12 @@ void storeCached(const std::string& base, const std::string& key, const RenderRe
         add(name, "." + name + ".exr", img);
         extra.push_back(name);
     }
-    nlohmann::json j = {{"key", key},          {"time_ms", timingJson(r.timing)}, {"build_s", r.buildSeconds},
-                        {"stats", r.stats},    {"extra", extra},                  {"images", images}};
+    nlohmann::json j = {{"key", key},
+                        {"time_ms", timingJson(r.timing)},
+                        {"build_s", r.buildSeconds},
+                        {"stats", r.stats},
+                        {"extra", extra},
+                        {"images", images}};
     // The description last: an entry without it is not served.
     files.emplace_back(base + ".json", j.dump(1) + '\n');
     try {
@@ -115,7 +119,7 @@ void storeCached(const std::string& base, const std::string& key, const RenderRe
     }
 }
 
-} // namespace
+}  // namespace
 
 std::string cacheDir(const RenderOptions& opt)
 {
@@ -158,8 +162,8 @@ Prepared::Prepared(ocl::Runtime& rt, const photometry::Table& table, const Scene
     const int lanes = fam_.lanes ? fam_.lanes(spec_, scene_, table, rt.info(), precision) : 1;
     if (lanes > 1) options_ += fmt::format(" -DLB_LANES={}", lanes);
     double b0 = rt.buildSeconds();
-    ctx_.reset(new LaunchContext{fam_, rt, spec_, scene_, table, precision,
-                                 rt.kernel(fam_.file, fam_.kernelName, options_), {}, {}, {}, {}});
+    ctx_.reset(new LaunchContext{
+        fam_, rt, spec_, scene_, table, precision, rt.kernel(fam_.file, fam_.kernelName, options_), {}, {}, {}, {}});
     ctx_->stats = nlohmann::json::object();  // {} above made it null
     ctx_->lanes = lanes;
     ctx_->options = options_;
@@ -285,7 +289,7 @@ RenderResult render(ocl::Runtime& rt, const photometry::Table& table, const Scen
     result.buildSeconds = prep.buildSeconds();
     const int res = scene.res;
     std::string timeDefines;  // the timed kernel's options where they differ from the image's
-    nlohmann::json stageMs;   // multi-pass methods: the timed launches' stages
+    nlohmann::json stageMs;  // multi-pass methods: the timed launches' stages
     if (fam.expensive) {
         // One run (no warm-up: minutes at large sizes, and deterministic) in
         // bands of rows, progress between them; the time is the sum of the
@@ -347,4 +351,4 @@ RenderResult render(ocl::Runtime& rt, const photometry::Table& table, const Scen
     return result;
 }
 
-} // namespace lb::methods
+}  // namespace lb::methods

@@ -71,22 +71,22 @@ private:
 };
 
 struct RenderOptions {
-    int reps = 5;           // timed runs after one warm-up (expensive methods: one run)
-    int timeRes = 0;        // time at res x res pixels (DESIGN 6); 0 = the image's own res
-    bool useCache = true;   // expensive methods: reuse / store results on disk
+    int reps = 5;  // timed runs after one warm-up (expensive methods: one run)
+    int timeRes = 0;  // time at res x res pixels (DESIGN 6); 0 = the image's own res
+    bool useCache = true;  // expensive methods: reuse / store results on disk
     bool progress = false;  // expensive methods: progress on stderr
-    std::string cacheDir;   // "" = $LUMIBENCH_CACHE, else ~/.cache/lumibench
+    std::string cacheDir;  // "" = $LUMIBENCH_CACHE, else ~/.cache/lumibench
 };
 
 struct RenderResult {
-    Image image;                               // E in lux, row 0 at the top
+    Image image;  // E in lux, row 0 at the top
     std::map<std::string, Image> extraImages;  // reference: "err", the per-pixel error estimate
-    ocl::Timing timing;                        // device time of the kernel(s) (profiling events)
-    int timeRes = 0;                           // the pixels per side the timing was taken at
-    double buildSeconds = 0;                   // program build, excluded from timing
-    long nonfinite = 0;                        // pixels that are NaN or infinite
+    ocl::Timing timing;  // device time of the kernel(s) (profiling events)
+    int timeRes = 0;  // the pixels per side the timing was taken at
+    double buildSeconds = 0;  // program build, excluded from timing
+    long nonfinite = 0;  // pixels that are NaN or infinite
     nlohmann::json stats = nlohmann::json::object();  // per-method counters
-    bool cached = false;                       // taken from the cache (timing is the stored one)
+    bool cached = false;  // taken from the cache (timing is the stored one)
 };
 
 RenderResult render(ocl::Runtime& rt, const photometry::Table& table, const Scene& scene, const MethodSpec& spec,
@@ -98,4 +98,4 @@ RenderResult render(ocl::Runtime& rt, const photometry::Table& table, const Scen
 std::string cacheDir(const RenderOptions& opt);
 std::string cacheKey(const photometry::Table& table, const Scene& scene, const MethodSpec& spec, Precision p);
 
-} // namespace lb::methods
+}  // namespace lb::methods

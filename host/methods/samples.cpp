@@ -40,7 +40,8 @@ std::vector<double> samplePoints(const std::string& pattern, int n, std::uint64_
     } else if (pattern == "stratified") {
         int rows = std::max(1, static_cast<int>(std::floor(std::sqrt(static_cast<double>(n)))));
         for (int r = 0; r < rows; ++r) {
-            int a = static_cast<int>(static_cast<long>(n) * r / rows), b = static_cast<int>(static_cast<long>(n) * (r + 1) / rows);
+            int a = static_cast<int>(static_cast<long>(n) * r / rows),
+                b = static_cast<int>(static_cast<long>(n) * (r + 1) / rows);
             for (int k = a; k < b; ++k) {
                 st.push_back((k - a + U(rng)) / (b - a));
                 st.push_back((r + U(rng)) / rows);
@@ -73,4 +74,4 @@ std::vector<double> samplePoints(const std::string& pattern, int n, std::uint64_
     return st;
 }
 
-} // namespace lb::methods
+}  // namespace lb::methods

@@ -18,4 +18,4 @@ std::vector<double> samplePoints(const std::string& pattern, int n, std::uint64_
 // The radical inverse of i in base b (Halton coordinate).
 double radicalInverse(std::uint64_t i, unsigned base);
 
-} // namespace lb::methods
+}  // namespace lb::methods

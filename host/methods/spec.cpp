@@ -19,7 +19,7 @@ const Param& paramOf(const Family& f, const std::string& key)
     throw InputError(fmt::format("method {}: unknown parameter '{}'; valid: {}", f.name, key,
                                  names.empty() ? std::string("(none)") : fmt::format("{}", fmt::join(names, ", "))));
 }
-} // namespace
+}  // namespace
 
 MethodSpec parseSpec(const std::string& text, SceneKind kind)
 {
@@ -100,4 +100,4 @@ nlohmann::json MethodSpec::paramsJson() const
     return j;
 }
 
-} // namespace lb::methods
+}  // namespace lb::methods

@@ -14,13 +14,13 @@ namespace lb::methods {
 
 struct MethodSpec {
     std::string name;
-    SceneKind kind = SceneKind::Diffuse;        // the scene its family renders (family(name, kind))
+    SceneKind kind = SceneKind::Diffuse;  // the scene its family renders (family(name, kind))
     std::map<std::string, std::string> values;  // every parameter, canonical text, defaults filled in
-    std::set<std::string> given;                // the keys the SPEC named
+    std::set<std::string> given;  // the keys the SPEC named
 
     double num(const std::string& key) const;  // Real / Int parameters
     long integer(const std::string& key) const;
-    const std::string& str(const std::string& key) const;     // Choice parameters
+    const std::string& str(const std::string& key) const;  // Choice parameters
     std::vector<std::string> list(const std::string& key) const;  // List parameters
     bool has(const std::string& key) const { return values.count(key) != 0; }
 
@@ -36,4 +36,4 @@ struct MethodSpec {
 // or a bad value.
 MethodSpec parseSpec(const std::string& text, SceneKind kind = SceneKind::Diffuse);
 
-} // namespace lb::methods
+}  // namespace lb::methods

@@ -24,8 +24,14 @@ std::string Specialization::defines() const
 
 nlohmann::json Specialization::json() const
 {
-    return {{"lut", lut}, {"lut1d", lut && lut1d}, {"no_horizon", noHorizon}, {"no_back", noBack}, {"rect_fan", rectFan},
-            {"rect_del", rectDel}, {"rect_clip", (rectFan || rectDel) && rectClip}, {"blend", blend}};
+    return {{"lut", lut},
+            {"lut1d", lut && lut1d},
+            {"no_horizon", noHorizon},
+            {"no_back", noBack},
+            {"rect_fan", rectFan},
+            {"rect_del", rectDel},
+            {"rect_clip", (rectFan || rectDel) && rectClip},
+            {"blend", blend}};
 }
 
 bool lightAboveEveryHorizon(const Scene& scene, double margin)
@@ -46,7 +52,8 @@ bool horizonAlongU(const Scene& scene)
     // and in double: the straight-line clip needs au == 0 exactly.
     auto P = scene.params();
     double au = P[LB_P_NX] * P[LB_P_U] + P[LB_P_NX + 1] * P[LB_P_U + 1] + P[LB_P_NX + 2] * P[LB_P_U + 2];
-    float auf = float(P[LB_P_NX]) * float(P[LB_P_U]) + float(P[LB_P_NX + 1]) * float(P[LB_P_U + 1]) + float(P[LB_P_NX + 2]) * float(P[LB_P_U + 2]);
+    float auf = float(P[LB_P_NX]) * float(P[LB_P_U]) + float(P[LB_P_NX + 1]) * float(P[LB_P_U + 1]) +
+        float(P[LB_P_NX + 2]) * float(P[LB_P_U + 2]);
     return au == 0 && auf == 0;
 }
 
@@ -64,7 +71,7 @@ double farthestPixel(const Scene& scene)
     return far;
 }
 
-} // namespace
+}  // namespace
 
 Specialization analyseCubature(const Scene& scene, const photometry::Table& table, const CubatureOptions& o)
 {
@@ -77,7 +84,8 @@ Specialization analyseCubature(const Scene& scene, const photometry::Table& tabl
     bool noBlend = farthestPixel(scene) * (1 + 1e-6) < o.blendDist;
     // Delaunay over corners + CP never flips on an unclipped rectangle (the
     // header's proof): it is the fan around CP.
-    bool fanCp = (o.triangulation == 0 && (o.dynamic == 1 || o.dynamic == 0)) || (o.triangulation == 1 && o.dynamic == 1);
+    bool fanCp =
+        (o.triangulation == 0 && (o.dynamic == 1 || o.dynamic == 0)) || (o.triangulation == 1 && o.dynamic == 1);
     bool delCpBary = o.triangulation == 1 && o.dynamic == (1 | 8);  // LB_CUB_CP | LB_CUB_BARY
     bool unclipped = lightAboveEveryHorizon(scene, o.horizonEps + o.planeEps);
     // Otherwise the straight-line forms run on what the horizon leaves where
@@ -105,7 +113,7 @@ Specialization analyse(const Scene& scene, const photometry::Table& table, bool 
     return s;
 }
 
-} // namespace lb::methods
+}  // namespace lb::methods
 
 namespace lb::methods {
 
@@ -116,4 +124,4 @@ int cubatureLanes(const Specialization& s, const CubatureOptions& o, const std::
     return deviceType == "CPU" ? 8 : 1;
 }
 
-} // namespace lb::methods
+}  // namespace lb::methods

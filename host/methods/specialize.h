@@ -86,14 +86,14 @@
 namespace lb::methods {
 
 struct Specialization {
-    bool lut = false;        // LB_LUT: trig-free table (common/lut.h)
-    bool lut1d = false;      // LB_LUT_1D
+    bool lut = false;  // LB_LUT: trig-free table (common/lut.h)
+    bool lut1d = false;  // LB_LUT_1D
     bool noHorizon = false;  // LB_NO_HORIZON
-    bool noBack = false;     // LB_NO_BACK
-    bool rectFan = false;    // LB_CUB_RECT_FAN (cubature only)
-    bool rectDel = false;    // LB_CUB_RECT_DEL (cubature only)
-    bool rectClip = false;   // LB_CUB_RECT_CLIP: with rectFan / rectDel, the horizon cuts along u
-    bool blend = false;      // LB_CUB_BLEND: some pixel blends (with rectFan / rectDel)
+    bool noBack = false;  // LB_NO_BACK
+    bool rectFan = false;  // LB_CUB_RECT_FAN (cubature only)
+    bool rectDel = false;  // LB_CUB_RECT_DEL (cubature only)
+    bool rectClip = false;  // LB_CUB_RECT_CLIP: with rectFan / rectDel, the horizon cuts along u
+    bool blend = false;  // LB_CUB_BLEND: some pixel blends (with rectFan / rectDel)
 
     std::string defines() const;  // " -DLB_LUT ..." (leading space when not empty)
     nlohmann::json json() const;
@@ -121,4 +121,4 @@ bool horizonAlongU(const Scene& scene);
 // every pixel.
 bool lightAboveEveryHorizon(const Scene& scene, double margin = 0);
 
-} // namespace lb::methods
+}  // namespace lb::methods

@@ -47,4 +47,4 @@ void addStraightLineOptions(Family& f, const std::string& define, StraightApplie
     };
 }
 
-} // namespace lb::methods
+}  // namespace lb::methods

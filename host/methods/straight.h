@@ -35,4 +35,4 @@ void addStraightLineOptions(Family& f, const std::string& define, StraightApplie
 // exact one. These families (and mc, the specular mc and ltc) use it.
 std::vector<float> lookupBuffer(const MethodSpec& s, const photometry::Table& t);
 
-} // namespace lb::methods
+}  // namespace lb::methods

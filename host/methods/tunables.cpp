@@ -55,10 +55,14 @@ Param Param::list(std::string n, std::string d, std::vector<std::string> c, std:
 std::string Param::allowed() const
 {
     switch (kind) {
-    case Kind::Real: return fmt::format("a number in [{}, {}]", lo, hi);
-    case Kind::Int: return fmt::format("an integer in [{}, {}]", lo, hi);
-    case Kind::Choice: return fmt::format("one of {}", fmt::join(choices, "|"));
-    case Kind::List: return fmt::format("a '+'-joined list of {}", fmt::join(choices, "|"));
+    case Kind::Real:
+        return fmt::format("a number in [{}, {}]", lo, hi);
+    case Kind::Int:
+        return fmt::format("an integer in [{}, {}]", lo, hi);
+    case Kind::Choice:
+        return fmt::format("one of {}", fmt::join(choices, "|"));
+    case Kind::List:
+        return fmt::format("a '+'-joined list of {}", fmt::join(choices, "|"));
     }
     return "";
 }
@@ -113,4 +117,4 @@ std::vector<TunableRow> tunables()
     return rows;
 }
 
-} // namespace lb::methods
+}  // namespace lb::methods

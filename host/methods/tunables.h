@@ -17,12 +17,12 @@ enum class Scale { Linear, Log };
 struct Param {
     std::string name;
     Kind kind = Kind::Real;
-    std::string def;                   // default, as it would be written in a SPEC
-    double lo = 0, hi = 0;             // bounds of Real / Int values (inclusive)
-    Scale scale = Scale::Linear;       // how a tuner should search [lo, hi]
+    std::string def;  // default, as it would be written in a SPEC
+    double lo = 0, hi = 0;  // bounds of Real / Int values (inclusive)
+    Scale scale = Scale::Linear;  // how a tuner should search [lo, hi]
     std::vector<std::string> choices;  // Choice: one of them; List: '+'-joined subset
     std::string meaning;
-    bool tunable = false;              // continuous knob a tuner may search (Real/Int)
+    bool tunable = false;  // continuous knob a tuner may search (Real/Int)
 
     static Param real(std::string n, double d, double lo, double hi, Scale s, std::string m, bool tune = true);
     static Param integer(std::string n, long d, long lo, long hi, Scale s, std::string m, bool tune = false);
@@ -43,4 +43,4 @@ struct TunableRow {
 // Every parameter of every registered method, in registration order.
 std::vector<TunableRow> tunables();
 
-} // namespace lb::methods
+}  // namespace lb::methods

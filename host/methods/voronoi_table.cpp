@@ -20,4 +20,4 @@ std::vector<float> voronoiTable(int res, double w, double l)
     return t;
 }
 
-} // namespace lb::methods
+}  // namespace lb::methods

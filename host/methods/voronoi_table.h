@@ -10,4 +10,4 @@ namespace lb::methods {
 // fractions per node (layout: lb_voronoi_lookup). res >= 2.
 std::vector<float> voronoiTable(int res, double w, double l);
 
-} // namespace lb::methods
+}  // namespace lb::methods

@@ -109,7 +109,8 @@ private:
         }
         if (!fs::exists(script, ec)) return fail(fmt::format("the co-process script {} is missing", script));
         std::string tmpl = (fs::temp_directory_path(ec) / "lumibench-flip-XXXXXX").string();
-        if (!mkdtemp(tmpl.data())) return fail(fmt::format("cannot make a temporary directory {}: {}", tmpl, std::strerror(errno)));
+        if (!mkdtemp(tmpl.data()))
+            return fail(fmt::format("cannot make a temporary directory {}: {}", tmpl, std::strerror(errno)));
         dir_ = tmpl;
 
         int sv[2];
@@ -136,8 +137,9 @@ private:
             ready_ = hello["ready"].get<std::string>();
             return;
         }
-        fail(hello.contains("unavailable") ? "flip-evaluator cannot be imported: " + hello["unavailable"].get<std::string>()
-                                           : "unexpected greeting " + hello.dump());
+        fail(hello.contains("unavailable")
+                 ? "flip-evaluator cannot be imported: " + hello["unavailable"].get<std::string>()
+                 : "unexpected greeting " + hello.dump());
     }
 
     // Not available from now on: one warning, the co-process stopped.
@@ -208,8 +210,7 @@ private:
         if (pid_ > 0) {
             if (force) kill(pid_, SIGKILL);
             int st = 0;
-            while (waitpid(pid_, &st, 0) < 0 && errno == EINTR) {
-            }
+            while (waitpid(pid_, &st, 0) < 0 && errno == EINTR) {}
         }
         pid_ = -1;
         std::error_code ec;
@@ -231,7 +232,7 @@ FlipServer& server()
     return s;
 }
 
-} // namespace
+}  // namespace
 
 std::string flipPython()
 {
@@ -247,4 +248,4 @@ double flip(const Image& reference, const Image& test)
     return server().mean(reference, test);
 }
 
-} // namespace lb::metrics
+}  // namespace lb::metrics

@@ -40,4 +40,4 @@ bool flipAvailable(std::string* why = nullptr);
 // tree's .venv/bin/python.
 std::string flipPython();
 
-} // namespace lb::metrics
+}  // namespace lb::metrics

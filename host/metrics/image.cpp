@@ -40,7 +40,7 @@ private:
     size_t pos_ = 0;
 };
 
-} // namespace
+}  // namespace
 
 std::string encodeExr(const Image& img)
 {
@@ -51,8 +51,9 @@ std::string encodeExr(const Image& img)
         header.channels().insert("Y", Imf::Channel(Imf::FLOAT));
         Imf::OutputFile file(os, header);
         Imf::FrameBuffer fb;
-        fb.insert("Y", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(f.data()), sizeof(float),
-                                  sizeof(float) * static_cast<size_t>(img.width)));
+        fb.insert("Y",
+                  Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(f.data()), sizeof(float),
+                             sizeof(float) * static_cast<size_t>(img.width)));
         file.setFrameBuffer(fb);
         file.writePixels(img.height);
     } catch (const std::exception& e) {
@@ -74,7 +75,7 @@ Image readExr(const std::string& path)
         std::vector<float> f(static_cast<size_t>(w) * h);
         Imf::FrameBuffer fb;
         char* base = reinterpret_cast<char*>(f.data()) -
-                     (static_cast<ptrdiff_t>(dw.min.x) + static_cast<ptrdiff_t>(dw.min.y) * w) * sizeof(float);
+            (static_cast<ptrdiff_t>(dw.min.x) + static_cast<ptrdiff_t>(dw.min.y) * w) * sizeof(float);
         fb.insert("Y", Imf::Slice(Imf::FLOAT, base, sizeof(float), sizeof(float) * static_cast<size_t>(w)));
         file.setFrameBuffer(fb);
         file.readPixels(dw.min.y, dw.max.y);
@@ -88,4 +89,4 @@ Image readExr(const std::string& path)
     }
 }
 
-} // namespace lb
+}  // namespace lb

@@ -26,4 +26,4 @@ void writeExr(const std::string& path, const Image& img);
 // it is missing, unreadable or has no Y channel.
 Image readExr(const std::string& path);
 
-} // namespace lb
+}  // namespace lb

@@ -15,8 +15,8 @@ namespace lb::metrics {
 void checkComparable(const Image& R, const Image& A)
 {
     if (R.width != A.width || R.height != A.height)
-        throw InputError(fmt::format("image sizes differ: reference is {}x{}, test is {}x{}", R.width, R.height,
-                                     A.width, A.height));
+        throw InputError(
+            fmt::format("image sizes differ: reference is {}x{}, test is {}x{}", R.width, R.height, A.width, A.height));
     if (R.px.empty()) throw InputError("images are empty (0 pixels)");
     for (size_t i = 0; i < R.px.size(); ++i)
         if (!std::isfinite(R.px[i]))
@@ -130,7 +130,8 @@ double minimisable(const Metrics& m, const std::string& key)
     if (key == "flip") return m.flip;
     if (key == "ueb") return m.ueb;
     if (key == "leb") return -m.leb;
-    throw InputError(fmt::format("unknown metric '{}' (expected one of {})", key, fmt::join(minimisableMetrics(), ", ")));
+    throw InputError(
+        fmt::format("unknown metric '{}' (expected one of {})", key, fmt::join(minimisableMetrics(), ", ")));
 }
 
 namespace {
@@ -146,16 +147,22 @@ double newerNum(const nlohmann::json& j, const char* key)
 {
     return j.contains(key) ? num(j, key) : std::numeric_limits<double>::quiet_NaN();
 }
-} // namespace
+}  // namespace
 
 void to_json(nlohmann::json& j, const Metrics& m)
 {
-    j = nlohmann::json{{"nmse", num(m.nmse)},         {"nrmse", num(m.nrmse)},
-                       {"relmse", num(m.relmse)},     {"ueb", num(m.ueb)},
-                       {"leb", num(m.leb)},           {"nonfinite", m.nonfinite},
-                       {"pixels", m.pixels},          {"mean_ref", num(m.mean_ref)},
-                       {"mean_test", num(m.mean_test)}, {"grad_nmse", num(m.grad_nmse)},
-                       {"grad_pairs", m.grad_pairs},  {"flip", num(m.flip)}};
+    j = nlohmann::json{{"nmse", num(m.nmse)},
+                       {"nrmse", num(m.nrmse)},
+                       {"relmse", num(m.relmse)},
+                       {"ueb", num(m.ueb)},
+                       {"leb", num(m.leb)},
+                       {"nonfinite", m.nonfinite},
+                       {"pixels", m.pixels},
+                       {"mean_ref", num(m.mean_ref)},
+                       {"mean_test", num(m.mean_test)},
+                       {"grad_nmse", num(m.grad_nmse)},
+                       {"grad_pairs", m.grad_pairs},
+                       {"flip", num(m.flip)}};
 }
 
 void from_json(const nlohmann::json& j, Metrics& m)
@@ -174,4 +181,4 @@ void from_json(const nlohmann::json& j, Metrics& m)
     m.flip = newerNum(j, "flip");
 }
 
-} // namespace lb::metrics
+}  // namespace lb::metrics

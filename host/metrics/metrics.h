@@ -45,10 +45,10 @@ namespace lb::metrics {
 
 struct Metrics {
     double nmse = 0, nrmse = 0, relmse = 0;
-    double ueb = 0;        // >= 0, lux
-    double leb = 0;        // <= 0, lux
-    int64_t nonfinite = 0; // test pixels that are NaN or +-inf (excluded)
-    int64_t pixels = 0;    // all pixels of the image, non-finite ones included
+    double ueb = 0;  // >= 0, lux
+    double leb = 0;  // <= 0, lux
+    int64_t nonfinite = 0;  // test pixels that are NaN or +-inf (excluded)
+    int64_t pixels = 0;  // all pixels of the image, non-finite ones included
     double mean_ref = 0, mean_test = 0;  // over the finite pixels, lux
     double grad_nmse = 0;
     int64_t grad_pairs = 0;  // neighbour pairs in grad_nmse (those touching non-finite pixels left out)
@@ -93,4 +93,4 @@ double minimisable(const Metrics& m, const std::string& key);
 void to_json(nlohmann::json& j, const Metrics& m);
 void from_json(const nlohmann::json& j, Metrics& m);
 
-} // namespace lb::metrics
+}  // namespace lb::metrics

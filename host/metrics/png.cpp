@@ -51,4 +51,4 @@ tonemap::Picture readPng(const std::string& path)
     return pic;
 }
 
-} // namespace lb
+}  // namespace lb

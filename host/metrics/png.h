@@ -15,4 +15,4 @@ void writePng(const std::string& path, const tonemap::Picture& pic);
 // Reads any PNG as 8-bit RGB; throws lb::InputError naming the file.
 tonemap::Picture readPng(const std::string& path);
 
-} // namespace lb
+}  // namespace lb

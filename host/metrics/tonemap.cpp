@@ -49,7 +49,7 @@ Rgb8 fromWhite(Rgb8 c, double t)
     auto mix = [t](uint8_t x) { return static_cast<uint8_t>(std::lround(255.0 + t * (x - 255.0))); };
     return {mix(c.r), mix(c.g), mix(c.b)};
 }
-} // namespace
+}  // namespace
 
 Rgb8 errorColour(double d, double overBound, double underBound)
 {
@@ -70,4 +70,4 @@ Picture errorPicture(const Image& reference, const Image& test, double overBound
     return p;
 }
 
-} // namespace lb::tonemap
+}  // namespace lb::tonemap

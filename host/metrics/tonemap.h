@@ -60,4 +60,4 @@ Rgb8 errorColour(double d, double overBound, double underBound);
 // Throws lb::InputError when the sizes differ.
 Picture errorPicture(const Image& reference, const Image& test, double overBound, double underBound);
 
-} // namespace lb::tonemap
+}  // namespace lb::tonemap

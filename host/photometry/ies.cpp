@@ -83,8 +83,7 @@ static Table readIesBody(const TextFile& f, IesExtra* extraOut)
     }
     while (i < f.lines.size() && trimmed(f.lines[i]).rfind("TILT", 0) != 0) ++i;
     if (i == f.lines.size())
-        f.fail(f.lines.size() + 1, "a TILT= line (IES LM-63)",
-               f.lines.empty() ? "an empty file" : "end of file");
+        f.fail(f.lines.size() + 1, "a TILT= line (IES LM-63)", f.lines.empty() ? "an empty file" : "end of file");
     std::string tiltLine = trimmed(f.lines[i]);
     auto eq = tiltLine.find('=');
     std::string tilt = eq == std::string::npos ? "" : trimmed(tiltLine.substr(eq + 1));
@@ -131,7 +130,8 @@ static Table readIesBody(const TextFile& f, IesExtra* extraOut)
     if (!(x.ballastFactor > 0)) f.fail(l, "a ballast factor > 0", fmt::format("{}", x.ballastFactor));
     l = in.lineNo();
     x.ballastLampFactor = in.number("the ballast-lamp photometric factor");
-    if (!(x.ballastLampFactor > 0)) f.fail(l, "a ballast-lamp photometric factor > 0", fmt::format("{}", x.ballastLampFactor));
+    if (!(x.ballastLampFactor > 0))
+        f.fail(l, "a ballast-lamp photometric factor > 0", fmt::format("{}", x.ballastLampFactor));
     x.inputWatts = in.number("the input watts");
 
     std::vector<double> v(nv), h(nh);
@@ -142,8 +142,7 @@ static Table readIesBody(const TextFile& f, IesExtra* extraOut)
             f.fail(l, fmt::format("vertical angles ascending (after {})", v[k - 1]), fmt::format("{}", v[k]));
     }
     if (!((v.front() == 0 || v.front() == 90) && (v.back() == 90 || v.back() == 180) && v.front() < v.back()))
-        f.fail(in.lastLine(), "vertical angles 0-90, 90-180 or 0-180",
-               fmt::format("{}-{}", v.front(), v.back()));
+        f.fail(in.lastLine(), "vertical angles 0-90, 90-180 or 0-180", fmt::format("{}-{}", v.front(), v.back()));
     for (int k = 0; k < nh; ++k) {
         l = in.lineNo();
         h[k] = in.number(fmt::format("horizontal angle {} of {}", k + 1, nh));
@@ -192,7 +191,7 @@ static Table readIesBody(const TextFile& f, IesExtra* extraOut)
     t.isym = isym;
     t.symmetry = symmetryName(isym);
     const double toM = units == 1 ? 0.3048 : 1.0;
-    t.widthM = std::abs(w) * toM; // LM-63-2019: negative = rounded shapes
+    t.widthM = std::abs(w) * toM;  // LM-63-2019: negative = rounded shapes
     t.lengthM = std::abs(len) * toM;
     t.validate();
     if (extraOut) *extraOut = x;
@@ -204,7 +203,7 @@ static std::string num(double v) { return fmt::format("{}", v); }
 std::string iesText(const Table& t, const std::string& name)
 {
     t.validate();
-    bool rotational = t.nc() == 2; // one plane read, one plane written
+    bool rotational = t.nc() == 2;  // one plane read, one plane written
     for (size_t ic = 1; ic < t.nc() && rotational; ++ic)
         for (size_t ig = 0; ig < t.ng(); ++ig)
             if (t.at(ic, ig) != t.at(0, ig)) rotational = false;
@@ -241,4 +240,4 @@ void writeIes(const Table& t, const std::string& path, const std::string& name)
     util::writeFileAtomic(path, iesText(t, name));
 }
 
-} // namespace lb::photometry
+}  // namespace lb::photometry

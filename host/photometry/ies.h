@@ -11,11 +11,11 @@ namespace lb::photometry {
 
 // What an IES file says beyond the table (kept, not applied).
 struct IesExtra {
-    std::string version;               // first line, e.g. "IESNA:LM-63-2002" ("" for LM-63-1986)
-    std::string tilt;                  // "NONE", "INCLUDE" (a TILT=<file> is rejected)
-    int tiltGeometry = 0;              // lamp-to-luminaire geometry 1..3 (INCLUDE only)
+    std::string version;  // first line, e.g. "IESNA:LM-63-2002" ("" for LM-63-1986)
+    std::string tilt;  // "NONE", "INCLUDE" (a TILT=<file> is rejected)
+    int tiltGeometry = 0;  // lamp-to-luminaire geometry 1..3 (INCLUDE only)
     std::vector<double> tiltAngles, tiltFactors;
-    double lampLumens = 0;             // per lamp; -1 = absolute photometry
+    double lampLumens = 0;  // per lamp; -1 = absolute photometry
     int lamps = 0;
     double multiplier = 1, ballastFactor = 1, ballastLampFactor = 1, inputWatts = 0;
     int photometricType = 1;
@@ -34,4 +34,4 @@ Table readIes(const std::string& path, IesExtra* extra = nullptr);
 std::string iesText(const Table& t, const std::string& name);
 void writeIes(const Table& t, const std::string& path, const std::string& name);
 
-} // namespace lb::photometry
+}  // namespace lb::photometry

@@ -95,7 +95,9 @@ Table readLdt(const TextFile& f)
         if (!ok) f.fail(ncLine, what, fmt::format("Nc = {} with Isym = {}", nc, isym));
     };
     switch (isym) {
-    case 1: mc = 1; break;
+    case 1:
+        mc = 1;
+        break;
     case 2:
         need(nc % 2 == 0, "an even Nc for Isym 2");
         mc = nc / 2 + 1;
@@ -103,14 +105,15 @@ Table readLdt(const TextFile& f)
     case 3: {
         need(nc % 4 == 0, "Nc divisible by 4 for Isym 3");
         mc = nc / 2 + 1;
-        first = static_cast<size_t>(3 * nc / 4); // C270, then on through C0 to C90
+        first = static_cast<size_t>(3 * nc / 4);  // C270, then on through C0 to C90
         break;
     }
     case 4:
         need(nc % 4 == 0, "Nc divisible by 4 for Isym 4");
         mc = nc / 4 + 1;
         break;
-    default: break;
+    default:
+        break;
     }
     // (Isym 1 may list no angle at all; its one plane stands for every C.)
     std::vector<double> cStored = {0};
@@ -130,8 +133,8 @@ Table readLdt(const TextFile& f)
 
     // Intensities, cd/klm -> absolute cd.
     const double scale = lampFlux / 1000.0;
-    tok.requireRoom(double(mc) * ng, fmt::format("Mc x Ng = {} x {} intensities (Nc = {}, Isym = {})", mc, ng, nc, isym),
-                    ncLine);
+    tok.requireRoom(double(mc) * ng,
+                    fmt::format("Mc x Ng = {} x {} intensities (Nc = {}, Isym = {})", mc, ng, nc, isym), ncLine);
     std::vector<std::vector<double>> planes(mc, std::vector<double>(static_cast<size_t>(ng)));
     for (size_t p = 0; p < mc; ++p)
         for (int i = 0; i < ng; ++i) {
@@ -142,8 +145,9 @@ Table readLdt(const TextFile& f)
         }
     if (!tok.atEnd()) {
         size_t l = tok.lineNo();
-        f.fail(l, fmt::format("the end of the file after the {} x {} intensities (Mc x Ng for Nc = {}, Isym = {})", mc,
-                              ng, nc, isym),
+        f.fail(l,
+               fmt::format("the end of the file after the {} x {} intensities (Mc x Ng for Nc = {}, Isym = {})", mc, ng,
+                           nc, isym),
                quote(tok.token("")));
     }
 
@@ -159,7 +163,7 @@ Table readLdt(const TextFile& f)
     t.symmetry = symmetryName(isym);
     t.declaredFluxLm = lampFlux * lor / 100.0;
     t.lengthM = lenMm / 1000.0;
-    t.widthM = (widMm > 0 ? widMm : lenMm) / 1000.0; // b1 = 0: circular, diameter = length
+    t.widthM = (widMm > 0 ? widMm : lenMm) / 1000.0;  // b1 = 0: circular, diameter = length
     t.validate();
     return t;
 }
@@ -172,11 +176,11 @@ static std::string num(double v) { return fmt::format("{}", v); }
 std::string ldtText(const Table& t, const std::string& name)
 {
     t.validate();
-    bool rotational = t.nc() == 2; // write what was read: only a one-plane table as Isym 1
+    bool rotational = t.nc() == 2;  // write what was read: only a one-plane table as Isym 1
     for (size_t ic = 1; ic < t.nc() && rotational; ++ic)
         for (size_t ig = 0; ig < t.ng(); ++ig)
             if (t.at(ic, ig) != t.at(0, ig)) rotational = false;
-    size_t nc = t.nc() - 1; // the 360 plane is implied
+    size_t nc = t.nc() - 1;  // the 360 plane is implied
     // Flux and downward fraction by the trapezoidal rule on the nodes (cheap;
     // the lamp flux only sets the cd/klm scale, which reading undoes).
     double total = 0, down = 0;
@@ -242,4 +246,4 @@ void writeLdt(const Table& t, const std::string& path, const std::string& name)
     util::writeFileAtomic(path, ldtText(t, name));
 }
 
-} // namespace lb::photometry
+}  // namespace lb::photometry

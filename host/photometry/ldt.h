@@ -21,4 +21,4 @@ Table readLdt(const std::string& path);
 std::string ldtText(const Table& t, const std::string& name);
 void writeLdt(const Table& t, const std::string& path, const std::string& name);
 
-} // namespace lb::photometry
+}  // namespace lb::photometry

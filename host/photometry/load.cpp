@@ -32,4 +32,4 @@ Table load(const std::string& pathIn)
     return readLdt(f);
 }
 
-} // namespace lb::photometry
+}  // namespace lb::photometry

@@ -12,4 +12,4 @@ namespace lb::photometry {
 // with "FILE:LINE: expected ..., got ...".
 Table load(const std::string& path);
 
-} // namespace lb::photometry
+}  // namespace lb::photometry

@@ -81,8 +81,8 @@ Lut buildLut(const Table& t, int ng, int na)
         for (int ig = 0; ig <= ng; ++ig) {
             // The range's ends exactly at the file's first / last gamma.
             double g = ig == 0 ? t.gamma.front()
-                     : ig == ng ? t.gamma.back()
-                                : std::clamp(gammaOfPseudo(L.q0 + dq * ig / ng), t.gamma.front(), t.gamma.back());
+                : ig == ng     ? t.gamma.back()
+                               : std::clamp(gammaOfPseudo(L.q0 + dq * ig / ng), t.gamma.front(), t.gamma.back());
             h[LB_LUT_HEADER + ia * (ng + 1) + ig] = static_cast<float>(f64::lb_intensity_cg(exact.data(), c, g));
         }
     }
@@ -102,4 +102,4 @@ Lut buildLut(const Table& t, int ng, int na)
     return L;
 }
 
-} // namespace lb::photometry
+}  // namespace lb::photometry

@@ -10,9 +10,9 @@
 namespace lb::photometry {
 
 struct Lut {
-    int ng = 0, na = 0;         // cells along pseudo-gamma q and pseudo-azimuth a
-    double q0 = 0, q1 = 2;      // pseudo-gamma range = the measured gamma range
-    bool rotational = false;    // every C plane equal: a 1D table suffices (LB_LUT_1D)
+    int ng = 0, na = 0;  // cells along pseudo-gamma q and pseudo-azimuth a
+    double q0 = 0, q1 = 2;  // pseudo-gamma range = the measured gamma range
+    bool rotational = false;  // every C plane equal: a 1D table suffices (LB_LUT_1D)
     std::vector<float> packed;  // kernels/common/lut.h layout
     // Bound on |LUT - exact| (cd) anywhere on the sphere (see buildLut).
     double errorBound = 0;
@@ -45,4 +45,4 @@ bool emitsNoBack(const Table& t);
 // The measured range's ends are LUT nodes, so the cut to 0 outside is exact.
 Lut buildLut(const Table& t, int ng = 256, int na = 512);
 
-} // namespace lb::photometry
+}  // namespace lb::photometry

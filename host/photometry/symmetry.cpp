@@ -12,26 +12,36 @@ namespace lb::photometry {
 const char* symmetryName(int isym)
 {
     switch (isym) {
-    case 0: return "none";
-    case 1: return "rotational";
-    case 2: return "C0-C180";
-    case 3: return "C90-C270";
-    case 4: return "quadrant";
-    default: return "unknown";
+    case 0:
+        return "none";
+    case 1:
+        return "rotational";
+    case 2:
+        return "C0-C180";
+    case 3:
+        return "C90-C270";
+    case 4:
+        return "quadrant";
+    default:
+        return "unknown";
     }
 }
 
 double foldC(int isym, double c)
 {
     switch (isym) {
-    case 1: return 0;
-    case 2: return c <= 180 ? c : 360 - c;                        // I(C) = I(360 - C)
-    case 3: return c >= 90 && c <= 270 ? c : (c < 90 ? 180 - c : 540 - c); // I(C) = I(180 - C)
+    case 1:
+        return 0;
+    case 2:
+        return c <= 180 ? c : 360 - c;  // I(C) = I(360 - C)
+    case 3:
+        return c >= 90 && c <= 270 ? c : (c < 90 ? 180 - c : 540 - c);  // I(C) = I(180 - C)
     case 4: {
         double h = c <= 180 ? c : 360 - c;
         return h <= 90 ? h : 180 - h;
     }
-    default: return c; // none: 360 is looked up as 360 if stored, else as 0 (below)
+    default:
+        return c;  // none: 360 is looked up as 360 if stored, else as 0 (below)
     }
 }
 
@@ -108,4 +118,4 @@ Table unfold(int isym, const std::vector<double>& c, const std::vector<double>& 
     return t;
 }
 
-} // namespace lb::photometry
+}  // namespace lb::photometry

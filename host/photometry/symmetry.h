@@ -13,7 +13,7 @@
 
 namespace lb::photometry {
 
-const char* symmetryName(int isym); // "none", "rotational", "C0-C180", "C90-C270", "quadrant"
+const char* symmetryName(int isym);  // "none", "rotational", "C0-C180", "C90-C270", "quadrant"
 
 // The stored angle that full-table angle c (in [0, 360]) takes its values from.
 double foldC(int isym, double c);
@@ -25,4 +25,4 @@ double foldC(int isym, double c);
 Table unfold(int isym, const std::vector<double>& c, const std::vector<double>& gamma,
              const std::vector<std::vector<double>>& planes, const std::string& where);
 
-} // namespace lb::photometry
+}  // namespace lb::photometry

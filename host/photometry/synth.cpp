@@ -17,7 +17,7 @@ constexpr double kDeg = kPi / 180.0;
 struct Kind {
     std::string what;
     bool exact;
-    double (*shape)(double c, double g, double n); // relative intensity, degrees
+    double (*shape)(double c, double g, double n);  // relative intensity, degrees
     // The measured grid of the non-exact kinds: C planes over 0 .. 360 and
     // gamma angles over 0 .. gammaMax, both uniform.
     int nc = 25, ng = 73;
@@ -45,60 +45,73 @@ double cutoff(double x, double a, double b)
 const std::map<std::string, Kind>& kinds()
 {
     static const std::map<std::string, Kind> k = {
-        {"lambert", {"Lambertian I0 cos(gamma), exact flux pi I0", true, [](double, double g, double) { return cosPlus(g); }}},
-        {"phong", {"Phong I0 cos^n(gamma), exact flux 2 pi I0 / (n + 1)", true,
-                   [](double, double g, double n) { return std::pow(cosPlus(g), n); }}},
-        {"spot", {"narrow spot (like ARCOS): Gaussian beam sigma 6 deg, nothing at or above 60 deg", false,
-                  [](double, double g, double) { return bump(g, 0, 6) * cutoff(g, 30, 60); }}},
-        {"downlight", {"downlight with cut-off (like PANOS): cos^1.5 falling to 0 between 65 and 78 deg", false,
-                       [](double, double g, double) { return std::pow(cosPlus(g), 1.5) * cutoff(g, 65, 78); }}},
-        {"linear", {"near-Lambertian linear (like SLOTLIGHT): cos(gamma), narrower along C90", false,
-                    [](double c, double g, double) {
-                        double s = std::sin(g * kDeg) * std::sin(c * kDeg);
-                        return cosPlus(g) * (1 - 0.35 * s * s);
-                    }}},
-        {"diffuse", {"near-diffuse (like PERLUCE): 0.55 + 0.45 cos(gamma), emits in the light's plane and above", false,
-                     [](double c, double g, double) {
-                         return (0.55 + 0.45 * std::cos(g * kDeg)) * (1 - 0.1 * std::pow(std::sin(c * kDeg), 2));
-                     }}},
-        {"batwing", {"batwing (like MIREL): cos^3(gamma) (1 + 3 sin^2(gamma) cos^2 C), peak near 25-30 deg in C0", false,
-                     [](double c, double g, double) {
-                         double s = std::sin(g * kDeg), cc = std::cos(c * kDeg);
-                         return std::pow(cosPlus(g), 3) * (1 + 3 * s * s * cc * cc);
-                     }}},
-        {"sideways", {"asymmetric sideways emitter (like INTRO): peak at gamma 60 toward C0, no symmetry", false,
-                      [](double c, double g, double) {
-                          double toward = 0.5 + 0.5 * std::cos(c * kDeg);
-                          double side = 1 + 0.3 * std::sin(c * kDeg); // breaks the C0-C180 mirror
-                          return 0.15 * cosPlus(g) + bump(g, 60, 14) * toward * toward * side;
-                      }}},
-        {"updown", {"direct/indirect (like LINETIK-S): main peak upward at gamma 140, weaker downward part", false,
-                    [](double c, double g, double) {
-                        double cc = std::cos(c * kDeg);
-                        return 0.35 * cosPlus(g) * (1 - 0.3 * (1 - cc * cc)) + bump(g, 140, 12) * (1 + 0.2 * cc * cc);
-                    }}},
+        {"lambert",
+         {"Lambertian I0 cos(gamma), exact flux pi I0", true, [](double, double g, double) { return cosPlus(g); }}},
+        {"phong",
+         {"Phong I0 cos^n(gamma), exact flux 2 pi I0 / (n + 1)", true,
+          [](double, double g, double n) { return std::pow(cosPlus(g), n); }}},
+        {"spot",
+         {"narrow spot (like ARCOS): Gaussian beam sigma 6 deg, nothing at or above 60 deg", false,
+          [](double, double g, double) { return bump(g, 0, 6) * cutoff(g, 30, 60); }}},
+        {"downlight",
+         {"downlight with cut-off (like PANOS): cos^1.5 falling to 0 between 65 and 78 deg", false,
+          [](double, double g, double) { return std::pow(cosPlus(g), 1.5) * cutoff(g, 65, 78); }}},
+        {"linear",
+         {"near-Lambertian linear (like SLOTLIGHT): cos(gamma), narrower along C90", false,
+          [](double c, double g, double) {
+              double s = std::sin(g * kDeg) * std::sin(c * kDeg);
+              return cosPlus(g) * (1 - 0.35 * s * s);
+          }}},
+        {"diffuse",
+         {"near-diffuse (like PERLUCE): 0.55 + 0.45 cos(gamma), emits in the light's plane and above", false,
+          [](double c, double g, double) {
+              return (0.55 + 0.45 * std::cos(g * kDeg)) * (1 - 0.1 * std::pow(std::sin(c * kDeg), 2));
+          }}},
+        {"batwing",
+         {"batwing (like MIREL): cos^3(gamma) (1 + 3 sin^2(gamma) cos^2 C), peak near 25-30 deg in C0", false,
+          [](double c, double g, double) {
+              double s = std::sin(g * kDeg), cc = std::cos(c * kDeg);
+              return std::pow(cosPlus(g), 3) * (1 + 3 * s * s * cc * cc);
+          }}},
+        {"sideways",
+         {"asymmetric sideways emitter (like INTRO): peak at gamma 60 toward C0, no symmetry", false,
+          [](double c, double g, double) {
+              double toward = 0.5 + 0.5 * std::cos(c * kDeg);
+              double side = 1 + 0.3 * std::sin(c * kDeg);  // breaks the C0-C180 mirror
+              return 0.15 * cosPlus(g) + bump(g, 60, 14) * toward * toward * side;
+          }}},
+        {"updown",
+         {"direct/indirect (like LINETIK-S): main peak upward at gamma 140, weaker downward part", false,
+          [](double c, double g, double) {
+              double cc = std::cos(c * kDeg);
+              return 0.35 * cosPlus(g) * (1 - 0.3 * (1 - cc * cc)) + bump(g, 140, 12) * (1 + 0.2 * cc * cc);
+          }}},
         // Stress cases (docs/robust.md): emission in the light's own plane, a
         // beam narrower than a degree, no mirror symmetry at all.
-        {"grazing", {"stress: wall washer, a fan of light in the light's plane (peak at gamma 90, sigma 10 deg) over a "
-                     "weak cos(gamma) base",
-                     false, [](double c, double g, double) {
-                         return 0.1 * cosPlus(g) + bump(g, 90, 10) * (0.7 + 0.3 * std::pow(std::cos(c * kDeg), 2));
-                     }}},
-        {"pencil", {"stress: pencil spot, Gaussian beam sigma 0.4 deg, measured to gamma 90 deg in 0.05 deg steps",
-                    false, [](double, double g, double) { return bump(g, 0, 0.4); }, 5, 1801, 90.0}},
-        {"quadrant", {"stress: quadrant-asymmetric, cos(gamma)^1.5 with a lobe aimed into the quadrant C 0 .. 90 (peak "
-                      "near C 45, gamma 35), a tenth elsewhere; the lobe fades as sin^2(gamma) towards the axis, so "
-                      "every C plane agrees at gamma 0",
-                      false, [](double c, double g, double) {
-                          double s = std::sin(g * kDeg);
-                          return std::pow(cosPlus(g), 1.5) *
-                                 (0.1 + 3 * s * s * bump(cDistance(c, 45), 0, 30) * bump(g, 35, 15));
-                      }}},
+        {"grazing",
+         {"stress: wall washer, a fan of light in the light's plane (peak at gamma 90, sigma 10 deg) over a "
+          "weak cos(gamma) base",
+          false,
+          [](double c, double g, double) {
+              return 0.1 * cosPlus(g) + bump(g, 90, 10) * (0.7 + 0.3 * std::pow(std::cos(c * kDeg), 2));
+          }}},
+        {"pencil",
+         {"stress: pencil spot, Gaussian beam sigma 0.4 deg, measured to gamma 90 deg in 0.05 deg steps", false,
+          [](double, double g, double) { return bump(g, 0, 0.4); }, 5, 1801, 90.0}},
+        {"quadrant",
+         {"stress: quadrant-asymmetric, cos(gamma)^1.5 with a lobe aimed into the quadrant C 0 .. 90 (peak "
+          "near C 45, gamma 35), a tenth elsewhere; the lobe fades as sin^2(gamma) towards the axis, so "
+          "every C plane agrees at gamma 0",
+          false,
+          [](double c, double g, double) {
+              double s = std::sin(g * kDeg);
+              return std::pow(cosPlus(g), 1.5) * (0.1 + 3 * s * s * bump(cDistance(c, 45), 0, 30) * bump(g, 35, 15));
+          }}},
     };
     return k;
 }
 
-} // namespace
+}  // namespace
 
 std::vector<std::string> synthKinds()
 {
@@ -125,7 +138,8 @@ Table synth(const std::string& kind, const SynthParams& p)
     // far below photometry::kMaxCandela, which the readers enforce.
     if (!(p.flux > 0 && p.flux <= 1e9))
         throw InputError(fmt::format("luminaire synth: expected --flux in (0, 1e9] lm, got {}", p.flux));
-    if (!(p.n >= 0 && p.n <= 10000)) throw InputError(fmt::format("luminaire synth: expected --n in [0, 10000], got {}", p.n));
+    if (!(p.n >= 0 && p.n <= 10000))
+        throw InputError(fmt::format("luminaire synth: expected --n in [0, 10000], got {}", p.n));
     const Kind& k = it->second;
     Table t;
     double n = p.n;
@@ -137,7 +151,7 @@ Table synth(const std::string& kind, const SynthParams& p)
         double i0 = kind == "lambert" ? p.flux / kPi : p.flux * (n + 1) / (2 * kPi);
         int ng = static_cast<int>(std::lround(180 / p.gammaStep)) + 1;
         t = tabulate([&](double c, double g) { return i0 * shape(c, g, n); }, 2, ng, 0, 180);
-        t.declaredFluxLm = p.flux; // the closed form, not the table's integral
+        t.declaredFluxLm = p.flux;  // the closed form, not the table's integral
     } else {
         t = tabulate([&](double c, double g) { return shape(c, g, n); }, k.nc, k.ng, 0, k.gammaMax);
         double f = t.fluxLm();
@@ -150,4 +164,4 @@ Table synth(const std::string& kind, const SynthParams& p)
     return t;
 }
 
-} // namespace lb::photometry
+}  // namespace lb::photometry

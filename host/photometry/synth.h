@@ -17,8 +17,8 @@
 namespace lb::photometry {
 
 struct SynthParams {
-    double flux = 1000;      // lm
-    double n = 10;           // phong exponent
+    double flux = 1000;  // lm
+    double n = 10;  // phong exponent
     double gammaStep = 0.5;  // degrees, exact-answer profiles
 };
 
@@ -28,4 +28,4 @@ std::string synthDescription(const std::string& kind);
 // Throws InputError for an unknown kind or bad parameters.
 Table synth(const std::string& kind, const SynthParams& p = {});
 
-} // namespace lb::photometry
+}  // namespace lb::photometry

@@ -12,7 +12,9 @@ namespace lb::photometry {
 
 void Table::validate() const
 {
-    auto bad = [&](const std::string& m) { throw Error(fmt::format("luminaire table{}: {}", source.empty() ? "" : " of " + source, m)); };
+    auto bad = [&](const std::string& m) {
+        throw Error(fmt::format("luminaire table{}: {}", source.empty() ? "" : " of " + source, m));
+    };
     if (c.size() < 2) bad("needs at least 2 C planes (0 and 360)");
     if (gamma.size() < 2) bad("needs at least 2 gamma angles");
     if (c.front() != 0.0 || c.back() != 360.0) bad("C must run from 0 to 360");
@@ -82,4 +84,4 @@ Table tabulate(const std::function<double(double, double)>& f, int nc, int ng, d
     return t;
 }
 
-} // namespace lb::photometry
+}  // namespace lb::photometry

@@ -11,17 +11,17 @@
 namespace lb::photometry {
 
 struct Table {
-    std::vector<double> c;      // C angles, degrees, ascending, c.front() == 0, c.back() == 360
+    std::vector<double> c;  // C angles, degrees, ascending, c.front() == 0, c.back() == 360
     std::vector<double> gamma;  // gamma angles, degrees, ascending, within [0, 180]
-    std::vector<double> cd;     // absolute candela, cd[ic * gamma.size() + ig]
+    std::vector<double> cd;  // absolute candela, cd[ic * gamma.size() + ig]
 
     // What the file said (for `luminaire info`); empty / negative when unknown.
-    std::string source;         // path of the file read, "" if synthesised
-    std::string format;         // "ldt", "ies", "synth"
-    int isym = -1;              // EULUMDAT symmetry indicator 0..4, or the IES equivalent
-    std::string symmetry;       // "none", "rotational", "C0-C180", "C90-C270", "quadrant"
-    double declaredFluxLm = -1; // luminaire flux the file declares (LDT: lamp flux x LOR), < 0 if none
-    double widthM = 0, lengthM = 0; // luminous area the file declares, metres (0 if none)
+    std::string source;  // path of the file read, "" if synthesised
+    std::string format;  // "ldt", "ies", "synth"
+    int isym = -1;  // EULUMDAT symmetry indicator 0..4, or the IES equivalent
+    std::string symmetry;  // "none", "rotational", "C0-C180", "C90-C270", "quadrant"
+    double declaredFluxLm = -1;  // luminaire flux the file declares (LDT: lamp flux x LOR), < 0 if none
+    double widthM = 0, lengthM = 0;  // luminous area the file declares, metres (0 if none)
 
     size_t nc() const { return c.size(); }
     size_t ng() const { return gamma.size(); }
@@ -43,4 +43,4 @@ struct Table {
 Table tabulate(const std::function<double(double cDeg, double gammaDeg)>& f, int nc, int ng, double g0 = 0,
                double g1 = 180);
 
-} // namespace lb::photometry
+}  // namespace lb::photometry

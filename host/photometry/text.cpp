@@ -155,8 +155,9 @@ void TokenCursor::requireRoom(double count, const std::string& what, size_t decl
     // a few values still names the line where it ends, while a count the
     // file cannot possibly hold fails here, before its arrays are allocated.
     if (count > left)
-        f_.fail(declLine, fmt::format("{} that the rest of the file can hold (at most {:.0f} numbers in {:.0f} bytes)",
-                                      what, left, left),
+        f_.fail(declLine,
+                fmt::format("{} that the rest of the file can hold (at most {:.0f} numbers in {:.0f} bytes)", what,
+                            left, left),
                 fmt::format("{:.0f} numbers", count));
 }
 
@@ -178,4 +179,4 @@ int TokenCursor::integer(const std::string& what, int lo, int hi)
     return static_cast<int>(v);
 }
 
-} // namespace lb::photometry
+}  // namespace lb::photometry

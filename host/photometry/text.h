@@ -30,7 +30,7 @@ struct TextFile {
     std::string path;
     std::vector<std::string> lines;
 
-    static TextFile read(const std::string& path);              // throws InputError if unreadable
+    static TextFile read(const std::string& path);  // throws InputError if unreadable
     static TextFile fromString(const std::string& path, const std::string& text);
 
     // Throws InputError("PATH:LINE: expected WHAT, got GOT"); line is 1-based.
@@ -49,7 +49,7 @@ class LineCursor {
 public:
     explicit LineCursor(const TextFile& f, size_t firstLine = 0) : f_(f), i_(firstLine) {}
     bool atEnd() const { return i_ >= f_.lines.size(); }
-    size_t lineNo() const { return i_ + 1; } // of the next line
+    size_t lineNo() const { return i_ + 1; }  // of the next line
     size_t index() const { return i_; }
     // The next line, trimmed; at the end of the file fails with "expected WHAT".
     std::string text(const std::string& what);
@@ -70,9 +70,13 @@ public:
         : f_(f), line_(firstLine), commaSep_(commaSeparates), decComma_(decimalComma)
     {
     }
-    bool atEnd();                  // no token left
-    size_t lineNo() { fill(); return line_ + 1; } // of the next token
-    size_t lastLine() const { return tokLine_; } // of the token read last
+    bool atEnd();  // no token left
+    size_t lineNo()
+    {
+        fill();
+        return line_ + 1;
+    }  // of the next token
+    size_t lastLine() const { return tokLine_; }  // of the token read last
     // Fails at `declLine` unless the rest of the file can hold `count` more
     // numbers (at most one per byte), so that declared counts are checked
     // against the file's size before anything is allocated from them.
@@ -90,4 +94,4 @@ private:
     size_t tokLine_ = 0;
 };
 
-} // namespace lb::photometry
+}  // namespace lb::photometry

@@ -16,9 +16,12 @@ namespace lb {
 std::string sceneKindName(SceneKind k)
 {
     switch (k) {
-    case SceneKind::Diffuse: return "diffuse";
-    case SceneKind::Specular: return "specular";
-    case SceneKind::Indirect: return "indirect";
+    case SceneKind::Diffuse:
+        return "diffuse";
+    case SceneKind::Specular:
+        return "specular";
+    case SceneKind::Indirect:
+        return "indirect";
     }
     return "?";
 }
@@ -59,8 +62,8 @@ std::vector<double> Scene::params() const
     P[LB_P_RES] = static_cast<double>(res);
     put3(LB_P_NX, {0.0, 0.0, 1.0});  // the receiver plane z = 0, seen from above
     P[LB_P_KIND] = kind == SceneKind::Specular ? LB_KIND_SPECULAR
-                   : kind == SceneKind::Indirect ? LB_KIND_INDIRECT
-                                                 : LB_KIND_DIFFUSE;
+        : kind == SceneKind::Indirect          ? LB_KIND_INDIRECT
+                                               : LB_KIND_DIFFUSE;
     put3(LB_P_EYE, eye);
     P[LB_P_ALPHA] = alpha;
     P[LB_P_ALBEDO] = albedo;
@@ -111,16 +114,18 @@ void Scene::validate() const
 void Scene::validateKind() const
 {
     switch (kind) {
-    case SceneKind::Diffuse: return;
+    case SceneKind::Diffuse:
+        return;
     case SceneKind::Specular:
         if (!(alpha >= kMinAlpha && alpha <= kMaxAlpha))
-            throw InputError(fmt::format("scene {}: alpha {} outside {} .. {}", describe(), alpha, kMinAlpha,
-                                         kMaxAlpha));
+            throw InputError(
+                fmt::format("scene {}: alpha {} outside {} .. {}", describe(), alpha, kMinAlpha, kMaxAlpha));
         for (int k = 0; k < 3; ++k)
             if (!std::isfinite(eye[k]) || std::fabs(eye[k]) > kMaxSceneLength)
-                throw InputError(fmt::format("scene {}: eye coordinates must be finite and within {} m",
-                                             describe(), kMaxSceneLength));
-        if (!(eye.z > 0)) throw InputError(fmt::format("scene {}: the eye must be above the floor (z > 0)", describe()));
+                throw InputError(fmt::format("scene {}: eye coordinates must be finite and within {} m", describe(),
+                                             kMaxSceneLength));
+        if (!(eye.z > 0))
+            throw InputError(fmt::format("scene {}: the eye must be above the floor (z > 0)", describe()));
         return;
     case SceneKind::Indirect:
         if (!(albedo >= 0 && albedo <= 1))
@@ -135,4 +140,4 @@ void Scene::validateKind() const
     }
 }
 
-} // namespace lb
+}  // namespace lb

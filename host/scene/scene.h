@@ -23,8 +23,8 @@ constexpr int kMaxRes = 16384;
 // irradiance, the luminance a glossy floor reflects towards an eye, or the
 // floor's one-bounce indirect irradiance inside a room.
 enum class SceneKind { Diffuse, Specular, Indirect };
-std::string sceneKindName(SceneKind k);            // "diffuse" | "specular" | "indirect"
-SceneKind parseSceneKind(const std::string& s);    // InputError naming the three otherwise
+std::string sceneKindName(SceneKind k);  // "diffuse" | "specular" | "indirect"
+SceneKind parseSceneKind(const std::string& s);  // InputError naming the three otherwise
 
 // GGX roughness range of the specular scene: below 0.01 the lobe is narrower
 // than a float-resolved direction near grazing and no reference resolves it;
@@ -34,24 +34,24 @@ constexpr double kMinAlpha = 0.01, kMaxAlpha = 1.0;
 constexpr double kRoomHalf = 2.5, kRoomHeight = 3.0;
 
 struct Scene {
-    double height = 1.0;                 // h: lower edge at R = pi/2; centre at h + L/2
+    double height = 1.0;  // h: lower edge at R = pi/2; centre at h + L/2
     double rotation = 3.14159265358979;  // R: angle between n_L and n_x, pi/2 .. pi
-    double width = 1.0;                  // W along u
-    double length = 1.0;                 // L along v
-    double extent = 5.0;                 // S: side of the imaged square
-    int res = 256;                       // N x N pixels
+    double width = 1.0;  // W along u
+    double length = 1.0;  // L along v
+    double extent = 5.0;  // S: side of the imaged square
+    int res = 256;  // N x N pixels
 
     SceneKind kind = SceneKind::Diffuse;
-    double alpha = 0.25;                 // specular: GGX roughness, kMinAlpha .. kMaxAlpha
-    glm::dvec3 eye{0.0, 4.0, 2.0};       // specular: eye point (m), z > 0
-    double albedo = 0.5;                 // indirect: albedo of walls and ceiling, 0 .. 1
+    double alpha = 0.25;  // specular: GGX roughness, kMinAlpha .. kMaxAlpha
+    glm::dvec3 eye{0.0, 4.0, 2.0};  // specular: eye point (m), z > 0
+    double albedo = 0.5;  // indirect: albedo of walls and ceiling, 0 .. 1
 
     glm::dvec3 center() const;
     glm::dvec3 u() const;
-    glm::dvec3 v() const;   // cross(u, n_L)
-    glm::dvec3 n() const;   // n_L = (0, sin R, cos R)
+    glm::dvec3 v() const;  // cross(u, n_L)
+    glm::dvec3 n() const;  // n_L = (0, sin R, cos R)
     std::array<glm::dvec3, 4> corners() const;  // (-u,-v), (+u,-v), (+u,+v), (-u,+v)
-    glm::dvec3 pixel(int row, int col) const;   // receiver point at a pixel centre
+    glm::dvec3 pixel(int row, int col) const;  // receiver point at a pixel centre
 
     // The LB_SCENE_SIZE reals the kernels take (kernels/common/scene.h).
     std::vector<double> params() const;
@@ -73,4 +73,4 @@ private:
     void validateKind() const;
 };
 
-} // namespace lb
+}  // namespace lb

@@ -38,7 +38,8 @@ SceneKindKeys SceneKindKeys::read(const json& j, const std::string& path)
         const json& a = j["alpha"];
         k.alphas.clear();
         for (const json& x : a.is_array() ? a : json::array({a})) {
-            if (!x.is_number()) fail("alpha", fmt::format("expected a number or a list of numbers, found {}", a.dump()));
+            if (!x.is_number())
+                fail("alpha", fmt::format("expected a number or a list of numbers, found {}", a.dump()));
             k.alphas.push_back(util::checkRange(name("alpha"), x.get<double>(), kMinAlpha, kMaxAlpha));
         }
         if (k.alphas.empty()) fail("alpha", "expected a non-empty list");
@@ -70,12 +71,14 @@ Scene SceneKindKeys::applied(Scene s, double alpha) const
 json SceneKindKeys::recordKeys(const Scene& s)
 {
     switch (s.kind) {
-    case SceneKind::Diffuse: return json::object();
+    case SceneKind::Diffuse:
+        return json::object();
     case SceneKind::Specular:
         return {{"scene_kind", sceneKindName(s.kind)}, {"alpha", s.alpha}, {"eye", {s.eye.x, s.eye.y, s.eye.z}}};
-    case SceneKind::Indirect: return {{"scene_kind", sceneKindName(s.kind)}, {"albedo", s.albedo}};
+    case SceneKind::Indirect:
+        return {{"scene_kind", sceneKindName(s.kind)}, {"albedo", s.albedo}};
     }
     return json::object();
 }
 
-} // namespace lb
+}  // namespace lb

@@ -37,4 +37,4 @@ struct SceneKindKeys {
     static nlohmann::json recordKeys(const Scene& s);
 };
 
-} // namespace lb
+}  // namespace lb

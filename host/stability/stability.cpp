@@ -28,10 +28,14 @@ constexpr double kPi = 3.14159265358979323846;
 std::string expectName(Expect e)
 {
     switch (e) {
-    case Expect::Finite: return "finite";
-    case Expect::PointLimit: return "point-limit";
-    case Expect::Zero: return "zero";
-    case Expect::Rejected: return "input-error";
+    case Expect::Finite:
+        return "finite";
+    case Expect::PointLimit:
+        return "point-limit";
+    case Expect::Zero:
+        return "zero";
+    case Expect::Rejected:
+        return "input-error";
     }
     return "?";
 }
@@ -59,30 +63,42 @@ const std::vector<Case>& catalogue()
             v.push_back(c);
         };
         // Light touching the receiver: lower edge on the ground (h = 0, R = pi/2).
-        add("touching", "light standing on the receiver: h = 0, R = pi/2", 0, kPi / 2, 1, 1, "lambert", Expect::Finite, true);
-        add("touching_diffuse", "as touching, PERLUCE-like emission at and beyond gamma 90", 0, kPi / 2, 1, 1, "diffuse");
+        add("touching", "light standing on the receiver: h = 0, R = pi/2", 0, kPi / 2, 1, 1, "lambert", Expect::Finite,
+            true);
+        add("touching_diffuse", "as touching, PERLUCE-like emission at and beyond gamma 90", 0, kPi / 2, 1, 1,
+            "diffuse");
         // Grazing: the lower edge 10 um above the ground, tilted just past vertical.
-        add("grazing", "grazing: h = 1e-5, R = pi/2 + 1e-4", 1e-5, kPi / 2 + 1e-4, 1, 1, "lambert", Expect::Finite, true);
+        add("grazing", "grazing: h = 1e-5, R = pi/2 + 1e-4", 1e-5, kPi / 2 + 1e-4, 1, 1, "lambert", Expect::Finite,
+            true);
         add("grazing_diffuse", "grazing with emission at gamma 90 (diffuse)", 1e-5, kPi / 2 + 1e-4, 1, 1, "diffuse");
         // Receiver points in the light's plane (y = 0 at R = pi/2; odd
         // resolution puts a pixel row exactly there) with emission at gamma =
         // 90: the solid-angle form has L_e = I / (A cos) = I / 0 there while
         // Omega_L = 0 (thesis 6.6's "contradiction"); the area form is regular.
-        add("plane_diffuse", "receiver row in the light plane, gamma-90 emission (PERLUCE)", 0.5, kPi / 2, 1, 1, "diffuse", Expect::Finite, true, true);
-        add("plane_sideways", "receiver row in the light plane, asymmetric emission (INTRO)", 0.5, kPi / 2, 1, 1, "sideways", Expect::Finite, false, true);
+        add("plane_diffuse", "receiver row in the light plane, gamma-90 emission (PERLUCE)", 0.5, kPi / 2, 1, 1,
+            "diffuse", Expect::Finite, true, true);
+        add("plane_sideways", "receiver row in the light plane, asymmetric emission (INTRO)", 0.5, kPi / 2, 1, 1,
+            "sideways", Expect::Finite, false, true);
         // Far field: every method must meet the point light (bound: pointBound()).
-        add("far", "far field h = 1000 (tiny solid angles, thesis Fig. 5.9)", 1000, kPi, 1, 1, "lambert", Expect::PointLimit, true);
-        add("far_sideways", "far field h = 1000, tilted, asymmetric luminaire", 1000, 3 * kPi / 4, 1, 1, "sideways", Expect::PointLimit);
+        add("far", "far field h = 1000 (tiny solid angles, thesis Fig. 5.9)", 1000, kPi, 1, 1, "lambert",
+            Expect::PointLimit, true);
+        add("far_sideways", "far field h = 1000, tilted, asymmetric luminaire", 1000, 3 * kPi / 4, 1, 1, "sideways",
+            Expect::PointLimit);
         // Sizes.
-        add("tiny", "1 mm x 1 mm light at h = 1 (point limit)", 1, 3 * kPi / 4, 1e-3, 1e-3, "lambert", Expect::PointLimit, true);
+        add("tiny", "1 mm x 1 mm light at h = 1 (point limit)", 1, 3 * kPi / 4, 1e-3, 1e-3, "lambert",
+            Expect::PointLimit, true);
         add("thin", "long thin light 40 m x 0.02 m at h = 1", 1, 3 * kPi / 4, 40, 0.02, "linear");
         add("huge_ceiling", "100 m x 100 m horizontal light (R = pi, centre at 50.1 m)", 0.1, kPi, 100, 100, "lambert");
-        add("huge_tilted", "100 m x 100 m light at R = 5pi/8, lower edge 3.9 m up", 0.1, 5 * kPi / 8, 100, 100, "downlight");
+        add("huge_tilted", "100 m x 100 m light at R = 5pi/8, lower edge 3.9 m up", 0.1, 5 * kPi / 8, 100, 100,
+            "downlight");
         // Nothing reaches the receiver: the image must be exactly zero.
-        add("zero_upward", "up-light facing down: emits only at gamma > 90", 1, kPi, 1, 1, "stab:upward", Expect::Zero, true);
-        add("zero_spot", "vertical spot (nothing at gamma >= 60) above the image", 5, kPi / 2, 1, 1, "spot", Expect::Zero);
+        add("zero_upward", "up-light facing down: emits only at gamma > 90", 1, kPi, 1, 1, "stab:upward", Expect::Zero,
+            true);
+        add("zero_spot", "vertical spot (nothing at gamma >= 60) above the image", 5, kPi / 2, 1, 1, "spot",
+            Expect::Zero);
         // Extremely narrow spot: sigma 0.5 degrees.
-        add("pencil", "extremely narrow spot (Gaussian sigma 0.5 deg, measured to 10 deg)", 1, kPi, 1, 1, "stab:pencil", Expect::Finite, true);
+        add("pencil", "extremely narrow spot (Gaussian sigma 0.5 deg, measured to 10 deg)", 1, kPi, 1, 1, "stab:pencil",
+            Expect::Finite, true);
         // The suite's stress luminaires (luminaires/, docs/robust.md): a fan of
         // light in the light's own plane seen from that plane, a sub-degree
         // beam, a quadrant-only distribution tilted, a direct/indirect light
@@ -108,8 +124,8 @@ const std::vector<Case>& catalogue()
              "downlight", 0.25, {0, 20, 0.02}, Expect::Finite, true);
         spec("spec_alpha002", "specular: alpha 0.02 (the narrowest lobe the reference resolves), light near", 0.1,
              3 * kPi / 4, "downlight", 0.02, {0, 4, 2}, Expect::Finite, true);
-        spec("spec_eye_in_plane", "specular: eye in the vertical light's plane (y = 0), row of pixels there too",
-             0.5, kPi / 2, "diffuse", 0.1, {0, 0, 3}, Expect::Finite, false, true);
+        spec("spec_eye_in_plane", "specular: eye in the vertical light's plane (y = 0), row of pixels there too", 0.5,
+             kPi / 2, "diffuse", 0.1, {0, 0, 3}, Expect::Finite, false, true);
         spec("spec_behind", "specular: up-light facing down, the receiver behind its emission: exactly 0", 1, kPi,
              "stab:upward", 0.25, {0, 4, 2}, Expect::Zero, true);
         return v;
@@ -123,8 +139,7 @@ photometry::Table luminaire(const std::string& name)
     photometry::Table t;
     if (name == "stab:upward") {
         // I = 1000 |cos gamma| for gamma > 90, 0 in the lower hemisphere.
-        t = photometry::tabulate([&](double, double g) { return g > 90 ? -1000 * std::cos(g * deg) : 0.0; }, 2,
-                                 361);
+        t = photometry::tabulate([&](double, double g) { return g > 90 ? -1000 * std::cos(g * deg) : 0.0; }, 2, 361);
     } else if (name == "stab:pencil") {
         // Gaussian beam of sigma 0.5 deg (5000 cd peak), measured to 10 deg
         // in 0.05-degree steps; nothing beyond (DESIGN 3: 0 outside the range).
@@ -146,8 +161,10 @@ Errors measure(const Image& R, const Image& A)
     double rmax = 0, amax = 0;
     for (double v : R.px) rmax = std::max(rmax, std::fabs(v));
     for (double v : A.px) {
-        if (!std::isfinite(v)) ++e.nonfinite;
-        else amax = std::max(amax, std::fabs(v));
+        if (!std::isfinite(v))
+            ++e.nonfinite;
+        else
+            amax = std::max(amax, std::fabs(v));
     }
     if (e.nonfinite > 0) {
         double nan = std::numeric_limits<double>::quiet_NaN();
@@ -202,7 +219,7 @@ namespace {
 //    (eps = 2^-24), a relative error eps d / a of the light's shape,
 //    amplified by the few operations on it (solid angle, clamped points):
 //    32 eps d / a.
-} // namespace
+}  // namespace
 
 double pointBound(const Scene& s, bool dbl)
 {
@@ -237,7 +254,7 @@ double maxAbs(const Image& A)
     return m;
 }
 
-} // namespace
+}  // namespace
 
 bool CaseResult::ok() const
 {
@@ -325,9 +342,12 @@ std::vector<CaseResult> run(ocl::Runtime& rt, const Options& opt)
                 row.image = methods::render(rt, table, s, spec, p, ro).image;
                 row.err = measure(ref.image, row.image);
                 row.maxAbs = maxAbs(row.image);
-                if (p == Precision::Double) dbl = row.image;
-                else if (!dbl.px.empty()) row.fdDiff = maxDiffRel(row.image, dbl, cr.refMax);
-                if (row.err.nonfinite > 0) row.failures.push_back(fmt::format("{} non-finite pixels", row.err.nonfinite));
+                if (p == Precision::Double)
+                    dbl = row.image;
+                else if (!dbl.px.empty())
+                    row.fdDiff = maxDiffRel(row.image, dbl, cr.refMax);
+                if (row.err.nonfinite > 0)
+                    row.failures.push_back(fmt::format("{} non-finite pixels", row.err.nonfinite));
                 if (c.expect == Expect::Zero && row.maxAbs != 0)
                     row.failures.push_back(fmt::format("not exactly zero: max {} lx", row.maxAbs));
                 if (!(row.fdDiff <= c.maxFd))
@@ -351,7 +371,7 @@ namespace {
 // JSON numbers: NaN / inf become null (never a made-up value).
 nlohmann::json num(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
-} // namespace
+}  // namespace
 
 nlohmann::json toJson(const std::vector<CaseResult>& results, const ocl::Runtime& rt, const Options& opt)
 {
@@ -361,8 +381,11 @@ nlohmann::json toJson(const std::vector<CaseResult>& results, const ocl::Runtime
         const Case& c = cr.c;
         nlohmann::json rows = nlohmann::json::array();
         for (auto& r : cr.rows) {
-            nlohmann::json j = {{"method", r.method}, {"spec", r.spec}, {"precision", r.precision},
-                                {"ok", r.failures.empty()}, {"failures", r.failures}};
+            nlohmann::json j = {{"method", r.method},
+                                {"spec", r.spec},
+                                {"precision", r.precision},
+                                {"ok", r.failures.empty()},
+                                {"failures", r.failures}};
             if (c.expect != Expect::Rejected) {
                 j["nonfinite"] = r.err.nonfinite;
                 j["max_rel_err"] = num(r.err.maxRelErr);
@@ -378,8 +401,12 @@ nlohmann::json toJson(const std::vector<CaseResult>& results, const ocl::Runtime
         cases.push_back({{"name", c.name},
                          {"what", c.what},
                          {"scene",
-                          {{"height", c.height}, {"rotation", c.rotation}, {"width", c.width}, {"length", c.length},
-                           {"extent", c.extent}, {"res", cr.res}}},
+                          {{"height", c.height},
+                           {"rotation", c.rotation},
+                           {"width", c.width},
+                           {"length", c.length},
+                           {"extent", c.extent},
+                           {"res", cr.res}}},
                          {"luminaire", c.luminaire},
                          {"expect", expectName(c.expect)},
                          {"ok", cr.ok()},
@@ -389,8 +416,12 @@ nlohmann::json toJson(const std::vector<CaseResult>& results, const ocl::Runtime
                          {"reference_err_est", num(cr.refErrEst)},
                          {"rows", rows}});
     }
-    return {{"device", rt.info().name}, {"driver", rt.info().driver}, {"res", opt.res},
-            {"quick", opt.quick},        {"ok", allOk},                {"cases", cases}};
+    return {{"device", rt.info().name},
+            {"driver", rt.info().driver},
+            {"res", opt.res},
+            {"quick", opt.quick},
+            {"ok", allOk},
+            {"cases", cases}};
 }
 
 void writeReport(const std::string& dir, const std::vector<CaseResult>& results, const ocl::Runtime& rt,
@@ -405,8 +436,7 @@ void writeReport(const std::string& dir, const std::vector<CaseResult>& results,
         auto ends = [&](const std::string& s) {
             return n.size() >= s.size() && n.compare(n.size() - s.size(), s.size(), s) == 0;
         };
-        if (e.is_regular_file() && (ends("_ref.png") || ends("_test.png") || ends("_err.png")))
-            fs::remove(e.path());
+        if (e.is_regular_file() && (ends("_ref.png") || ends("_test.png") || ends("_err.png"))) fs::remove(e.path());
     }
     nlohmann::json j = toJson(results, rt, opt);
     util::writeFileAtomic((fs::path(dir) / "stability.json").string(), j.dump(1) + '\n');
@@ -417,7 +447,8 @@ void writeReport(const std::string& dir, const std::vector<CaseResult>& results,
     md << "Columns (host/stability/stability.h): `nonfinite` NaN/inf pixels; `max_rel_err` max |A - R| / "
           "max(R, 1e-2 max R) against the double reference (absolute lux where R is black); `max_jump` largest "
           "step between neighbouring pixels / max A; `jump_excess` largest step beyond the reference's own step "
-          "/ max R; `fd_diff` float vs double of the method / max R; `point_diff` (far field) vs the double point light / max.\n\n";
+          "/ max R; `fd_diff` float vs double of the method / max R; `point_diff` (far field) vs the double point "
+          "light / max.\n\n";
     md << fmt::format("Overall: **{}**\n\n", j["ok"].get<bool>() ? "PASS" : "FAIL");
     auto g = [](double v) { return std::isfinite(v) ? fmt::format("{:.3g}", v) : std::string("nan"); };
     for (auto& cr : results) {
@@ -456,7 +487,8 @@ void writeReport(const std::string& dir, const std::vector<CaseResult>& results,
             for (size_t i = 0; i < worst->image.px.size(); ++i)
                 if (std::isfinite(worst->image.px[i]))
                     bound = std::max(bound, std::fabs(worst->image.px[i] - cr.reference.px[i]));
-            writePng((fs::path(dir) / "png" / (c.name + "_ref.png")).string(), tonemap::tonemapPicture(cr.reference, k));
+            writePng((fs::path(dir) / "png" / (c.name + "_ref.png")).string(),
+                     tonemap::tonemapPicture(cr.reference, k));
             writePng((fs::path(dir) / "png" / (stem + "_test.png")).string(), tonemap::tonemapPicture(worst->image, k));
             writePng((fs::path(dir) / "png" / (stem + "_err.png")).string(),
                      tonemap::errorPicture(cr.reference, worst->image, bound, bound));
@@ -468,4 +500,4 @@ void writeReport(const std::string& dir, const std::vector<CaseResult>& results,
     util::writeFileAtomic((fs::path(dir) / "report.md").string(), md.str());
 }
 
-} // namespace lb::stability
+}  // namespace lb::stability

@@ -39,22 +39,22 @@
 namespace lb::stability {
 
 enum class Expect {
-    Finite,      // finite everywhere; errors reported (max_rel_err is a method's inherent error, not bounded)
+    Finite,  // finite everywhere; errors reported (max_rel_err is a method's inherent error, not bounded)
     PointLimit,  // far field: every method within pointBound of the point light
-    Zero,        // the luminaire sends nothing towards the receiver: all pixels exactly 0
-    Rejected,    // degenerate light: render() must throw lb::InputError
+    Zero,  // the luminaire sends nothing towards the receiver: all pixels exactly 0
+    Rejected,  // degenerate light: render() must throw lb::InputError
 };
 std::string expectName(Expect e);
 
 struct Case {
     std::string name;
-    std::string what;          // one line: what the case stresses, the source
+    std::string what;  // one line: what the case stresses, the source
     double height = 1, rotation = 3.14159265358979323846, width = 1, length = 1, extent = 5;
-    std::string luminaire;     // methods::loadLuminaire name, or "stab:<kind>" (stability::luminaire)
+    std::string luminaire;  // methods::loadLuminaire name, or "stab:<kind>" (stability::luminaire)
     Expect expect = Expect::Finite;
-    bool oddRes = false;       // force an odd resolution (a pixel row exactly at y = 0)
-    bool quick = false;        // part of the --quick subset (CI)
-    double maxFd = 0.05;       // bound on fd_diff (float vs double of one method)
+    bool oddRes = false;  // force an odd resolution (a pixel row exactly at y = 0)
+    bool quick = false;  // part of the --quick subset (CI)
+    double maxFd = 0.05;  // bound on fd_diff (float vs double of one method)
     // The scene's kind and its values (scene/scene.h); each case runs the
     // methods that render its kind (methods::renders).
     SceneKind kind = SceneKind::Diffuse;
@@ -83,29 +83,29 @@ double maxDiffRel(const Image& A, const Image& B, double scale);
 struct Row {
     std::string method, spec, precision;
     Errors err;
-    double fdDiff = 0;                        // float rows: vs the same method in double; double rows: 0
-    double pointDiff = -1;                    // PointLimit cases only
-    double maxAbs = 0;                        // max |A| (lux): Zero cases require exactly 0
+    double fdDiff = 0;  // float rows: vs the same method in double; double rows: 0
+    double pointDiff = -1;  // PointLimit cases only
+    double maxAbs = 0;  // max |A| (lux): Zero cases require exactly 0
     std::vector<std::string> failures;
-    Image image;                              // kept for the worst-error pictures
+    Image image;  // kept for the worst-error pictures
 };
 
 struct CaseResult {
     Case c;
     int res = 0;
-    std::string rejected;                     // Rejected cases: the InputError messages (first one)
-    double refMax = 0, refErrEst = 0;         // max of the double reference and its own error estimate
+    std::string rejected;  // Rejected cases: the InputError messages (first one)
+    double refMax = 0, refErrEst = 0;  // max of the double reference and its own error estimate
     Image reference;
     std::vector<Row> rows;
-    std::vector<std::string> failures;        // case-level (e.g. not rejected)
+    std::vector<std::string> failures;  // case-level (e.g. not rejected)
     bool ok() const;
 };
 
 struct Options {
     int res = 32;
     bool quick = false;
-    std::vector<std::string> cases;           // only these (empty: all, or the quick subset)
-    std::vector<std::string> methods;         // only these families (empty: every registered family)
+    std::vector<std::string> cases;  // only these (empty: all, or the quick subset)
+    std::vector<std::string> methods;  // only these families (empty: every registered family)
     bool progress = false;
 };
 
@@ -122,4 +122,4 @@ nlohmann::json toJson(const std::vector<CaseResult>& results, const ocl::Runtime
 void writeReport(const std::string& dir, const std::vector<CaseResult>& results, const ocl::Runtime& rt,
                  const Options& opt);
 
-} // namespace lb::stability
+}  // namespace lb::stability

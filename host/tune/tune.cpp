@@ -46,7 +46,10 @@ std::string resolveDir(const std::string& dir)
     return (fs::path(LB_SOURCE_DIR) / p).string();  // relative to the source tree
 }
 
-std::string keyName(const std::string& path, const std::string& key) { return fmt::format("{}: key \"{}\"", path, key); }
+std::string keyName(const std::string& path, const std::string& key)
+{
+    return fmt::format("{}: key \"{}\"", path, key);
+}
 
 // Lengths in metres, each in [lo, kMaxSceneLength]: sizes from 0, heights
 // from -kMaxSceneLength (a light through the receiver plane is a case to tune on).
@@ -65,7 +68,8 @@ std::vector<double> lengths(const std::string& path, const std::string& key, con
 std::vector<std::string> strings(const std::string& path, const std::string& key, const json& v)
 {
     std::vector<std::string> out;
-    if (!v.is_array()) fail(path, key, fmt::format("expected a list of strings like [\"a\", \"b\"], found {}", v.dump()));
+    if (!v.is_array())
+        fail(path, key, fmt::format("expected a list of strings like [\"a\", \"b\"], found {}", v.dump()));
     for (const auto& x : v) {
         if (!x.is_string()) fail(path, key, fmt::format("expected strings, found element {}", x.dump()));
         out.push_back(x.get<std::string>());
@@ -79,7 +83,8 @@ SceneSet sceneSet(const std::string& path, const std::string& key, const json& j
     if (!j.is_object()) fail(path, key, "expected an object with luminaires, heights, rotations");
     static const std::set<std::string> keys = {"luminaires", "heights", "rotations"};
     for (auto it = j.begin(); it != j.end(); ++it)
-        if (!keys.count(it.key())) fail(path, key + "." + it.key(), "unknown key (known: luminaires, heights, rotations)");
+        if (!keys.count(it.key()))
+            fail(path, key + "." + it.key(), "unknown key (known: luminaires, heights, rotations)");
     for (const auto& k : keys)
         if (!j.contains(k)) fail(path, key + "." + k, "missing");
     SceneSet s;
@@ -107,14 +112,14 @@ struct Case {
     Image ref;
 };
 
-} // namespace
+}  // namespace
 
 double Dim::toValue(double u) const
 {
     u = std::clamp(u, 0.0, 1.0);
     double v = param.scale == methods::Scale::Log && param.lo > 0
-                   ? std::exp(std::log(param.lo) + u * (std::log(param.hi) - std::log(param.lo)))
-                   : param.lo + u * (param.hi - param.lo);
+        ? std::exp(std::log(param.lo) + u * (std::log(param.hi) - std::log(param.lo)))
+        : param.lo + u * (param.hi - param.lo);
     v = std::clamp(v, param.lo, param.hi);
     if (param.kind == methods::Kind::Int) v = std::round(v);
     return v;
@@ -124,8 +129,8 @@ double Dim::toUnit(double v) const
 {
     if (param.hi <= param.lo) return 0;
     double u = param.scale == methods::Scale::Log && param.lo > 0
-                   ? (std::log(std::max(v, param.lo)) - std::log(param.lo)) / (std::log(param.hi) - std::log(param.lo))
-                   : (v - param.lo) / (param.hi - param.lo);
+        ? (std::log(std::max(v, param.lo)) - std::log(param.lo)) / (std::log(param.hi) - std::log(param.lo))
+        : (v - param.lo) / (param.hi - param.lo);
     return std::clamp(u, 0.0, 1.0);
 }
 
@@ -141,10 +146,9 @@ TuneExperiment loadTuneExperiment(const std::string& path)
     }
     if (!j.is_object()) throw InputError(fmt::format("{}: expected a JSON object", path));
     static const std::set<std::string> keys = {
-        "name",      "description", "method",    "params",   "reference", "luminaire_dir", "res",
-        "precision", "size",        "extent",    "train",    "validation", "objective",    "algorithm", "metric",
-        "global",    "global_maxeval", "maxeval", "maxtime", "seed",  "scene",     "alpha",      "eye",
-        "albedo"};
+        "name",           "description", "method",  "params",     "reference", "luminaire_dir", "res",    "precision",
+        "size",           "extent",      "train",   "validation", "objective", "algorithm",     "metric", "global",
+        "global_maxeval", "maxeval",     "maxtime", "seed",       "scene",     "alpha",         "eye",    "albedo"};
     for (auto it = j.begin(); it != j.end(); ++it)
         if (!keys.count(it.key())) fail(path, it.key(), fmt::format("unknown key (known: {})", fmt::join(keys, ", ")));
 
@@ -181,14 +185,17 @@ TuneExperiment loadTuneExperiment(const std::string& path)
             auto it = std::find_if(fam.params.begin(), fam.params.end(), [&](auto& p) { return p.name == n; });
             if (it == fam.params.end() || !(it->kind == methods::Kind::Real || it->kind == methods::Kind::Int))
                 fail(path, "params", fmt::format("'{}' is not a numeric parameter of method {}", n, base.name));
-            if (base.given.count(n)) fail(path, "params", fmt::format("'{}' is searched, so \"method\" must not set it", n));
+            if (base.given.count(n))
+                fail(path, "params", fmt::format("'{}' is searched, so \"method\" must not set it", n));
         }
     } else {
         for (const auto& p : fam.params)
-            if (p.tunable && (p.kind == methods::Kind::Real || p.kind == methods::Kind::Int) && !base.given.count(p.name))
+            if (p.tunable && (p.kind == methods::Kind::Real || p.kind == methods::Kind::Int) &&
+                !base.given.count(p.name))
                 e.params.push_back(p.name);
     }
-    if (e.params.empty()) fail(path, "params", fmt::format("method {} has no tunable parameter left to search", base.name));
+    if (e.params.empty())
+        fail(path, "params", fmt::format("method {} has no tunable parameter left to search", base.name));
     if (j.contains("reference")) {
         e.reference = str("reference");
         try {
@@ -232,16 +239,19 @@ TuneExperiment loadTuneExperiment(const std::string& path)
     }
     auto checkAlgo = [&](const std::string& k, const std::string& name) {
         if (nlopt_algorithm_from_string(name.c_str()) < 0)
-            fail(path, k, fmt::format("unknown nlopt algorithm '{}' (e.g. LN_SBPLX, LN_NELDERMEAD, GN_DIRECT_L)", name));
+            fail(path, k,
+                 fmt::format("unknown nlopt algorithm '{}' (e.g. LN_SBPLX, LN_NELDERMEAD, GN_DIRECT_L)", name));
     };
     if (j.contains("algorithm")) e.algorithm = str("algorithm");
     checkAlgo("algorithm", e.algorithm);
     if (e.algorithm.rfind("LN_", 0) != 0 && e.algorithm.rfind("GN_", 0) != 0)
-        fail(path, "algorithm", fmt::format("'{}' needs gradients; use a derivative-free LN_ or GN_ algorithm", e.algorithm));
+        fail(path, "algorithm",
+             fmt::format("'{}' needs gradients; use a derivative-free LN_ or GN_ algorithm", e.algorithm));
     if (j.contains("global")) {
         e.global = str("global");
         checkAlgo("global", e.global);
-        if (e.global.rfind("GN_", 0) != 0) fail(path, "global", fmt::format("expected a GN_ algorithm, found '{}'", e.global));
+        if (e.global.rfind("GN_", 0) != 0)
+            fail(path, "global", fmt::format("expected a GN_ algorithm, found '{}'", e.global));
     }
     if (j.contains("global_maxeval")) e.globalMaxeval = static_cast<int>(integer("global_maxeval", 1, 1000000));
     if (j.contains("maxeval")) e.maxeval = static_cast<int>(integer("maxeval", 1, 1000000));
@@ -318,7 +328,8 @@ private:
     // The metric of the method with `values` on every case (non-finite
     // pixels or an undefined value: a large penalty so the search moves
     // away; non-finite pixels are reported too).
-    std::vector<double> errors(const std::vector<Case>& cs, const std::vector<double>& values, long* nonfinite = nullptr)
+    std::vector<double> errors(const std::vector<Case>& cs, const std::vector<double>& values,
+                               long* nonfinite = nullptr)
     {
         std::vector<std::string> names;
         for (const auto& d : dims_) names.push_back(d.param.name);
@@ -369,7 +380,9 @@ private:
             const double u = dims_[i].toUnit(v[i]);
             const auto& p = dims_[i].param;
             if (u <= 0.01 || u >= 0.99)
-                out.push_back({{"param", p.name}, {"value", v[i]}, {"bound", u <= 0.01 ? "lo" : "hi"},
+                out.push_back({{"param", p.name},
+                               {"value", v[i]},
+                               {"bound", u <= 0.01 ? "lo" : "hi"},
                                {"limit", u <= 0.01 ? p.lo : p.hi}});
         }
         return out;
@@ -480,7 +493,8 @@ json Tuner::run()
         std::vector<std::string> names;
         for (const auto& d : dims_) names.push_back(d.param.name);
         s["spec"] = specWith(e_.method, names, v, e_.sceneKeys.kind);
-        for (const auto& [set, x] : {std::pair<std::string, const std::vector<double>*>{"train", &tr}, {"validation", &va}}) {
+        for (const auto& [set, x] :
+             {std::pair<std::string, const std::vector<double>*>{"train", &tr}, {"validation", &va}}) {
             const std::string k = set + "_" + e_.metric;
             s[k] = aggregate(*x);
             s[k + "_per_scene"] = *x;
@@ -508,7 +522,8 @@ json Tuner::run()
         stage(e_.global, g, e_.maxtime, u);
         algo = e_.global + "+" + e_.algorithm;
         if (e_.maxtime > 0)
-            remaining = std::max(1.0, e_.maxtime - std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+            remaining = std::max(
+                1.0, e_.maxtime - std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     }
     int left = std::max(1, e_.maxeval - evals_);
     // The local search starts from the best point so far (the defaults are its first evaluation).
@@ -517,7 +532,8 @@ json Tuner::run()
     doc["tuned"] = summary(best, algo, evals_);
     doc["trace"] = trace_;
     doc["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    doc["improved_validation"] = doc["tuned"][validationKey].get<double>() < doc["default"][validationKey].get<double>();
+    doc["improved_validation"] =
+        doc["tuned"][validationKey].get<double>() < doc["default"][validationKey].get<double>();
     if (!opt_.quiet)
         for (const auto& b : doc["tuned"]["at_bound"])
             fmt::print(stderr,
@@ -532,7 +548,7 @@ json Tuner::run()
     return doc;
 }
 
-} // namespace
+}  // namespace
 
 json runTune(const TuneExperiment& e, const TuneOptions& opt)
 {
@@ -548,11 +564,13 @@ json runTune(const TuneExperiment& e, const TuneOptions& opt)
         fs::path script = fs::path(LB_SOURCE_DIR) / "plots" / "tune.py";
         fs::path png = fs::path(opt.outDir) / "tune.png";
         if (fs::exists("/usr/bin/python3") && fs::exists(script)) {
-            std::string cmd = fmt::format("/usr/bin/python3 '{}' '{}' '{}'", script.string(), out.string(), png.string());
-            if (std::system(cmd.c_str()) != 0) fmt::print(stderr, "tune: warning: the convergence plot failed ({})\n", cmd);
+            std::string cmd =
+                fmt::format("/usr/bin/python3 '{}' '{}' '{}'", script.string(), out.string(), png.string());
+            if (std::system(cmd.c_str()) != 0)
+                fmt::print(stderr, "tune: warning: the convergence plot failed ({})\n", cmd);
         }
     }
     return doc;
 }
 
-} // namespace lb::tune
+}  // namespace lb::tune

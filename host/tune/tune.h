@@ -43,20 +43,20 @@ struct SceneSet {
 
 struct TuneExperiment {
     std::string path, name;
-    std::string method;               // base SPEC
+    std::string method;  // base SPEC
     std::vector<std::string> params;  // names searched
     std::string reference = "reference";
     int res = 24;
     std::string precision = "float";
     double width = 1, length = 1, extent = 5;
     SceneSet train, validation;
-    std::string metric = "nmse";     // metrics::minimisableMetrics()
+    std::string metric = "nmse";  // metrics::minimisableMetrics()
     std::string objective = "mean";  // mean | worst
     std::string algorithm = "LN_SBPLX";
-    std::string global;              // "" = none
-    int globalMaxeval = 0;           // 0: half of maxeval
+    std::string global;  // "" = none
+    int globalMaxeval = 0;  // 0: half of maxeval
     int maxeval = 30;
-    double maxtime = 0;              // seconds, 0 = none
+    double maxtime = 0;  // seconds, 0 = none
     unsigned seed = 1;
     SceneKindKeys sceneKeys;  // scene, alpha, eye, albedo
     nlohmann::json raw;
@@ -68,8 +68,8 @@ TuneExperiment loadTuneExperiment(const std::string& path);
 // One searched parameter: its row of the tunables table.
 struct Dim {
     methods::Param param;
-    double toValue(double u) const;   // unit interval -> value (clamped to the bounds)
-    double toUnit(double v) const;    // value -> unit interval
+    double toValue(double u) const;  // unit interval -> value (clamped to the bounds)
+    double toUnit(double v) const;  // value -> unit interval
 };
 
 struct TuneOptions {
@@ -89,4 +89,4 @@ nlohmann::json runTune(const TuneExperiment& e, const TuneOptions& opt);
 std::string specWith(const std::string& base, const std::vector<std::string>& names, const std::vector<double>& values,
                      SceneKind kind = SceneKind::Diffuse);
 
-} // namespace lb::tune
+}  // namespace lb::tune

@@ -22,7 +22,7 @@ bool unsignedDecimal(const std::string& s, double& v)
     return r.ec == std::errc() && r.ptr == s.data() + s.size() && std::isfinite(v);
 }
 
-} // namespace
+}  // namespace
 
 double checkRange(const std::string& name, double v, double lo, double hi, const std::string& unit)
 {
@@ -84,4 +84,4 @@ double parseAngle(const std::string& name, const std::string& text)
     return v;
 }
 
-} // namespace lb::util
+}  // namespace lb::util

@@ -17,7 +17,8 @@ long checkIntRange(const std::string& name, long v, long lo, long hi, const std:
 template <class I, std::enable_if_t<std::is_integral_v<I>, int> = 0>
 I checkRange(const std::string& name, I v, I lo, I hi, const std::string& unit = "")
 {
-    return static_cast<I>(checkIntRange(name, static_cast<long>(v), static_cast<long>(lo), static_cast<long>(hi), unit));
+    return static_cast<I>(
+        checkIntRange(name, static_cast<long>(v), static_cast<long>(lo), static_cast<long>(hi), unit));
 }
 
 // A finite decimal number (the whole text); InputError naming `name` otherwise.
@@ -31,4 +32,4 @@ constexpr double kTwoPi = 6.28318530717958647692;
 // Anything else (pi/-2, -pi, pi/0, 1/2) is an InputError naming `name`.
 double parseAngle(const std::string& name, const std::string& text);
 
-} // namespace lb::util
+}  // namespace lb::util

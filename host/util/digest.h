@@ -29,4 +29,4 @@ struct Digest {
 // The digest of `bytes` as 16 hex digits.
 std::string digestHex(const std::string& bytes);
 
-} // namespace lb::util
+}  // namespace lb::util

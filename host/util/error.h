@@ -20,4 +20,4 @@ struct InputError : Error {
     explicit InputError(const std::string& msg) : Error(msg, kExitInput) {}
 };
 
-} // namespace lb
+}  // namespace lb

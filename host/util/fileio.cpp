@@ -78,15 +78,14 @@ void syncDirectory(const std::string& path)
     }
 }
 
-} // namespace
+}  // namespace
 
 std::string readFile(const std::string& path, const std::string& what, size_t maxBytes)
 {
     std::error_code ec;
     if (fs::is_directory(path, ec)) throw InputError(fmt::format("{}: expected {}, got a directory", path, what));
     int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0)
-        throw InputError(fmt::format("{}: cannot open {}: {}", path, what, std::strerror(errno)));
+    if (fd < 0) throw InputError(fmt::format("{}: cannot open {}: {}", path, what, std::strerror(errno)));
     std::string out;
     char buf[65536];
     for (;;) {
@@ -140,7 +139,7 @@ void writeInPlace(const std::string& path, const std::string& bytes)
         throw Error(fmt::format("{}: cannot write {} bytes: {}", path, bytes.size(), std::strerror(errno)));
 }
 
-} // namespace
+}  // namespace
 
 void writeFilesAtomic(const std::vector<std::pair<std::string, std::string>>& input)
 {
@@ -169,16 +168,16 @@ void writeFilesAtomic(const std::vector<std::pair<std::string, std::string>>& in
         if (!writeAllAndClose(fd, bytes)) {
             int e = errno;
             removeTemps();
-            throw Error(fmt::format("{}: cannot write {} bytes: {} (nothing written)", path, bytes.size(),
-                                    std::strerror(e)));
+            throw Error(
+                fmt::format("{}: cannot write {} bytes: {} (nothing written)", path, bytes.size(), std::strerror(e)));
         }
     }
     for (size_t i = 0; i < files.size(); ++i)
         if (::rename(temps[i].c_str(), files[i].first.c_str()) != 0) {
             int e = errno;
             for (size_t k = i; k < temps.size(); ++k) ::unlink(temps[k].c_str());
-            throw Error(fmt::format("{}: cannot write: rename from {} failed: {}", files[i].first, temps[i],
-                                    std::strerror(e)));
+            throw Error(
+                fmt::format("{}: cannot write: rename from {} failed: {}", files[i].first, temps[i], std::strerror(e)));
         }
     for (const auto& f : files) syncDirectory(f.first);
     for (const auto& [path, bytes] : special) writeInPlace(path, *bytes);
@@ -213,4 +212,4 @@ size_t removeStaleTemporaries(const std::string& dir)
 
 void setTempOpenerForTesting(TempOpener o) { opener() = std::move(o); }
 
-} // namespace lb::util
+}  // namespace lb::util

@@ -57,4 +57,4 @@ size_t removeStaleTemporaries(const std::string& dir);
 using TempOpener = std::function<int(const std::string& tmpPath)>;
 void setTempOpenerForTesting(TempOpener opener);
 
-} // namespace lb::util
+}  // namespace lb::util

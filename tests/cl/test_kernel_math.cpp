@@ -27,50 +27,50 @@ std::vector<T> download(ocl::Runtime& rt, cl::Buffer& b, size_t n)
 // h = 0.1, R = 3pi/4, raised to z in [0, 1] so that the horizon cuts the light
 // for many of them, and repeats the
 // computation with the host copy of the same header in namespace NS.
-#define LB_DEFINE_CLIP_COMPARE(FN, NS, T)                                                          \
-    void FN(ocl::Runtime& rt, const std::string& opts, double tol)                                 \
-    {                                                                                              \
-        using namespace NS;                                                                        \
-        Scene s;                                                                                   \
-        s.height = 0.1;                                                                            \
-        s.rotation = 3 * 3.14159265358979 / 4;                                                     \
-        auto P64 = s.params();                                                                     \
-        std::vector<T> P(P64.begin(), P64.end());                                                  \
-        std::vector<T> q;                                                                          \
-        std::mt19937 g(7);                                                                         \
-        std::uniform_real_distribution<double> U(-2.5, 2.5);                                       \
-        int n = 500;                                                                               \
-        for (int i = 0; i < n; ++i) q.insert(q.end(), {T(U(g)), T(U(g)), T(0.2 * (U(g) + 2.5))});                   \
-        cl::Buffer bP = upload(rt, P), bq = upload(rt, q);                                         \
-        cl::Buffer bo(rt.context(), CL_MEM_WRITE_ONLY, 4 * n * sizeof(T));                         \
-        cl::Kernel k = rt.kernel("selftest.cl", "clip_and_measure", opts);                         \
-        k.setArg(0, bP);                                                                           \
-        k.setArg(1, bq);                                                                           \
-        k.setArg(2, bo);                                                                           \
-        k.setArg(3, n);                                                                            \
-        rt.launch1D(k, n, 8).wait();                                                               \
-        auto out = download<T>(rt, bo, 4 * n);                                                     \
-        int clipped = 0;                                                                           \
-        for (int i = 0; i < n; ++i) {                                                              \
-            lb_light L = lb_scene_light(P.data());                                                 \
-            real3 x(q[3 * i], q[3 * i + 1], q[3 * i + 2]);                                         \
-            real3 p[LB_MAXV];                                                                      \
-            lb_light_corners(L, p);                                                                \
-            for (int c = 0; c < 4; ++c) p[c] -= x;                                                 \
-            int m = lb_clip_polygon(p, 4, real3(0, 0, 1), T(0));                                   \
-            clipped += (m != 4);                                                                   \
-            double sa = lb_polygon_solid_angle(p, m);                                              \
-            double E = lb_polygon_irradiance_lambert(p, m, real3(0, 0, 1));                        \
-            EXPECT_NEAR(out[4 * i], sa, tol * (1 + sa)) << i;                                      \
-            EXPECT_NEAR(out[4 * i + 1], E, tol * (1 + E)) << i;                                    \
-            if (m >= 1) {                                                                          \
-                int where;                                                                         \
-                real3 cp = lb_closest_point_polygon(p, m, L.n, real3(0, 0, 0), &where);            \
-                EXPECT_NEAR(out[4 * i + 2], length(cp), tol * (1 + length(cp))) << i;              \
-                EXPECT_EQ(static_cast<int>(out[4 * i + 3]), where) << i;                           \
-            }                                                                                      \
-        }                                                                                          \
-        EXPECT_GT(clipped, 20);                                                                    \
+#define LB_DEFINE_CLIP_COMPARE(FN, NS, T)                                                         \
+    void FN(ocl::Runtime& rt, const std::string& opts, double tol)                                \
+    {                                                                                             \
+        using namespace NS;                                                                       \
+        Scene s;                                                                                  \
+        s.height = 0.1;                                                                           \
+        s.rotation = 3 * 3.14159265358979 / 4;                                                    \
+        auto P64 = s.params();                                                                    \
+        std::vector<T> P(P64.begin(), P64.end());                                                 \
+        std::vector<T> q;                                                                         \
+        std::mt19937 g(7);                                                                        \
+        std::uniform_real_distribution<double> U(-2.5, 2.5);                                      \
+        int n = 500;                                                                              \
+        for (int i = 0; i < n; ++i) q.insert(q.end(), {T(U(g)), T(U(g)), T(0.2 * (U(g) + 2.5))}); \
+        cl::Buffer bP = upload(rt, P), bq = upload(rt, q);                                        \
+        cl::Buffer bo(rt.context(), CL_MEM_WRITE_ONLY, 4 * n * sizeof(T));                        \
+        cl::Kernel k = rt.kernel("selftest.cl", "clip_and_measure", opts);                        \
+        k.setArg(0, bP);                                                                          \
+        k.setArg(1, bq);                                                                          \
+        k.setArg(2, bo);                                                                          \
+        k.setArg(3, n);                                                                           \
+        rt.launch1D(k, n, 8).wait();                                                              \
+        auto out = download<T>(rt, bo, 4 * n);                                                    \
+        int clipped = 0;                                                                          \
+        for (int i = 0; i < n; ++i) {                                                             \
+            lb_light L = lb_scene_light(P.data());                                                \
+            real3 x(q[3 * i], q[3 * i + 1], q[3 * i + 2]);                                        \
+            real3 p[LB_MAXV];                                                                     \
+            lb_light_corners(L, p);                                                               \
+            for (int c = 0; c < 4; ++c) p[c] -= x;                                                \
+            int m = lb_clip_polygon(p, 4, real3(0, 0, 1), T(0));                                  \
+            clipped += (m != 4);                                                                  \
+            double sa = lb_polygon_solid_angle(p, m);                                             \
+            double E = lb_polygon_irradiance_lambert(p, m, real3(0, 0, 1));                       \
+            EXPECT_NEAR(out[4 * i], sa, tol*(1 + sa)) << i;                                       \
+            EXPECT_NEAR(out[4 * i + 1], E, tol*(1 + E)) << i;                                     \
+            if (m >= 1) {                                                                         \
+                int where;                                                                        \
+                real3 cp = lb_closest_point_polygon(p, m, L.n, real3(0, 0, 0), &where);           \
+                EXPECT_NEAR(out[4 * i + 2], length(cp), tol*(1 + length(cp))) << i;               \
+                EXPECT_EQ(static_cast<int>(out[4 * i + 3]), where) << i;                          \
+            }                                                                                     \
+        }                                                                                         \
+        EXPECT_GT(clipped, 20);                                                                   \
     }
 
 LB_DEFINE_CLIP_COMPARE(compareClipFloat, lb::f32, float)
@@ -114,8 +114,8 @@ TEST(KernelMath, IntensityLookupMatchesHost)
         EXPECT_NEAR(out[i], lb::f32::lb_intensity_cg(lum.data(), cg[2 * i], cg[2 * i + 1]), 1e-5) << i;
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb
 
 namespace lb {
 namespace {
@@ -142,7 +142,7 @@ TEST(KernelMath, ClosestPointCornerVersusEdgeFloat)
     for (int k = 0; k < 4; ++k)
         for (int side : {-1, 1}) {  // the edge to the previous / next corner
             glm::dvec3 other = c[(k + (side > 0 ? 1 : 3)) % 4];
-            glm::dvec3 e = other - c[k];                         // along the edge, away from the corner
+            glm::dvec3 e = other - c[k];  // along the edge, away from the corner
             glm::dvec3 out = glm::normalize(c[k] - c[(k + 2) % 4]);  // roughly outward at the corner
             glm::dvec3 o = glm::normalize(out - e * (glm::dot(out, e) / glm::dot(e, e)));  // outward normal of the edge
             for (double t : {1e-4, -1e-4}) {
@@ -175,5 +175,5 @@ TEST(KernelMath, ClosestPointCornerVersusEdgeFloat)
     }
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

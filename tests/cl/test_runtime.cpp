@@ -47,7 +47,7 @@ TEST(Runtime, ProgramCacheReturnsSameProgram)
     double t = rt->buildSeconds();
     cl::Program& b = rt->program("selftest.cl");
     EXPECT_EQ(a(), b());
-    EXPECT_EQ(rt->buildSeconds(), t); // no second build
+    EXPECT_EQ(rt->buildSeconds(), t);  // no second build
 }
 
 TEST(Runtime, TimingIsMedianOfRepetitions)
@@ -145,5 +145,5 @@ TEST(Runtime, EveryKernelFileBuildsWithEveryVariant)
     EXPECT_GE(checked, static_cast<int>(methods::registry().all().size()));  // every family, at least once
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

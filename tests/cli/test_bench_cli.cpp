@@ -35,8 +35,8 @@ TEST(BenchCli, QuickJsonRun)
     EXPECT_EQ(j["specialization"]["no_back"], true);
     EXPECT_GT(j["mc"]["naive_sps"].get<double>(), 0);
     EXPECT_GT(j["mc"]["fast_sps"].get<double>(), 0);
-    EXPECT_NEAR(j["mc"]["ratio"].get<double>(),
-                j["mc"]["naive_ms"].get<double>() / j["mc"]["fast_ms"].get<double>(), 1e-9);
+    EXPECT_NEAR(j["mc"]["ratio"].get<double>(), j["mc"]["naive_ms"].get<double>() / j["mc"]["fast_ms"].get<double>(),
+                1e-9);
     EXPECT_GE(j["cubature"]["equal_time_n"].get<int>(), 1);
     EXPECT_TRUE(j["context"].contains("commit"));
     // h = 1: the cubature takes the straight-line rectangle fan, 8 lanes on a
@@ -52,8 +52,7 @@ TEST(BenchCli, TableScriptReadsCommittedRuns)
 {
     std::string dir = test::sourceDir();
     std::string cmd = "python3 " + dir + "/plots/bench_table.py " + dir + "/experiments/bench/pocl-epyc-run1.json " +
-                      dir + "/experiments/bench/pocl-epyc-run2.json " + dir +
-                      "/experiments/bench/pocl-epyc-run3.json 2>&1";
+        dir + "/experiments/bench/pocl-epyc-run2.json " + dir + "/experiments/bench/pocl-epyc-run3.json 2>&1";
     std::unique_ptr<FILE, int (*)(FILE*)> p(popen(cmd.c_str(), "r"), pclose);
     ASSERT_TRUE(p);
     std::string out;
@@ -66,7 +65,7 @@ TEST(BenchCli, TableScriptReadsCommittedRuns)
     // "-" where a group's run lacks a method row.
     std::string b = dir + "/experiments/bench/";
     cmd = "python3 " + dir + "/plots/bench_table.py " + b + "pocl-epyc-run1.json -- " + b + "nvidia-h100-run1.json " +
-          b + "nvidia-h100-run2.json 2>&1";
+        b + "nvidia-h100-run2.json 2>&1";
     p.reset(popen(cmd.c_str(), "r"));
     ASSERT_TRUE(p);
     out.clear();
@@ -89,5 +88,5 @@ TEST(BenchCli, BadOptionsExitTwo)
     EXPECT_EQ(runBench("--rounds 0").first, 2);
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

@@ -66,5 +66,5 @@ TEST(Cli, BadDeviceIndexIsAnInputError)
     EXPECT_NE(b.out.find("LUMIBENCH_DEVICE"), std::string::npos) << b.out;
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

@@ -36,7 +36,8 @@ TEST(CliLuminaire, InfoAndEvalAnswerForEverySharedFile)
         auto info = run("luminaire info --json " + f, false);
         ASSERT_EQ(info.code, 0) << f << info.out;
         auto j = nlohmann::json::parse(info.out);
-        for (const char* k : {"format", "flux_lm", "declared_flux_lm", "max_cd", "isym", "symmetry", "c_planes", "gammas"})
+        for (const char* k :
+             {"format", "flux_lm", "declared_flux_lm", "max_cd", "isym", "symmetry", "c_planes", "gammas"})
             EXPECT_TRUE(j.contains(k)) << k << " in " << f;
         auto ev = run("luminaire eval " + f + " 0 0 45 90 90 270", false);
         ASSERT_EQ(ev.code, 0) << f << ev.out;
@@ -78,5 +79,5 @@ TEST(CliLuminaire, MalformedFileIsExit2WithFileAndLine)
     EXPECT_EQ(r.code, 2) << r.out;
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

@@ -40,8 +40,9 @@ struct CompareCli : ::testing::Test {
     std::string ref, test, big;
     void SetUp() override
     {
-        dir = fs::temp_directory_path() / ("lb_compare_" + std::to_string(getpid()) + "_" +
-                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        dir = fs::temp_directory_path() /
+            ("lb_compare_" + std::to_string(getpid()) + "_" +
+             ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::create_directories(dir);
         // R = [1 2; 3 4], A = [2 2; 2 6]: exact in float, so the metrics are those of
         // tests/metrics/test_metrics.cpp: NMSE 0.2, UEB 2, LEB -1.
@@ -197,5 +198,5 @@ TEST_F(CompareCli, BadInputExitsWithCode2AndAClearMessage)
     EXPECT_NE(b.err.find("--k"), std::string::npos) << b.err;
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

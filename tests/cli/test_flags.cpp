@@ -15,7 +15,7 @@ namespace lb {
 namespace {
 
 struct Case {
-    std::string args;    // after build/lumibench
+    std::string args;  // after build/lumibench
     std::string expect;  // a part of the error message
 };
 
@@ -24,7 +24,8 @@ void expectRejected(const std::vector<Case>& cases)
     for (const auto& c : cases) {
         auto r = test::runCli(c.args);
         EXPECT_EQ(r.code, 2) << c.args << "\n" << r.err;
-        EXPECT_NE(r.err.find(c.expect), std::string::npos) << c.args << "\nexpected: " << c.expect << "\ngot: " << r.err;
+        EXPECT_NE(r.err.find(c.expect), std::string::npos)
+            << c.args << "\nexpected: " << c.expect << "\ngot: " << r.err;
     }
 }
 
@@ -86,12 +87,16 @@ TEST(Flags, RunTuneCompareFlags)
         {"run " + smoke + " --out /nonexistent/o --reps 0", "--reps: expected an integer in [5, 1000], got 0"},
         {"run " + smoke + " --out /nonexistent/o --reps 2", "--reps: expected an integer in [5, 1000], got 2"},
         {"run " + smoke + " --out /nonexistent/o --reps 1000000000", "--reps: expected an integer in [5, 1000]"},
-        {"run " + smoke + " --out /nonexistent/o --time-res -1", "--time-res: expected an integer in [0, 16384], got -1"},
+        {"run " + smoke + " --out /nonexistent/o --time-res -1",
+         "--time-res: expected an integer in [0, 16384], got -1"},
         {"run " + smoke + " --out /nonexistent/o --device -1", "--device: expected an integer in [0, 4095], got -1"},
         {"tune " + tune + " --out /nonexistent/o --maxeval 0", "--maxeval: expected an integer in [1, 1000000], got 0"},
-        {"tune " + tune + " --out /nonexistent/o --maxeval -1", "--maxeval: expected an integer in [1, 1000000], got -1"},
-        {"tune " + tune + " --out /nonexistent/o --maxtime -1", "--maxtime: expected a number in [0, 10000000] s, got -1"},
-        {"tune " + tune + " --out /nonexistent/o --maxtime nan", "--maxtime: expected a number in [0, 10000000] s, got nan"},
+        {"tune " + tune + " --out /nonexistent/o --maxeval -1",
+         "--maxeval: expected an integer in [1, 1000000], got -1"},
+        {"tune " + tune + " --out /nonexistent/o --maxtime -1",
+         "--maxtime: expected a number in [0, 10000000] s, got -1"},
+        {"tune " + tune + " --out /nonexistent/o --maxtime nan",
+         "--maxtime: expected a number in [0, 10000000] s, got nan"},
         {"compare " + exr + " " + exr + " --k nan", "--k: expected a number in [1e-300, 1e+300], got nan"},
         {"compare " + exr + " " + exr + " --bound nan", "--bound: expected a number in [1e-300, 1e+300] lux, got nan"},
         {"compare " + exr + " " + exr + " --k 0", "--k: expected a number in [1e-300, 1e+300], got 0"},
@@ -105,7 +110,8 @@ TEST(Flags, DirectoriesWhereFilesAreExpected)
     expectRejected({
         {"run " + dir + " --out /nonexistent/o", dir + ": expected an experiment file (JSON), got a directory"},
         {"merge --out /nonexistent/o " + dir + "/smoke.json/", "smoke.json/: "},
-        {"luminaire info " + test::sourceDir() + "/luminaires", "luminaires: expected a luminaire file, got a directory"},
+        {"luminaire info " + test::sourceDir() + "/luminaires",
+         "luminaires: expected a luminaire file, got a directory"},
         {"tune " + dir + " --out /nonexistent/o", dir + ": expected a tune experiment file (JSON), got a directory"},
     });
     auto r = test::runCli("merge --out /nonexistent/o " + dir);  // a directory without results.json
@@ -141,5 +147,5 @@ TEST(Flags, RangeCheckNamesTheFlag)
     }
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

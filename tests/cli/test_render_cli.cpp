@@ -77,5 +77,5 @@ TEST(RenderCli, BadInputExitsWithTwo)
     EXPECT_EQ(r.code, 2);
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

@@ -31,7 +31,7 @@ constexpr double kLambertTol = 1e-4;
 #define LB_SUITE Cubature32
 #include "cubature_cases.inc"
 #undef LB_SUITE
-} // namespace cub32
+}  // namespace cub32
 
 namespace cub64 {
 using namespace lb::f64;
@@ -46,4 +46,4 @@ constexpr double kLambertTol = 1e-6;
 #define LB_SUITE Cubature64
 #include "cubature_cases.inc"
 #undef LB_SUITE
-} // namespace cub64
+}  // namespace cub64

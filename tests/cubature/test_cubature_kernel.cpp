@@ -37,8 +37,8 @@ struct HostF64 {
     static double eval(const float* lum, const lb::f64::lb_light& L, const double* P, int r, int c,
                        const KernelCase& kc, int* nt, int* nf)
     {
-        return lb::f64::lb_cubature_irradiance(lum, L, lb::f64::lb_pixel_position(P, r, c), glm::dvec3(0, 0, 1),
-                                               kc.tri, kc.wt, kc.ff, kc.dyn, 1e-3, 0.0, nt, nf);
+        return lb::f64::lb_cubature_irradiance(lum, L, lb::f64::lb_pixel_position(P, r, c), glm::dvec3(0, 0, 1), kc.tri,
+                                               kc.wt, kc.ff, kc.dyn, 1e-3, 0.0, nt, nf);
     }
 };
 
@@ -96,10 +96,11 @@ void matchesHost(ocl::Runtime* rt, bool dbl, double tol)
                 if (std::fabs(out[r * N + c] - e) > tol * std::fabs(e) + tol * 1e-2 || st[2 * (r * N + c)] != nt) ++off;
             }
         EXPECT_LE(off, N * N / 100) << kc.opts;
-        if (off) std::printf("[ cubature.cl %s%s ] %d of %d pixels differ from the host\n", kc.opts, dbl ? " double" : "", off, N * N);
+        if (off)
+            std::printf("[ cubature.cl %s%s ] %d of %d pixels differ from the host\n", kc.opts, dbl ? " double" : "",
+                        off, N * N);
     }
 }
-
 
 TEST(CubatureKernel, MatchesHostFloat)
 {
@@ -115,8 +116,8 @@ TEST(CubatureKernel, MatchesHostDouble)
     matchesHost<double, HostF64>(rt, true, 1e-9);
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb
 
 namespace lb {
 namespace {
@@ -129,9 +130,9 @@ namespace {
 TEST(CubatureKernel, TimingsTrianglesFlips)
 {
     LB_REQUIRE_RUNTIME(rt);
-    auto lum = photometry::tabulate([](double, double g) { return g <= 90 ? 1000 * std::cos(g * M_PI / 180) : 0.0; },
-                                    2, 181)
-                   .packed();
+    auto lum =
+        photometry::tabulate([](double, double g) { return g <= 90 ? 1000 * std::cos(g * M_PI / 180) : 0.0; }, 2, 181)
+            .packed();
     Scene s;
     s.height = 1.0;
     s.rotation = 3 * M_PI / 4;
@@ -181,5 +182,5 @@ TEST(CubatureKernel, TimingsTrianglesFlips)
     }
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

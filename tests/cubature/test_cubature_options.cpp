@@ -26,7 +26,7 @@ TEST(CubatureOptions, ParsesEveryOption)
                                      {"plane_eps", "0.01"},
                                      {"horizon_eps", "0.1"}});
     EXPECT_EQ(o.defines(), "-DLB_CUB_TRI=1 -DLB_CUB_WEIGHT=2 -DLB_CUB_NORMALIZE=1 -DLB_CUB_DYNAMIC=13");
-    EXPECT_EQ(o.dynamic, LB_CUB_CP | LB_CUB_MRP | LB_CUB_BARY); // the header's bits
+    EXPECT_EQ(o.dynamic, LB_CUB_CP | LB_CUB_MRP | LB_CUB_BARY);  // the header's bits
     EXPECT_DOUBLE_EQ(o.planeEps, 0.01);
     EXPECT_DOUBLE_EQ(o.horizonEps, 0.1);
     EXPECT_EQ(o.describe().at("dynamic"), "cp+mrp+barycentre");
@@ -48,5 +48,5 @@ TEST(CubatureOptions, BadValuesAreInputErrors)
         EXPECT_THROW(CubatureOptions::parse(kv), InputError) << kv.begin()->first;
 }
 
-} // namespace
-} // namespace lb::methods
+}  // namespace
+}  // namespace lb::methods

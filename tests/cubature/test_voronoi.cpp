@@ -36,7 +36,7 @@ TEST(Voronoi, SymmetryAndSharing)
     for (int it = 0; it < 200; ++it) {
         real2 p(U(r), 0.5 * U(r));
         lb_voronoi_fractions(p, 2, 1, f);
-        lb_voronoi_fractions(real2(-p.x, p.y), 2, 1, g); // mirror at x = 0: corners 0<->1, 2<->3
+        lb_voronoi_fractions(real2(-p.x, p.y), 2, 1, g);  // mirror at x = 0: corners 0<->1, 2<->3
         EXPECT_NEAR(f[0], g[1], 1e-12);
         EXPECT_NEAR(f[3], g[2], 1e-12);
         EXPECT_NEAR(f[4], g[4], 1e-12);
@@ -63,7 +63,7 @@ TEST(Voronoi, FractionsPartitionTheLight)
         }
 }
 
-} // namespace
+}  // namespace
 
 #include "methods/voronoi_table.h"
 #include "photometry/table.h"
@@ -120,12 +120,13 @@ TEST(Voronoi, KernelMatchesHost)
 {
     using namespace lb;
     LB_REQUIRE_RUNTIME(rt);
-    auto lum = photometry::tabulate(
-                   [](double c, double g) {
-                       return 600 + 400 * std::cos(g * M_PI / 180) + 150 * std::sin(g * M_PI / 180) * std::cos(c * M_PI / 180);
-                   },
-                   73, 181)
-                   .packed();
+    auto lum =
+        photometry::tabulate(
+            [](double c, double g) {
+                return 600 + 400 * std::cos(g * M_PI / 180) + 150 * std::sin(g * M_PI / 180) * std::cos(c * M_PI / 180);
+            },
+            73, 181)
+            .packed();
     const int res = 33;
     auto tab = methods::voronoiTable(res, 1, 1);
     Scene s;
@@ -160,4 +161,4 @@ TEST(Voronoi, KernelMatchesHost)
         }
 }
 
-} // namespace
+}  // namespace

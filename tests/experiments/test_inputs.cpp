@@ -60,10 +60,18 @@ struct ScopedEnv {
 
 json tiny(const fs::path& lumDir)
 {
-    return {{"name", "tiny"},           {"luminaire_dir", lumDir.string()}, {"luminaires", {"lum.ldt"}},
-            {"heights", {1.0}},         {"rotations", {"pi"}},             {"methods", {"point", "mc:n=4"}},
-            {"equal_time", {"point"}},  {"mci_curve", {1, 2}},             {"reference", "reference:tol=1e-3"},
-            {"res", 8},                 {"time_res", 8},                   {"reps", 5}};
+    return {{"name", "tiny"},
+            {"luminaire_dir", lumDir.string()},
+            {"luminaires", {"lum.ldt"}},
+            {"heights", {1.0}},
+            {"rotations", {"pi"}},
+            {"methods", {"point", "mc:n=4"}},
+            {"equal_time", {"point"}},
+            {"mci_curve", {1, 2}},
+            {"reference", "reference:tol=1e-3"},
+            {"res", 8},
+            {"time_res", 8},
+            {"reps", 5}};
 }
 
 TEST(ExperimentKeys, AreRangeChecked)
@@ -78,12 +86,14 @@ TEST(ExperimentKeys, AreRangeChecked)
     const std::string f = (d / "e.json").string();
     EXPECT_EQ(err("reps", 2), f + ": key \"reps\": expected an integer in [5, 1000], got 2");
     EXPECT_EQ(err("reps", 1000000000), f + ": key \"reps\": expected an integer in [5, 1000], got 1000000000");
-    EXPECT_EQ(err("methods", "point"), f + ": key \"methods\": expected a list of strings like [\"a\", \"b\"], found \"point\"");
+    EXPECT_EQ(err("methods", "point"),
+              f + ": key \"methods\": expected a list of strings like [\"a\", \"b\"], found \"point\"");
     EXPECT_EQ(err("equal_time", "point"),
               f + ": key \"equal_time\": expected a list of strings like [\"a\", \"b\"], found \"point\"");
     EXPECT_EQ(err("precision", "float"),
               f + ": key \"precision\": expected a list of strings like [\"a\", \"b\"], found \"float\"");
-    EXPECT_EQ(err("heights", json::array({1e30})), f + ": key \"heights\": expected a number in [0, 10000] m, got 1e+30");
+    EXPECT_EQ(err("heights", json::array({1e30})),
+              f + ": key \"heights\": expected a number in [0, 10000] m, got 1e+30");
     EXPECT_EQ(err("extent", 1e9), f + ": key \"extent\": expected a number in [1e-06, 10000], got 1000000000");
     const std::string rot = f + ": key \"rotations\": expected radians in [0, 2pi] as a number or C*pi/D";
     EXPECT_EQ(err("rotations", json::array({"pi/-2"})).substr(0, rot.size()), rot);
@@ -114,11 +124,14 @@ TEST(ExperimentKeys, SceneKinds)
     };
     EXPECT_EQ(err({{"alpha", 0.1}}), f + ": key \"alpha\": only the specular scene has it (\"scene\": \"specular\")");
     EXPECT_EQ(err({{"albedo", 0.1}}), f + ": key \"albedo\": only the indirect scene has it (\"scene\": \"indirect\")");
-    EXPECT_EQ(err({{"scene", "glossy"}}), f + ": key \"scene\": scene: expected diffuse, specular or indirect, got 'glossy'");
+    EXPECT_EQ(err({{"scene", "glossy"}}),
+              f + ": key \"scene\": scene: expected diffuse, specular or indirect, got 'glossy'");
     EXPECT_EQ(err({{"scene", "specular"}, {"alpha", {0.1, 0.001}}}),
               f + ": key \"alpha\": expected a number in [0.01, 1], got 0.001");
-    EXPECT_EQ(err({{"scene", "specular"}, {"eye", {0, 4}}}), f + ": key \"eye\": expected [x, y, z] in metres, found [0,4]");
-    EXPECT_EQ(err({{"scene", "indirect"}, {"albedo", -0.5}}), f + ": key \"albedo\": expected a number in [0, 1], got -0.5");
+    EXPECT_EQ(err({{"scene", "specular"}, {"eye", {0, 4}}}),
+              f + ": key \"eye\": expected [x, y, z] in metres, found [0,4]");
+    EXPECT_EQ(err({{"scene", "indirect"}, {"albedo", -0.5}}),
+              f + ": key \"albedo\": expected a number in [0, 1], got -0.5");
 
     // The diffuse methods do not render the specular scene: named as such.
     const std::string spec = err({{"scene", "specular"}});
@@ -290,9 +303,9 @@ TEST(MergeCli, RefusesANonEmptyOutputUnlessForced)
     const auto before = fs::last_write_time(d / "out" / "results.json");
     c = test::runCli("merge --no-report --out " + (d / "out").string() + " " + (d / "out" / "shard-1").string());
     EXPECT_EQ(c.code, 2);
-    EXPECT_NE(c.err.find("--out " + (d / "out").string() +
-                         ": expected an empty or new directory, got one holding results."),
-              std::string::npos)
+    EXPECT_NE(
+        c.err.find("--out " + (d / "out").string() + ": expected an empty or new directory, got one holding results."),
+        std::string::npos)
         << c.err;
     EXPECT_EQ(fs::last_write_time(d / "out" / "results.json"), before);
     c = test::runCli("merge --force --no-report --out " + (d / "out").string() + " " +
@@ -355,5 +368,5 @@ TEST(ReferenceCache, KeyFollowsTheKernelSources)
     EXPECT_EQ(ocl::kernelSourceDigest("reference.cl"), ref2);  // mc.cl is not one of its sources
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

@@ -43,8 +43,9 @@ struct Report : ::testing::Test {
     fs::path dir;
     void SetUp() override
     {
-        dir = fs::temp_directory_path() / ("lb_report_" + std::to_string(getpid()) + "_" +
-                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        dir = fs::temp_directory_path() /
+            ("lb_report_" + std::to_string(getpid()) + "_" +
+             ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::remove_all(dir);
         fs::create_directories(dir);
     }
@@ -95,7 +96,7 @@ TEST_F(Report, CsvHasOneFlatRowPerRecordAndLoadsWithPandas)
     results::Results doc;
     doc.records = {rec("cubature", "method", 1.5, ref, a), rec("mc:n=4", "equal_time", 1.5, ref, ramp(8, 0.5))};
     doc.records[0].extra["stats"] = {{"form", "straight-line"}};  // objects stay out of the table
-    doc.records[1].error.flip = NAN;                                // undefined: an empty field
+    doc.records[1].error.flip = NAN;  // undefined: an empty field
     doc.records[0].sceneKeys = {{"scene_kind", "specular"}, {"alpha", 0.25}, {"eye", {0, 4, 2}}};  // columns too
     const std::string csv = results::toCsv(doc);
     const std::string head = csv.substr(0, csv.find('\n'));
@@ -104,8 +105,9 @@ TEST_F(Report, CsvHasOneFlatRowPerRecordAndLoadsWithPandas)
                          0),
               0u)
         << head;
-    for (const char* c : {",nmse,", ",flip,", ",grad_nmse,", ",equal_time_to,", ",n,", ",param_n,", ",param_pattern,",
-                          ",param_triangulation,", ",equal_time_ratio", ",equal_time_ok", ",scene_kind", ",alpha,", ",eye,"})
+    for (const char* c :
+         {",nmse,", ",flip,", ",grad_nmse,", ",equal_time_to,", ",n,", ",param_n,", ",param_pattern,",
+          ",param_triangulation,", ",equal_time_ratio", ",equal_time_ok", ",scene_kind", ",alpha,", ",eye,"})
         EXPECT_NE(head.find(c), std::string::npos) << c << " in " << head;
     EXPECT_EQ(head.find("stats"), std::string::npos) << head;
     EXPECT_NE(csv.find("\"A, \"\"quoted\"\".ldt\""), std::string::npos) << csv;
@@ -197,8 +199,8 @@ TEST_F(Report, HtmlIsSelfContainedAndSwitchesViewsInChromium)
     experiments::writeReport(dir.string(), "test");
 
     const std::string html = slurp(dir / "report.html");
-    for (const char* s : {"abc123", "2026-11-30T00:00:00Z", "class=\"sortable\"", "rotations stitched",
-                          "id=\"lbdata\"", "id=\"lbCanvas\"", "function show("})
+    for (const char* s : {"abc123", "2026-11-30T00:00:00Z", "class=\"sortable\"", "rotations stitched", "id=\"lbdata\"",
+                          "id=\"lbCanvas\"", "function show("})
         EXPECT_NE(html.find(s), std::string::npos) << s;
     // nothing fetched: no http(s) URL in a src or href, no external script or style
     for (const char* s : {"src=\"http", "href=\"http", "src=\"//", "<link", "@import", "fetch("})
@@ -243,5 +245,5 @@ TEST_F(Report, HtmlIsSelfContainedAndSwitchesViewsInChromium)
     EXPECT_EQ(differing(r, shot("view=reference")), 0u);
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

@@ -55,8 +55,9 @@ struct Scratch : ::testing::Test {
     fs::path dir;
     void SetUp() override
     {
-        dir = fs::temp_directory_path() / ("lb_results_" + std::to_string(getpid()) + "_" +
-                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        dir = fs::temp_directory_path() /
+            ("lb_results_" + std::to_string(getpid()) + "_" +
+             ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::remove_all(dir);
         fs::create_directories(dir);
     }
@@ -83,7 +84,7 @@ TEST_F(Results, RecordRoundTripKeepsEveryField)
     r.error.grad_nmse = 0.75;
     r.error.grad_pairs = 130560;
     r.error.flip = 0.1875;
-    r.extra["shard"] = 3;                                       // a key this code does not know
+    r.extra["shard"] = 3;  // a key this code does not know
     results::Results doc;
     doc.context = results::makeContext("cpu-pocl", "5.0");
     doc.records = {r, cell("cubature", 1.1, 27.9669)};  // flip not computed: NaN
@@ -91,9 +92,9 @@ TEST_F(Results, RecordRoundTripKeepsEveryField)
 
     auto raw = json::parse(std::ifstream(file("r.json")));
     EXPECT_TRUE(raw["records"][0]["relmse"].is_null());
-    for (const char* k : {"method", "params", "luminaire", "height", "rotation", "res", "precision", "time_ms",
-                          "nmse", "nrmse", "relmse", "ueb", "leb", "nonfinite", "equal_time_to", "n", "device",
-                          "grad_nmse", "grad_pairs", "flip"})
+    for (const char* k : {"method",        "params", "luminaire", "height",    "rotation",   "res", "precision",
+                          "time_ms",       "nmse",   "nrmse",     "relmse",    "ueb",        "leb", "nonfinite",
+                          "equal_time_to", "n",      "device",    "grad_nmse", "grad_pairs", "flip"})
         EXPECT_TRUE(raw["records"][0].contains(k)) << k;
     EXPECT_TRUE(raw["records"][1]["flip"].is_null());  // not available: null, never 0
     EXPECT_FALSE(raw["records"][1].contains("equal_time_to"));  // optional fields only when set
@@ -384,5 +385,5 @@ TEST_F(Results, BadFilesAreInputErrorsNamingFileAndRecord)
     EXPECT_THROW(results::mergeResults({file("missing.json")}), InputError);
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

@@ -227,7 +227,8 @@ void expectSameErrors(const results::Results& a, const results::Results& b)
         EXPECT_EQ(r.error.leb, it->second.error.leb) << k;
         EXPECT_EQ(r.error.grad_nmse, it->second.error.grad_nmse) << k;
         // FLIP is deterministic too (null on both sides without flip-evaluator)
-        EXPECT_TRUE(r.error.flip == it->second.error.flip || (std::isnan(r.error.flip) && std::isnan(it->second.error.flip)))
+        EXPECT_TRUE(r.error.flip == it->second.error.flip ||
+                    (std::isnan(r.error.flip) && std::isnan(it->second.error.flip)))
             << k;
         ++compared;
     }
@@ -354,9 +355,9 @@ TEST_F(ExperimentRun, TwoShardsWithGnuParallelMergeToOneRun)
     if (sh("command -v parallel >/dev/null") != 0) GTEST_SKIP() << "GNU parallel is not installed";
     ASSERT_EQ(run("run " + exp + " --out " + (dir / "one").string() + " --no-report"), 0) << slurp(dir / "stderr.txt");
     std::string script = (fs::path(test::sourceDir()) / "experiments" / "run-parallel.sh").string();
-    ASSERT_EQ(sh("cd '" + test::sourceDir() + "' && LUMIBENCH='" + test::binary() + "' LUMIBENCH_PYTHON=/nonexistent '" +
-                 script + "' '" + exp + "' '" + (dir / "par").string() + "' 2 2>>'" + (dir / "stderr.txt").string() +
-                 "'"),
+    ASSERT_EQ(sh("cd '" + test::sourceDir() + "' && LUMIBENCH='" + test::binary() +
+                 "' LUMIBENCH_PYTHON=/nonexistent '" + script + "' '" + exp + "' '" + (dir / "par").string() +
+                 "' 2 2>>'" + (dir / "stderr.txt").string() + "'"),
               0)
         << slurp(dir / "stderr.txt");
     auto s1 = results::load((dir / "par" / "shard-1-of-2" / "results.json").string());
@@ -384,7 +385,8 @@ TEST_F(ExperimentRun, SlurmJobArrayShardsMergeToOneRun)
     ASSERT_EQ(run("run " + exp + " --out " + (dir / "one").string() + " --no-report"), 0) << slurp(dir / "stderr.txt");
     const std::string src = test::sourceDir(), log = (dir / "stderr.txt").string();
     const std::string slurm = (dir / "slurm").string(), out = (dir / "sl").string();
-    const std::string local = "'" + src + "/experiments/slurm-local.sh'", array = "'" + src + "/experiments/slurm-array.sh'";
+    const std::string local = "'" + src + "/experiments/slurm-local.sh'",
+                      array = "'" + src + "/experiments/slurm-array.sh'";
     int up = sh(local + " start '" + slurm + "' > '" + slurm + ".env' 2>>'" + log + "'");
     if (up != 0) {
         sh(local + " stop '" + slurm + "'");
@@ -394,10 +396,11 @@ TEST_F(ExperimentRun, SlurmJobArrayShardsMergeToOneRun)
     // Both array tasks, then the merge job; timeouts so a job that is never
     // scheduled fails the test instead of hanging it.
     std::string env = ". '" + slurm + ".env' && cd '" + dir.string() + "' && LUMIBENCH='" + test::binary() +
-                      "' LUMIBENCH_PYTHON=/nonexistent ";
+        "' LUMIBENCH_PYTHON=/nonexistent ";
     int rcArray = sh(env + "timeout 300 sbatch --quiet --wait --array=1-2 --cpus-per-task=1 " + array + " run '" + exp +
                      "' '" + out + "' --quiet >>'" + log + "' 2>&1");
-    int rcMerge = sh(env + "timeout 120 sbatch --quiet --wait " + array + " merge '" + out + "' 2 >>'" + log + "' 2>&1");
+    int rcMerge =
+        sh(env + "timeout 120 sbatch --quiet --wait " + array + " merge '" + out + "' 2 >>'" + log + "' 2>&1");
     sh(local + " stop '" + slurm + "'");
     ASSERT_EQ(rcArray, 0) << slurp(log);
     ASSERT_EQ(rcMerge, 0) << slurp(log);
@@ -463,8 +466,8 @@ TEST_F(ExperimentRun, SmokeExperimentProducesResultsPlotsAndReport)
     EXPECT_EQ(report.find("**general**"), std::string::npos);
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb
 
 namespace lb {
 namespace {
@@ -498,5 +501,5 @@ TEST_F(ExperimentRun, SpecularSmokeRendersEveryMethod)
     EXPECT_EQ(doc.records.size() - eq, experiments::scenes(e).size() * (e.methods.size() + e.mciCurve.size()));
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

@@ -73,5 +73,5 @@ TEST(IndirectCli, SequenceReportsFlickerPerMethod)
     EXPECT_NE(bad.err.find("--path"), std::string::npos) << bad.err;
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

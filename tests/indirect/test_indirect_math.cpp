@@ -160,5 +160,5 @@ TEST(IndirectBounce, UniformRoomReflectsRhoE0)
     }
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

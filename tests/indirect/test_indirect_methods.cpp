@@ -37,13 +37,14 @@ TEST(IndirectReference, BounceOfAConstantWallIsTheLambertClosedForm)
     for (int k = 0; k < LB_ROOM_NSURF; ++k) {
         glm::dvec3 o, a, b, n;
         f64::lb_room_surface(k, &o, &a, &b, &n);
-        int gs = static_cast<int>(std::lround(glm::length(a) / 0.5)), gt = static_cast<int>(std::lround(glm::length(b) / 0.5));
+        int gs = static_cast<int>(std::lround(glm::length(a) / 0.5)),
+            gt = static_cast<int>(std::lround(glm::length(b) / 0.5));
         grid.insert(grid.end(), {gs, gt, nodes});
         nodes += 16 * gs * gt;
     }
     std::vector<double> edir(nodes, 0.0);
-    std::fill(edir.begin() + grid[3 * wall + 2], edir.begin() + grid[3 * wall + 2] + 16 * grid[3 * wall] * grid[3 * wall + 1],
-              E0);
+    std::fill(edir.begin() + grid[3 * wall + 2],
+              edir.begin() + grid[3 * wall + 2] + 16 * grid[3 * wall] * grid[3 * wall + 1], E0);
     std::vector<double> delta(LB_ROOM_NSURF, 0.0), P = sc.params();
     auto& ctx = rt->context();
     auto buf = [&](auto& v) {
@@ -51,7 +52,8 @@ TEST(IndirectReference, BounceOfAConstantWallIsTheLambertClosedForm)
     };
     std::vector<float> lum = methods::cosineTable(1).packed();
     cl::Buffer bP = buf(P), bL = buf(lum), bE = buf(edir), bG = buf(grid), bD = buf(delta);
-    cl::Buffer out(ctx, CL_MEM_READ_WRITE, res * res * sizeof(double)), err(ctx, CL_MEM_READ_WRITE, res * res * sizeof(double)),
+    cl::Buffer out(ctx, CL_MEM_READ_WRITE, res * res * sizeof(double)),
+        err(ctx, CL_MEM_READ_WRITE, res * res * sizeof(double)),
         splits(ctx, CL_MEM_READ_WRITE, res * res * sizeof(cl_int));
     cl::Kernel k = rt->kernel("indirect_reference.cl", "render", "-DLB_DOUBLE");
     int a = 0;
@@ -117,8 +119,7 @@ TEST(IndirectMethods, RenderNearTheReference)
         EXPECT_EQ(r.nonfinite, 0) << c.spec;
         EXPECT_LT(m.nmse, c.maxNmse) << c.spec;
         EXPECT_TRUE(r.stats.contains("stage_ms")) << c.spec;
-        EXPECT_NEAR(r.stats["lights_flux_lm"].get<double>() /
-                        (1 - r.stats.value("unmapped_flux_fraction", 0.0)),
+        EXPECT_NEAR(r.stats["lights_flux_lm"].get<double>() / (1 - r.stats.value("unmapped_flux_fraction", 0.0)),
                     r.stats["rsm_flux_lm"].get<double>(), 1e-4 * r.stats["rsm_flux_lm"].get<double>())
             << c.spec;
     }
@@ -136,5 +137,5 @@ TEST(IndirectMethods, OnlyTheIndirectScene)
     EXPECT_THROW(test::run(*rt, t, diffuse, "acrsm"), InputError);
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

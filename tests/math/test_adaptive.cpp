@@ -19,8 +19,7 @@ double rule(const Fn& f, int k, double s0, double t0, double hs, double ht)
     using namespace lb::f64;
     double q = 0;
     for (int j = 0; j < 4; ++j)
-        for (int i = 0; i < 4; ++i)
-            q += lb_gl4_w(i) * lb_gl4_w(j) * f(k, s0 + hs * lb_gl4_x(i), t0 + ht * lb_gl4_x(j));
+        for (int i = 0; i < 4; ++i) q += lb_gl4_w(i) * lb_gl4_w(j) * f(k, s0 + hs * lb_gl4_x(i), t0 + ht * lb_gl4_x(j));
     return q * hs * ht;
 }
 
@@ -28,7 +27,7 @@ double cell(const Fn& f, int k, double s0, double t0, double hs, double ht, doub
 {
     double a = 0.5 * hs, b = 0.5 * ht;
     double v = rule(f, k, s0, t0, a, b) + rule(f, k, s0 + a, t0, a, b) + rule(f, k, s0, t0 + b, a, b) +
-               rule(f, k, s0 + a, t0 + b, a, b);
+        rule(f, k, s0 + a, t0 + b, a, b);
     *err = std::fabs(v - rule(f, k, s0, t0, hs, ht));
     return v;
 }
@@ -232,4 +231,4 @@ TEST(Adaptive, SquareCellsNeedNeitherSurfacesNorASecondSizeArray)
     EXPECT_NEAR(sum, float(kRootS), 2e-5f);  // tolerance 1e-5 plus float rounding of ~20 cells
 }
 
-} // namespace
+}  // namespace

@@ -97,4 +97,4 @@ TEST(Dynamic, RadianceOfLambertianLightIsConstant)
     EXPECT_NEAR(lb_radiance_from(lum.data(), L, real3(0, 0, 1)), 100.0 / 4.0, 1e-12);
 }
 
-} // namespace
+}  // namespace

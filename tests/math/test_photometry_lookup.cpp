@@ -46,10 +46,10 @@ TEST(PhotometryLookup, DirectionToAngles)
     EXPECT_NEAR(lb_gamma_deg(real3(1, 0, 0)), 90, 1e-12);
     EXPECT_NEAR(lb_gamma_deg(real3(0, 0, -1)), 180, 1e-12);
     EXPECT_NEAR(lb_c_deg(real3(1, 0, 0)), 0, 1e-12);
-    EXPECT_NEAR(lb_c_deg(real3(0, 1, 0)), 90, 1e-12);   // C = 90 along v
+    EXPECT_NEAR(lb_c_deg(real3(0, 1, 0)), 90, 1e-12);  // C = 90 along v
     EXPECT_NEAR(lb_c_deg(real3(-1, 0, 0)), 180, 1e-12);
     EXPECT_NEAR(lb_c_deg(real3(0, -1, 0)), 270, 1e-12);
-    EXPECT_NEAR(lb_c_deg(real3(1, -1e-9, 0)), 360, 1e-6); // just below 360, never negative
+    EXPECT_NEAR(lb_c_deg(real3(1, -1e-9, 0)), 360, 1e-6);  // just below 360, never negative
 }
 
-} // namespace
+}  // namespace

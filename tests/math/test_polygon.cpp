@@ -37,7 +37,7 @@ TEST(Polygon, ClipDiagonalMakesTriangleOrPentagon)
     EXPECT_EQ(n, 3);
     EXPECT_NEAR(area(p, n), 0.125, 1e-15);
     unitSquare(p);
-    n = lb_clip_polygon(p, 4, real3(-1, -1, 0), -1.5); // the complement
+    n = lb_clip_polygon(p, 4, real3(-1, -1, 0), -1.5);  // the complement
     EXPECT_EQ(n, 5);
     EXPECT_NEAR(area(p, n), 0.875, 1e-15);
 }
@@ -46,7 +46,7 @@ TEST(Polygon, ClipAllOrNothing)
 {
     real3 p[LB_MAXV];
     unitSquare(p);
-    EXPECT_EQ(lb_clip_polygon(p, 4, real3(0, 0, 1), -1.0), 4); // everything kept
+    EXPECT_EQ(lb_clip_polygon(p, 4, real3(0, 0, 1), -1.0), 4);  // everything kept
     EXPECT_EQ(lb_clip_polygon(p, 4, real3(0, 0, 1), 1.0), 0);  // nothing kept
 }
 
@@ -103,11 +103,11 @@ TEST(Polygon, ClosestPointIsClosestOverDenseSamples)
                     if (y.x + y.y >= 0.7) best = std::fmin(best, length(y - q));
                 }
             EXPECT_LE(length(c - q), best + 1e-12);
-            EXPECT_GE(length(c - q), best - 0.01); // the grid's spacing bounds the gap
+            EXPECT_GE(length(c - q), best - 0.01);  // the grid's spacing bounds the gap
         }
 }
 
-} // namespace
+}  // namespace
 
 namespace {
 
@@ -140,4 +140,4 @@ TEST(Polygon, ClosestPointCornerVersusEdgeInFloat)
     EXPECT_NEAR(c.y, 0.25f, 1e3f * 1.2e-7f);
 }
 
-} // namespace
+}  // namespace

@@ -116,8 +116,8 @@ TEST(Spherical, LambertTiltedMatchesQuadrature)
     real3 c(0.4, -0.2, 1.5), u(1, 0, 0), v(0, std::cos(kPi / 3), std::sin(kPi / 3));
     real3 nl = normalize(cross(u, v));
     double W = 0.8, L = 0.6;
-    std::vector<real3> p = {c - 0.5 * W * u - 0.5 * L * v, c + 0.5 * W * u - 0.5 * L * v,
-                            c + 0.5 * W * u + 0.5 * L * v, c - 0.5 * W * u + 0.5 * L * v};
+    std::vector<real3> p = {c - 0.5 * W * u - 0.5 * L * v, c + 0.5 * W * u - 0.5 * L * v, c + 0.5 * W * u + 0.5 * L * v,
+                            c - 0.5 * W * u + 0.5 * L * v};
     double E = lb_polygon_irradiance_lambert(p.data(), 4, real3(0, 0, 1));
     int n = 200;
     double s = 0;
@@ -132,7 +132,7 @@ TEST(Spherical, LambertTiltedMatchesQuadrature)
     EXPECT_NEAR(E, s, 1e-5 * s);
 }
 
-} // namespace
+}  // namespace
 
 namespace {
 
@@ -169,4 +169,4 @@ TEST(Spherical, Atan2PolyFloat)
     std::printf("lb_atan2_poly float: worst %.3g relative, %.3g absolute\n", worstRel, worstAbs);
 }
 
-} // namespace
+}  // namespace

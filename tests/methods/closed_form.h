@@ -83,4 +83,4 @@ inline double cosnIrradiance(const Scene& sc, int n, double i0, glm::dvec3 x, gl
     return i0 * std::pow(D, n) / (sc.width * sc.length) * I;
 }
 
-} // namespace lb::test
+}  // namespace lb::test

@@ -10,8 +10,8 @@
 namespace lb::test {
 
 // One render (reps = 1, no disk cache) of `spec` on scene `sc`.
-inline methods::RenderResult run(ocl::Runtime& rt, const photometry::Table& t, const Scene& sc,
-                                 const std::string& spec, methods::Precision p = methods::Precision::Double)
+inline methods::RenderResult run(ocl::Runtime& rt, const photometry::Table& t, const Scene& sc, const std::string& spec,
+                                 methods::Precision p = methods::Precision::Double)
 {
     methods::RenderOptions opt;
     opt.reps = 1;
@@ -29,4 +29,4 @@ inline Scene scene(double h, double R, int res)
     return s;
 }
 
-} // namespace lb::test
+}  // namespace lb::test

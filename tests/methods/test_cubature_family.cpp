@@ -243,5 +243,5 @@ TEST(CubatureFamily, VoronoiWithClippedLight)
         EXPECT_GT(err[std::string("voronoi ") + clipped], 10 * err["voronoi unclipped h=0.1 R=3pi/4"]) << clipped;
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

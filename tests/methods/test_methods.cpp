@@ -181,9 +181,10 @@ TEST(Render, CacheReturnsTheSameImage)
     EXPECT_EQ(b.extraImages.count("err"), 1u);
     // Another scene is another key.
     sc.height = 1.2;
-    EXPECT_NE(methods::cacheKey(t, sc, spec, Precision::Float), methods::cacheKey(t, scene(1.1, 3 * M_PI / 4, 8), spec, Precision::Float));
+    EXPECT_NE(methods::cacheKey(t, sc, spec, Precision::Float),
+              methods::cacheKey(t, scene(1.1, 3 * M_PI / 4, 8), spec, Precision::Float));
     std::filesystem::remove_all(dir);
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

@@ -86,8 +86,8 @@ void checkScene(ocl::Runtime& rt, const RefCase& c, double h, double R, int res,
             // error is held to 1e-4 x 1e-6 of the peak.
             double rel = std::fabs(got - e) / std::max(e, 1e-6 * emax);
             *worst = std::max(*worst, rel);
-            EXPECT_LE(rel, c.tol) << "n=" << c.n << " h=" << h << " R=" << R << " px " << row << "," << col
-                                  << " got " << got << " want " << e << " est " << err.at(row, col);
+            EXPECT_LE(rel, c.tol) << "n=" << c.n << " h=" << h << " R=" << R << " px " << row << "," << col << " got "
+                                  << got << " want " << e << " est " << err.at(row, col);
         }
 }
 
@@ -114,8 +114,7 @@ TEST(Reference, FloatMatchesClosedForms)
     // is what a float reference can promise, and the test shows it holds.
     double worst = 0;
     for (double h : {0.01, 0.1, 2.5})
-        for (double R : {M_PI / 2, 3 * M_PI / 4, M_PI})
-            checkScene(*rt, {1, Precision::Float, 1e-3}, h, R, 12, &worst);
+        for (double R : {M_PI / 2, 3 * M_PI / 4, M_PI}) checkScene(*rt, {1, Precision::Float, 1e-3}, h, R, 12, &worst);
     std::printf("reference float: worst relative error %.3g\n", worst);
 }
 
@@ -147,8 +146,8 @@ TEST(Reference, ErrorEstimateIsSmallAndHonest)
         }
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb
 
 namespace lb {
 namespace {
@@ -182,13 +181,14 @@ TEST(Reference, DISABLED_Report512)
                 worstAll = std::max(worstAll, d / e[i]);
                 worst = std::max(worst, d / std::max(e[i], 1e-6 * emax));
             }
-            std::printf("512^2 h=0.1 R=%.4f cos^%d: %.2f s, splits %ld, worst rel %.3g (E >= 1e-6 peak), %.3g (all lit)\n",
-                        R, n, r.timing.median_ms / 1e3, r.stats.at("splits_total").get<long>(), worst, worstAll);
+            std::printf(
+                "512^2 h=0.1 R=%.4f cos^%d: %.2f s, splits %ld, worst rel %.3g (E >= 1e-6 peak), %.3g (all lit)\n", R,
+                n, r.timing.median_ms / 1e3, r.stats.at("splits_total").get<long>(), worst, worstAll);
         }
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb
 
 namespace lb {
 namespace {
@@ -216,5 +216,5 @@ TEST(Reference, KinkedTableConvergesWithinBudget)
                 r.stats.at("splits_total").get<long>());
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

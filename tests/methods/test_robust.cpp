@@ -77,7 +77,7 @@ TEST(AreaForm, LightsTheLightsOwnPlane)
 {
     LB_REQUIRE_RUNTIME(rt);
     auto t = methods::loadLuminaire("diffuse");  // 0.55 + 0.45 cos(gamma): emits at gamma 90
-    Scene sc = test::scene(1.0, M_PI / 2, 15);    // odd: row 7 lies at y = 0
+    Scene sc = test::scene(1.0, M_PI / 2, 15);  // odd: row 7 lies at y = 0
     auto ref = test::run(*rt, t, sc, "reference", Precision::Float).image;
     auto img = test::run(*rt, t, sc, "robust", Precision::Float).image;
     double worst = 0;
@@ -107,5 +107,5 @@ TEST(Robust, IsTheCubatureWithTheAreaFormOn)
     EXPECT_EQ(methods::parseSpec("cubature").str("area"), "none");
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

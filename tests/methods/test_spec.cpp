@@ -112,5 +112,5 @@ TEST(Samples, SetsAreDeterministicInRangeAndDistinctBySeed)
     EXPECT_THROW(samplePoints("sobol", 4, 0), InputError);
 }
 
-} // namespace
-} // namespace lb::methods
+}  // namespace
+}  // namespace lb::methods

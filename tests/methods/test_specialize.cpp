@@ -35,8 +35,7 @@ photometry::Table frontLobe()
 photometry::Table asymmetric()
 {
     return photometry::tabulate(
-        [](double c, double g) { return 100 + 80 * std::cos(c * M_PI / 180) * std::sin(g * M_PI / 180) + g; }, 25,
-        37);
+        [](double c, double g) { return 100 + 80 * std::cos(c * M_PI / 180) * std::sin(g * M_PI / 180) + g; }, 25, 37);
 }
 
 TEST(Specialize, AnalysisRules)
@@ -90,7 +89,8 @@ TEST(Specialize, SpecialisedMcEqualsGeneral)
     // R = pi/2: half the image lies behind the light's plane (noBack matters).
     for (auto p : {Precision::Float, Precision::Double}) {
         if (p == Precision::Double && !rt->fp64()) continue;
-        expectSame(*rt, front, scene(0.1, M_PI / 2), "mc:n=16", p, " -DLB_LUT -DLB_LUT_1D -DLB_NO_HORIZON -DLB_NO_BACK");
+        expectSame(*rt, front, scene(0.1, M_PI / 2), "mc:n=16", p,
+                   " -DLB_LUT -DLB_LUT_1D -DLB_NO_HORIZON -DLB_NO_BACK");
         expectSame(*rt, asym, scene(1.0, 5 * M_PI / 8), "mc:n=16", p, " -DLB_LUT -DLB_NO_HORIZON");
     }
     expectSame(*rt, front, scene(0.1, M_PI / 2), "mc:n=16,lookup=exact", Precision::Float,
@@ -135,7 +135,6 @@ TEST(Specialize, LutMcCloseToExactMc)
     EXPECT_LE(worst, lut.errorBound / 20 + 1e-5);
     EXPECT_GT(worst, 0) << "the LUT is really used";
 }
-
 
 // ---- The cubature's straight-line rectangle fan (rule rectFan) ----
 
@@ -203,7 +202,7 @@ TEST(Specialize, CubatureRectFanRule)
     EXPECT_FALSE(clip(v, "plane_eps=0.001,horizon_eps=0.05"));
     EXPECT_TRUE(clip(v, "plane_eps=0.1"));
     EXPECT_FALSE(fan(v, "plane_eps=0.1,normalize=formfactor"));  // formfactor: general where clipped
-    EXPECT_TRUE(clip(scene(0.0, M_PI / 2), ""));   // touching
+    EXPECT_TRUE(clip(scene(0.0, M_PI / 2), ""));  // touching
     EXPECT_TRUE(clip(scene(-0.1, M_PI / 2), ""));  // through the receiver plane
     EXPECT_EQ(analyseCubature(scene(-0.1, M_PI / 2), t, opts("")).defines(),
               " -DLB_LUT -DLB_CUB_RECT_FAN -DLB_CUB_RECT_CLIP");
@@ -218,7 +217,8 @@ TEST(Specialize, CubatureRectFanRule)
     EXPECT_EQ(cubatureLanes(a, opts("lanes=1"), "CPU", false), 1);
     EXPECT_EQ(cubatureLanes(a, opts("lanes=8"), "GPU", false), 8);
     EXPECT_EQ(cubatureLanes(analyseCubature(s, t, opts("lookup=exact")), opts("lookup=exact"), "CPU", false), 1);
-    EXPECT_EQ(cubatureLanes(analyseCubature(s, t, opts("triangulation=delaunay,dynamic=np")), opts(""), "CPU", false), 1);
+    EXPECT_EQ(cubatureLanes(analyseCubature(s, t, opts("triangulation=delaunay,dynamic=np")), opts(""), "CPU", false),
+              1);
     // Delaunay over corners + CP + barycentre: the same scene conditions
     auto del = [&](const Scene& sc, const std::string& kv) { return analyseCubature(sc, t, opts(kv)).rectDel; };
     const std::string cb = "triangulation=delaunay,dynamic=cp+barycentre";
@@ -256,8 +256,8 @@ double worstRelDiff(const std::vector<double>& ref, const std::vector<double>& t
 // against the general kernel in precision `ref`; per pixel within `rel` of
 // the general value (floor 1e-12 of the peak). Returns the worst relative
 // difference.
-double cubatureDiff(ocl::Runtime& rt, const photometry::Table& t, const Scene& s, const std::string& spec,
-                    Precision p, const std::string& lanes, Precision ref, double rel)
+double cubatureDiff(ocl::Runtime& rt, const photometry::Table& t, const Scene& s, const std::string& spec, Precision p,
+                    const std::string& lanes, Precision ref, double rel)
 {
     RenderOptions opt;
     opt.reps = 1;
@@ -308,14 +308,21 @@ TEST(Specialize, CubatureRectFanEqualsGeneral)
     auto front = frontLobe();
     std::vector<Scene> scenes = {scene(1.0, 3 * M_PI / 4, 45), scene(0.1, M_PI / 2, 45), scene(0.05, M_PI, 45),
                                  scene(2.5, 5 * M_PI / 8, 45)};
-    const char* specs[] = {"cubature", "cubature:weighting=sample", "cubature:weighting=dotout",
-                           "cubature:dynamic=none", "cubature:corner_inset=0.3,dyn_weight=2",
-                           "cubature:plane_eps=0.05", "cubature:normalize=formfactor",
+    const char* specs[] = {"cubature",
+                           "cubature:weighting=sample",
+                           "cubature:weighting=dotout",
+                           "cubature:dynamic=none",
+                           "cubature:corner_inset=0.3,dyn_weight=2",
+                           "cubature:plane_eps=0.05",
+                           "cubature:normalize=formfactor",
                            "cubature:normalize=formfactor,weighting=dotout,dynamic=none,corner_inset=0.2",
-                           "cubature:blend_dist=1.5", "cubature:blend_dist=0.6,weighting=sample,corner_inset=0.3",
+                           "cubature:blend_dist=1.5",
+                           "cubature:blend_dist=0.6,weighting=sample,corner_inset=0.3",
                            "cubature:triangulation=delaunay",
                            "cubature:triangulation=delaunay,weighting=dotout,normalize=formfactor,dyn_weight=2",
-                           "cubature:area=gauss2", "cubature:area=gauss3,area_q=0.5,weighting=sample", "robust"};
+                           "cubature:area=gauss2",
+                           "cubature:area=gauss3,area_q=0.5,weighting=sample",
+                           "robust"};
     // Without double on the device: float against float, 2e-5 (the general
     // float kernel's own error, 8.7e-6, plus the fan's, with margin).
     Precision ref = rt->fp64() ? Precision::Double : Precision::Float;
@@ -334,8 +341,8 @@ TEST(Specialize, CubatureRectFanEqualsGeneral)
             double g = rt->fp64() ? generalFloatError(*rt, asym, s, spec) : 0;
             (ff ? worstFfGeneral : worstGeneral) = std::max(ff ? worstFfGeneral : worstGeneral, g);
             for (const char* lanes : {"1", "8"}) {
-                double d = cubatureDiff(*rt, asym, s, spec, Precision::Float, lanes, ref,
-                                        ff ? 1e-4 : std::max(rel, 2 * g));
+                double d =
+                    cubatureDiff(*rt, asym, s, spec, Precision::Float, lanes, ref, ff ? 1e-4 : std::max(rel, 2 * g));
                 (ff ? worstFf : worst) = std::max(ff ? worstFf : worst, d);
                 if (HasFailure()) return;
             }
@@ -345,8 +352,8 @@ TEST(Specialize, CubatureRectFanEqualsGeneral)
     }
     std::cout << "rectangle fan (float) against the double general kernel: worst relative difference " << worst
               << " (general float kernel: " << worstGeneral << ")\n";
-    std::cout << "formfactor (float), worst relative difference to the double general kernel: rectangle fan "
-              << worstFf << ", general kernel " << worstFfGeneral << "\n";
+    std::cout << "formfactor (float), worst relative difference to the double general kernel: rectangle fan " << worstFf
+              << ", general kernel " << worstFfGeneral << "\n";
 
     // 1D table, and the exact lookup (one pixel per work-item only). Here
     // the float direction's rounding (~1e-7 rad) meets steep intensities:
@@ -362,10 +369,10 @@ TEST(Specialize, CubatureRectFanEqualsGeneral)
     double worstD = 0;
     for (const auto& s : scenes)
         for (const char* spec : specs)
-            worstD = std::max(worstD, cubatureDiff(*rt, asym, s, spec, Precision::Double, "1", Precision::Double, 1e-12));
+            worstD =
+                std::max(worstD, cubatureDiff(*rt, asym, s, spec, Precision::Double, "1", Precision::Double, 1e-12));
     std::cout << "rectangle fan (double) against the general kernel: worst relative difference " << worstD << "\n";
 }
-
 
 // The straight-line forms of voronoi (any scene: the method never clips) and
 // of point (any scene), cp, np, mrp and structured (nothing clipped) against their
@@ -420,18 +427,20 @@ TEST(Specialize, StraightLineFormsEqualGeneral)
                 bound = std::max(rel, 2 * diff(asym, s, c.name + ":specialize=none", Precision::Float, ref, 1.0));
             for (const char* lanes : {"lanes=1", "lanes=8"})
                 worst = std::max(worst, diff(asym, s, c.name + ":" + lanes, Precision::Float, ref, bound));
-            if (rt->fp64()) worstD = std::max(worstD, diff(asym, s, c.name, Precision::Double, Precision::Double, 1e-12));
+            if (rt->fp64())
+                worstD = std::max(worstD, diff(asym, s, c.name, Precision::Double, Precision::Double, 1e-12));
             if (HasFailure()) return;
         }
         // 1D table: the cos^3 lobe's steep fall to 0 at 90 deg (see the cubature's bound), or
         // twice the general float kernel's own error (point: pixels of 3e-3 lux at the cut-off)
         double steep = 1e-5;
         if (rt->fp64())
-            steep = std::max(steep, 2 * diff(front, unclipped[0], c.name + ":specialize=none", Precision::Float, ref, 1.0));
+            steep =
+                std::max(steep, 2 * diff(front, unclipped[0], c.name + ":specialize=none", Precision::Float, ref, 1.0));
         worst = std::max(worst, diff(front, unclipped[0], c.name + ":lanes=8", Precision::Float, ref, steep));
     }
-    worst = std::max(worst, diff(asym, unclipped[1], "voronoi:lanes=8,table_res=9,plane_eps=0.05", Precision::Float,
-                                 ref, rel));
+    worst = std::max(
+        worst, diff(asym, unclipped[1], "voronoi:lanes=8,table_res=9,plane_eps=0.05", Precision::Float, ref, rel));
     // np and mrp with a larger skew (the normal tilts for more pixels)
     for (const char* spec : {"np:lanes=8,skew=0.9", "mrp:lanes=8,skew=0.9"})
         for (const auto& s : unclipped) worst = std::max(worst, diff(asym, s, spec, Precision::Float, ref, rel));
@@ -460,13 +469,22 @@ TEST(Specialize, CubatureRectDelaunayEqualsGeneral)
     wide.length = 0.5;
     Scene flat = scene(0.2, M_PI, 45);
     flat.extent = 1.5;  // pixels every 1/30 m: many under the light, on its diagonals
-    std::vector<Scene> scenes = {scene(1.0, 3 * M_PI / 4, 45), scene(0.1, M_PI / 2, 45), scene(0.05, M_PI, 45),
-                                 scene(2.5, 5 * M_PI / 8, 45), wide, flat};
+    std::vector<Scene> scenes = {scene(1.0, 3 * M_PI / 4, 45),
+                                 scene(0.1, M_PI / 2, 45),
+                                 scene(0.05, M_PI, 45),
+                                 scene(2.5, 5 * M_PI / 8, 45),
+                                 wide,
+                                 flat};
     const std::string d = "cubature:triangulation=delaunay,dynamic=cp+barycentre";
-    const std::vector<std::string> specs = {d, d + ",weighting=sample", d + ",weighting=dotout",
-                                            d + ",corner_inset=0.3,dyn_weight=2", d + ",plane_eps=0.05",
-                                            d + ",normalize=formfactor", d + ",blend_dist=1.5",
-                                            d + ",blend_dist=0.6,weighting=sample", d + ",area=gauss2",
+    const std::vector<std::string> specs = {d,
+                                            d + ",weighting=sample",
+                                            d + ",weighting=dotout",
+                                            d + ",corner_inset=0.3,dyn_weight=2",
+                                            d + ",plane_eps=0.05",
+                                            d + ",normalize=formfactor",
+                                            d + ",blend_dist=1.5",
+                                            d + ",blend_dist=0.6,weighting=sample",
+                                            d + ",area=gauss2",
                                             d + ",area=gauss3,area_q=3"};
     Precision ref = rt->fp64() ? Precision::Double : Precision::Float;
     double rel = rt->fp64() ? 1e-6 : 2e-5;
@@ -477,20 +495,20 @@ TEST(Specialize, CubatureRectDelaunayEqualsGeneral)
             double g = rt->fp64() ? generalFloatError(*rt, asym, s, spec) : 0;
             worstGeneral = std::max(worstGeneral, g);
             for (const char* lanes : {"1", "8"})
-                worst = std::max(worst, cubatureDiff(*rt, asym, s, spec, Precision::Float, lanes, ref,
-                                                     std::max(ff ? 1e-4 : rel, 2 * g)));
+                worst = std::max(
+                    worst,
+                    cubatureDiff(*rt, asym, s, spec, Precision::Float, lanes, ref, std::max(ff ? 1e-4 : rel, 2 * g)));
             if (rt->fp64())
-                worstD = std::max(worstD, cubatureDiff(*rt, asym, s, spec, Precision::Double, "1", Precision::Double,
-                                                       1e-12));
+                worstD = std::max(worstD,
+                                  cubatureDiff(*rt, asym, s, spec, Precision::Double, "1", Precision::Double, 1e-12));
             if (HasFailure()) return;
         }
     std::cout << "Delaunay cp + barycentre, straight-line against the general kernel: float " << worst
-              << " (general float kernel against its double result: " << worstGeneral << "), double " << worstD
-              << "\n";
+              << " (general float kernel against its double result: " << worstGeneral << "), double " << worstD << "\n";
 }
 
-} // namespace
-} // namespace lb::methods
+}  // namespace
+}  // namespace lb::methods
 
 namespace lb::methods {
 namespace {
@@ -507,9 +525,11 @@ TEST(Specialize, CubatureRectClipEqualsGeneral)
     LB_REQUIRE_RUNTIME(rt);
     auto asym = asymmetric();
     Scene below = scene(-1.0, M_PI, 45);
-    std::vector<std::pair<Scene, std::string>> cases = {
-        {scene(-0.2, 5 * M_PI / 8, 45), ""}, {scene(-0.3, M_PI / 2, 45), ""}, {scene(-0.5, 3 * M_PI / 4, 45), ""},
-        {scene(0.0, M_PI / 2, 45), ""}, {scene(0.1, M_PI / 2, 45), "horizon_eps=0.1"}};
+    std::vector<std::pair<Scene, std::string>> cases = {{scene(-0.2, 5 * M_PI / 8, 45), ""},
+                                                        {scene(-0.3, M_PI / 2, 45), ""},
+                                                        {scene(-0.5, 3 * M_PI / 4, 45), ""},
+                                                        {scene(0.0, M_PI / 2, 45), ""},
+                                                        {scene(0.1, M_PI / 2, 45), "horizon_eps=0.1"}};
     const std::vector<std::string> specs = {"cubature",
                                             "cubature:weighting=sample",
                                             "cubature:weighting=dotout,corner_inset=0.3,dyn_weight=2",
@@ -517,7 +537,8 @@ TEST(Specialize, CubatureRectClipEqualsGeneral)
                                             "cubature:triangulation=delaunay",
                                             "cubature:triangulation=delaunay,dynamic=cp+barycentre",
                                             "cubature:triangulation=delaunay,dynamic=cp+barycentre,weighting=dotout",
-                                            "cubature:area=gauss2,area_q=0.5", "robust"};
+                                            "cubature:area=gauss2,area_q=0.5",
+                                            "robust"};
     Precision ref = rt->fp64() ? Precision::Double : Precision::Float;
     double rel = rt->fp64() ? 1e-6 : 2e-5;
     double worst = 0, worstD = 0, worstGeneral = 0;
@@ -530,11 +551,12 @@ TEST(Specialize, CubatureRectClipEqualsGeneral)
             double g = rt->fp64() ? generalFloatError(*rt, asym, s, spec) : 0;
             worstGeneral = std::max(worstGeneral, g);
             if (rt->fp64())
-                worstD = std::max(worstD, cubatureDiff(*rt, asym, s, spec, Precision::Double, "1", Precision::Double,
-                                                       1e-12));
+                worstD = std::max(worstD,
+                                  cubatureDiff(*rt, asym, s, spec, Precision::Double, "1", Precision::Double, 1e-12));
             for (const char* lanes : {"1", "8"})
-                worst = std::max(worst, cubatureDiff(*rt, asym, s, spec, Precision::Float, lanes, ref,
-                                                     std::max(ff ? 1e-4 : rel, 2 * g)));
+                worst = std::max(
+                    worst,
+                    cubatureDiff(*rt, asym, s, spec, Precision::Float, lanes, ref, std::max(ff ? 1e-4 : rel, 2 * g)));
             if (HasFailure()) return;
         }
     // wholly behind: every pixel exactly 0 and no triangle, as the general kernel
@@ -551,9 +573,8 @@ TEST(Specialize, CubatureRectClipEqualsGeneral)
         EXPECT_EQ(sp.stats["triangles_per_pixel"], 0.0) << spec;
     }
     std::cout << "clipped straight-line forms against the general kernel: float " << worst
-              << " (general float kernel against its double result: " << worstGeneral << "), double " << worstD
-              << "\n";
+              << " (general float kernel against its double result: " << worstGeneral << "), double " << worstD << "\n";
 }
 
-} // namespace
-} // namespace lb::methods
+}  // namespace
+}  // namespace lb::methods

@@ -20,14 +20,14 @@ namespace {
 // Skips when flip_evaluator cannot be imported by the Python FLIP uses
 // (checked here on its own, as the pyldt peer test does); where it can,
 // the co-process must be available: a broken co-process fails, never skips.
-#define LB_REQUIRE_FLIP()                                                                                  \
-    do {                                                                                                   \
-        const std::string py = metrics::flipPython();                                                      \
-        if (std::system(("'" + py + "' -c 'import flip_evaluator' 2>/dev/null").c_str()) != 0)             \
-            GTEST_SKIP() << "flip_evaluator cannot be imported by " << py                                  \
-                         << " (scripts/install-deps.sh installs it into .venv; no PyPI, no FLIP)";         \
-        std::string why;                                                                                   \
-        ASSERT_TRUE(metrics::flipAvailable(&why)) << py << " imports flip_evaluator, yet: " << why;        \
+#define LB_REQUIRE_FLIP()                                                                           \
+    do {                                                                                            \
+        const std::string py = metrics::flipPython();                                               \
+        if (std::system(("'" + py + "' -c 'import flip_evaluator' 2>/dev/null").c_str()) != 0)      \
+            GTEST_SKIP() << "flip_evaluator cannot be imported by " << py                           \
+                         << " (scripts/install-deps.sh installs it into .venv; no PyPI, no FLIP)";  \
+        std::string why;                                                                            \
+        ASSERT_TRUE(metrics::flipAvailable(&why)) << py << " imports flip_evaluator, yet: " << why; \
     } while (0)
 
 // A smooth HDR image like a receiver's illuminance: a bright peak (~2000 lx)
@@ -102,5 +102,5 @@ TEST(Flip, BadInputIsAnInputError)
     EXPECT_THROW(metrics::flip(bad, Image(2, 2, 1.0)), InputError);
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

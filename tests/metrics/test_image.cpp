@@ -32,5 +32,5 @@ TEST(Exr, MissingOrBadFileIsAnInputError)
     std::remove(path.c_str());
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

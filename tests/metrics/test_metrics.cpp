@@ -30,12 +30,12 @@ TEST(Metrics, HandComputedTwoByTwo)
     // form: 4 ulp (EXPECT_DOUBLE_EQ) is the right tolerance.
     EXPECT_DOUBLE_EQ(m.mean_ref, 2.5);
     EXPECT_DOUBLE_EQ(m.mean_test, 3.0);
-    EXPECT_DOUBLE_EQ(m.nmse, 0.2);                    // (3/2) / (5/2 * 3)
+    EXPECT_DOUBLE_EQ(m.nmse, 0.2);  // (3/2) / (5/2 * 3)
     EXPECT_DOUBLE_EQ(m.nrmse, std::sqrt(1.5) / 2.5);  // sqrt(3/2) / (5/2)
     // relMSE: eps = 1e-2 (5/2)^2 = 1/16; terms 1/(1 + 1/16) = 16/17, 0,
     // 1/(9 + 1/16) = 16/145, 4/(16 + 1/16) = 64/257; four pixels.
     EXPECT_DOUBLE_EQ(m.relmse, (16.0 / 17 + 16.0 / 145 + 64.0 / 257) / 4);
-    EXPECT_EQ(m.ueb, 2.0);   // largest A - R, exact
+    EXPECT_EQ(m.ueb, 2.0);  // largest A - R, exact
     EXPECT_EQ(m.leb, -1.0);  // smallest A - R, exact (negative: thesis convention)
     EXPECT_EQ(m.nonfinite, 0);
     EXPECT_EQ(m.pixels, 4);
@@ -60,8 +60,8 @@ TEST(Metrics, IdenticalImagesGiveZero)
 TEST(Metrics, ScalingTheTestAloneIsAnError)
 {
     auto m = metrics::compare(img2x2(1, 2, 3, 4), img2x2(2, 4, 6, 8));
-    EXPECT_DOUBLE_EQ(m.nmse, 0.6);                      // exact dyadic inputs: 4 ulp
-    EXPECT_DOUBLE_EQ(m.nrmse, std::sqrt(7.5) / 2.5);    // sqrt(30/4) / (5/2)
+    EXPECT_DOUBLE_EQ(m.nmse, 0.6);  // exact dyadic inputs: 4 ulp
+    EXPECT_DOUBLE_EQ(m.nrmse, std::sqrt(7.5) / 2.5);  // sqrt(30/4) / (5/2)
     EXPECT_EQ(m.ueb, 4.0);
     EXPECT_EQ(m.leb, 0.0);  // nothing under-estimated: LEB is 0, not a positive number
 }
@@ -255,5 +255,5 @@ TEST(Metrics, JsonHasTheDocumentedKeysAndRoundTrips)
     EXPECT_TRUE(std::isnan(ju.get<metrics::Metrics>().nmse));
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

@@ -63,5 +63,5 @@ TEST(Metrics, PooledEqualsTheStitchedImage)
     EXPECT_NEAR(metrics::pooled({parts[1]}).nmse, parts[1].nmse, 1e-12 * parts[1].nmse);
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

@@ -63,9 +63,9 @@ TEST(Tonemap, NonFinitePixelsAreMagenta)
 TEST(ErrorColour, WhiteOrangeBlue)
 {
     EXPECT_EQ(tonemap::errorColour(0.0, 2.0, 1.0), tonemap::kWhite);
-    EXPECT_EQ(tonemap::errorColour(2.0, 2.0, 1.0), tonemap::kOrange);   // at UEB: saturated
+    EXPECT_EQ(tonemap::errorColour(2.0, 2.0, 1.0), tonemap::kOrange);  // at UEB: saturated
     EXPECT_EQ(tonemap::errorColour(50.0, 2.0, 1.0), tonemap::kOrange);  // beyond: stays saturated
-    EXPECT_EQ(tonemap::errorColour(-1.0, 2.0, 1.0), tonemap::kBlue);    // at |LEB|
+    EXPECT_EQ(tonemap::errorColour(-1.0, 2.0, 1.0), tonemap::kBlue);  // at |LEB|
     EXPECT_EQ(tonemap::errorColour(-9.0, 2.0, 1.0), tonemap::kBlue);
     // Half way to orange (255,128,0): 255 + 0.5 (x - 255) -> (255, 191.5 -> 192, 127.5 -> 128).
     EXPECT_EQ(tonemap::errorColour(1.0, 2.0, 1.0), (Rgb8{255, 192, 128}));
@@ -93,7 +93,8 @@ TEST(Png, WriteReadRoundTripIsExact)
     tonemap::Picture p(5, 3);
     for (int y = 0; y < 3; ++y)
         for (int x = 0; x < 5; ++x)
-            p.at(y, x) = Rgb8{static_cast<uint8_t>(50 * x), static_cast<uint8_t>(100 * y), static_cast<uint8_t>(7 + x + y)};
+            p.at(y, x) =
+                Rgb8{static_cast<uint8_t>(50 * x), static_cast<uint8_t>(100 * y), static_cast<uint8_t>(7 + x + y)};
     auto path = tmp("lb_test_roundtrip.png");
     writePng(path, p);
     auto q = readPng(path);  // libpng reading it back: 8-bit RGB is lossless
@@ -127,5 +128,5 @@ TEST(Png, BadFilesAreErrors)
     EXPECT_THROW(writePng("/nonexistent/dir/x.png", tonemap::Picture(1, 1)), Error);
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

@@ -62,5 +62,5 @@ TEST(LdtPeer, EveryLdtAgreesWithPyldtNodeByNode)
     if (shared.empty()) GTEST_SKIP() << "../shared is not present: checked the suite's own files only";
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

@@ -133,7 +133,8 @@ TEST(Lut, CosineLobeWithinBound)
     Table t = tabulate([](double, double g) { return std::max(0.0, 1000 * std::cos(g * M_PI / 180)); }, 2, 181);
     Lut lut = buildLut(t);
     EXPECT_TRUE(lut.rotational);
-    EXPECT_NEAR(lut.errorBound, 1000.0 * 2 * 2 / 256, 1000.0 * 2 * 2 / 256 * 0.02);  // Sg within 2 % of 1000 (chord slopes)
+    EXPECT_NEAR(lut.errorBound, 1000.0 * 2 * 2 / 256,
+                1000.0 * 2 * 2 / 256 * 0.02);  // Sg within 2 % of 1000 (chord slopes)
     EXPECT_LE(maxError(t, lut, 3), lut.errorBound + 1e-2);
 }
 
@@ -148,5 +149,5 @@ TEST(Lut, SymmetryAnalysis)
     EXPECT_FALSE(emitsNoBack(rot));
 }
 
-} // namespace
-} // namespace lb::photometry
+}  // namespace
+}  // namespace lb::photometry

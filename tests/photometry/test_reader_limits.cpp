@@ -47,18 +47,24 @@ std::string join(const std::vector<std::string>& l)
 // Valid IES: 3 vertical x 2 horizontal angles; line 3 the counts, 4 the
 // ballast factors, 5-6 the angles, 7-8 the candela values.
 const std::string kIes = "IESNA:LM-63-2002\n"  // 1
-                         "TILT=NONE\n"         // 2
+                         "TILT=NONE\n"  // 2
                          "1 -1 1 3 2 1 2 0 0 0\n"  // 3: lamps, lumens, multiplier, Nv, Nh, type, units, w, l, h
-                         "1 1 0\n"             // 4
-                         "0 45 90\n"           // 5
-                         "0 180\n"             // 6
-                         "10 11 12\n"          // 7
-                         "20 21 22\n";         // 8
+                         "1 1 0\n"  // 4
+                         "0 45 90\n"  // 5
+                         "0 180\n"  // 6
+                         "10 11 12\n"  // 7
+                         "20 21 22\n";  // 8
 
 using test::inputErrorOf;
 
-std::string ldtError(const std::vector<std::string>& l) { return inputErrorOf([&] { readLdt(TextFile::fromString("t.ldt", join(l))); }); }
-std::string iesError(const std::string& s) { return inputErrorOf([&] { readIes(TextFile::fromString("t.ies", s)); }); }
+std::string ldtError(const std::vector<std::string>& l)
+{
+    return inputErrorOf([&] { readLdt(TextFile::fromString("t.ldt", join(l))); });
+}
+std::string iesError(const std::string& s)
+{
+    return inputErrorOf([&] { readIes(TextFile::fromString("t.ies", s)); });
+}
 
 // gtest prints both strings when the prefix is missing.
 #define EXPECT_PREFIX(prefix, text) EXPECT_EQ(std::string(text).substr(0, std::string(prefix).size()), prefix)
@@ -124,12 +130,14 @@ TEST(ReaderLimits, ExtraValuesAreRefused)
 {
     auto l = ldtLines();
     l.push_back("19");
-    EXPECT_EQ(ldtError(l), "t.ldt:59: expected the end of the file after the 3 x 3 intensities (Mc x Ng for Nc = 4, "
-                           "Isym = 2), got \"19\"");
+    EXPECT_EQ(ldtError(l),
+              "t.ldt:59: expected the end of the file after the 3 x 3 intensities (Mc x Ng for Nc = 4, "
+              "Isym = 2), got \"19\"");
     l = ldtLines();
     l.push_back("");  // blank lines at the end are fine
     EXPECT_EQ(ldtError(l), "(no error)");
-    EXPECT_EQ(iesError(kIes + "23\n"), "t.ies:9: expected the end of the file after the 2 x 3 candela values, got \"23\"");
+    EXPECT_EQ(iesError(kIes + "23\n"),
+              "t.ies:9: expected the end of the file after the 2 x 3 candela values, got \"23\"");
     EXPECT_EQ(iesError(kIes + "\n  \n"), "(no error)");
 }
 
@@ -157,5 +165,5 @@ TEST(ReaderLimits, DirectoriesAndEndlessFiles)
     EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 5.0);
 }
 
-} // namespace
-} // namespace lb::photometry
+}  // namespace
+}  // namespace lb::photometry

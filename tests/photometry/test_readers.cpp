@@ -72,7 +72,7 @@ TEST(Readers, LdtSymmetryUnfoldingPlaneByPlane)
     // integers times flux / 1000 = 1.
     struct Case {
         int isym, stored;
-        std::vector<std::pair<double, int>> planeOf; // full C -> stored plane index
+        std::vector<std::pair<double, int>> planeOf;  // full C -> stored plane index
     };
     std::vector<Case> cases = {
         {0, 8, {{0, 0}, {45, 1}, {90, 2}, {135, 3}, {180, 4}, {225, 5}, {270, 6}, {315, 7}, {360, 0}}},
@@ -89,7 +89,8 @@ TEST(Readers, LdtSymmetryUnfoldingPlaneByPlane)
         Table t = readLdtString(tinyLdt(cs.isym, 8, cs.stored));
         ASSERT_EQ(t.nc(), cs.planeOf.size()) << "Isym " << cs.isym;
         for (auto [c, p] : cs.planeOf)
-            for (size_t ig = 0; ig < 3; ++ig) EXPECT_EQ(node(t, c, ig), 100.0 * p + ig) << "Isym " << cs.isym << " C " << c;
+            for (size_t ig = 0; ig < 3; ++ig)
+                EXPECT_EQ(node(t, c, ig), 100.0 * p + ig) << "Isym " << cs.isym << " C " << c;
         EXPECT_EQ(t.isym, cs.isym);
     }
 }
@@ -142,12 +143,12 @@ TEST(Readers, LdtAbsoluteCandelaSumsLampSetsAndDecimalCommas)
     auto k = s.find("1\nlamp\n1000\n");
     ASSERT_NE(k, std::string::npos);
     s.replace(k, 12, "1\nlamp\n600\n3000\n80\n10\n-2\nlamp2\n900,5\n");
-    s.replace(s.find("1\n1\nlamp"), 2, "2\n"); // number of sets
+    s.replace(s.find("1\n1\nlamp"), 2, "2\n");  // number of sets
     std::string crlf;
     for (char ch : s) crlf += ch == '\n' ? std::string("\r\n") : std::string(1, ch);
     Table t = readLdtString(crlf);
-    EXPECT_DOUBLE_EQ(t.at(0, 1), 1 * 1.5005); // exact up to the product's rounding
-    EXPECT_DOUBLE_EQ(t.declaredFluxLm, 1500.5 * 0.80); // LOR 80 %
+    EXPECT_DOUBLE_EQ(t.at(0, 1), 1 * 1.5005);  // exact up to the product's rounding
+    EXPECT_DOUBLE_EQ(t.declaredFluxLm, 1500.5 * 0.80);  // LOR 80 %
 }
 
 // Independent reading of an EULUMDAT data block (the last Mc x Ng numbers).
@@ -187,7 +188,7 @@ TEST(Readers, RealLdtPlaneByPlane)
         Table t = load(path);
         ASSERT_EQ(t.isym, f.isym);
         auto raw = rawLdtData(path, f.mc * f.ng);
-        double scale = t.at(0, 0) / raw[0]; // flux / 1000, from any non-zero node
+        double scale = t.at(0, 0) / raw[0];  // flux / 1000, from any non-zero node
         for (size_t ic = 0; ic < t.nc(); ++ic) {
             double folded = foldC(f.isym, t.c[ic]);
             // Isym 3 stores C270, C285, ..., C0, ..., C90: the folded angle
@@ -214,7 +215,7 @@ TEST(Readers, RealIes90To270PlaneByPlane)
     Table t = readIes(path, &x);
     EXPECT_EQ(t.isym, 3);
     ASSERT_EQ(t.ng(), 37u);
-    ASSERT_EQ(t.nc(), 73u); // 0..360 in 5-degree steps
+    ASSERT_EQ(t.nc(), 73u);  // 0..360 in 5-degree steps
     // Independent parse: the candela block is the last 37 x 37 numbers.
     std::ifstream in(path);
     std::vector<double> all;
@@ -228,7 +229,7 @@ TEST(Readers, RealIes90To270PlaneByPlane)
     }
     std::vector<double> cd(all.end() - 37 * 37, all.end());
     for (size_t ic = 0; ic < t.nc(); ++ic) {
-        double folded = foldC(3, t.c[ic]); // I(C) = I(180 - C)
+        double folded = foldC(3, t.c[ic]);  // I(C) = I(180 - C)
         size_t p = static_cast<size_t>(std::lround((folded - 90) / 5));
         for (size_t ig = 0; ig < 37; ++ig) EXPECT_EQ(t.at(ic, ig), cd[p * 37 + ig]) << "C " << t.c[ic];
     }
@@ -239,14 +240,14 @@ TEST(Readers, IesHorizontalSetsAndMultipliers)
     // One template, the horizontal set and multipliers varied; vertical 0, 45, 90.
     auto ies = [](const std::string& h, int nh, const std::string& mult, const std::string& bf) {
         std::string s = "IESNA:LM-63-2002\n[TEST] t\nTILT=NONE\n1 -1 " + mult + " 3 " + std::to_string(nh) +
-                        " 1 2 0.5 0.25 0\n" + bf + " 120\n0 45 90\n" + h + "\n";
+            " 1 2 0.5 0.25 0\n" + bf + " 120\n0 45 90\n" + h + "\n";
         for (int p = 0; p < nh; ++p) s += fmt::format("{} {} {}\n", 100 * p, 100 * p + 1, 100 * p + 2);
         return readIes(TextFile::fromString("t.ies", s));
     };
     Table r = ies("0", 1, "1", "1 1");
     EXPECT_EQ(r.isym, 1);
     EXPECT_EQ(r.nc(), 2u);
-    Table q = ies("0 45 90", 3, "2", "0.5 1.5"); // scale 2 x 0.5 x 1.5 = 1.5
+    Table q = ies("0 45 90", 3, "2", "0.5 1.5");  // scale 2 x 0.5 x 1.5 = 1.5
     EXPECT_EQ(q.isym, 4);
     EXPECT_EQ(node(q, 135, 1), 1.5 * 101);
     EXPECT_EQ(node(q, 315, 2), 1.5 * 102);
@@ -338,7 +339,7 @@ TEST(Readers, WriteThenReadReproducesTheTable)
 TEST(Readers, OwnLuminairesRead)
 {
     auto files = ownFiles();
-    EXPECT_GE(files.size(), 18u); // 9 kinds x (.ldt, .ies)
+    EXPECT_GE(files.size(), 18u);  // 9 kinds x (.ldt, .ies)
     for (const auto& p : files) {
         Table t = load(p);
         // scripts/make-luminaires.sh makes every one at 1000 lm; the table's
@@ -353,5 +354,5 @@ TEST(Readers, OwnLuminairesRead)
     EXPECT_EQ(load("lambert").format, "ldt");
 }
 
-} // namespace
-} // namespace lb::photometry
+}  // namespace
+}  // namespace lb::photometry

@@ -31,5 +31,5 @@ TEST(Regress, EveryInputEndsInInputError)
     EXPECT_GE(n, 8u);
 }
 
-} // namespace
-} // namespace lb::photometry
+}  // namespace
+}  // namespace lb::photometry

@@ -56,7 +56,8 @@ TEST(Synth, CharacterProfilesHaveTheirTraits)
     // does not is no luminaire, and the exact and trig-free lookups disagree on
     // it). Checked for the stress profiles; diffuse, sideways and updown
     // predate the check and spread by up to 30 % across C at gamma 0.
-    for (const char* k : {"lambert", "phong", "spot", "downlight", "linear", "batwing", "grazing", "pencil", "quadrant"}) {
+    for (const char* k :
+         {"lambert", "phong", "spot", "downlight", "linear", "batwing", "grazing", "pencil", "quadrant"}) {
         Table t = synth(k);
         for (double c : t.c) EXPECT_NEAR(t.intensity(c, 0), t.intensity(0, 0), 1e-9 * t.maxCd()) << k << " C " << c;
     }
@@ -96,5 +97,5 @@ TEST(Synth, CharacterProfilesHaveTheirTraits)
     EXPECT_THROW(synth("nope"), InputError);
 }
 
-} // namespace
-} // namespace lb::photometry
+}  // namespace
+}  // namespace lb::photometry

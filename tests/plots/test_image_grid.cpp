@@ -38,8 +38,8 @@ std::string comparePictures(const fs::path& dir, const std::string& extra)
     writeExr((dir / "r.exr").string(), r);
     writeExr((dir / "a.exr").string(), a);
     const std::string prefix = (dir / "row").string();
-    EXPECT_EQ(sh(test::binary() + " compare " + (dir / "r.exr").string() + " " + (dir / "a.exr").string() +
-                 " --png " + prefix + extra),
+    EXPECT_EQ(sh(test::binary() + " compare " + (dir / "r.exr").string() + " " + (dir / "a.exr").string() + " --png " +
+                 prefix + extra),
               0);
     return prefix;
 }
@@ -152,5 +152,5 @@ assert sorted(os.listdir(d)) == ["fig.png", "t.py"], os.listdir(d)
     fs::remove_all(dir);
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

@@ -17,16 +17,18 @@ namespace fs = std::filesystem;
 
 nlohmann::json rec(const char* method, const char* lum, double nmse)
 {
-    return {{"role", "method"}, {"method", method}, {"params", nlohmann::json::object()}, {"luminaire", lum},
-            {"height", 1.1}, {"rotation", 3.14159}, {"nmse", nmse}};
+    return {{"role", "method"}, {"method", method}, {"params", nlohmann::json::object()},
+            {"luminaire", lum}, {"height", 1.1},    {"rotation", 3.14159},
+            {"nmse", nmse}};
 }
 
 // A later file replaces the earlier files' records of the luminaires it holds.
 TEST(Plots, RobustTableLaterFilesReplaceTheirLuminaires)
 {
     fs::path dir = test::freshDir("robust-table");
-    nlohmann::json first = {{"records", {rec("point", "A", 1.0), rec("robust", "A", 0.5),  //
-                                         rec("point", "B", 1.0), rec("robust", "B", 2.0)}}};
+    nlohmann::json first = {{"records",
+                             {rec("point", "A", 1.0), rec("robust", "A", 0.5),  //
+                              rec("point", "B", 1.0), rec("robust", "B", 2.0)}}};
     nlohmann::json later = {{"records", {rec("point", "B", 4.0), rec("robust", "B", 1.0)}}};
     std::ofstream(dir / "first.json") << first.dump();
     std::ofstream(dir / "later.json") << later.dump();
@@ -57,8 +59,7 @@ TEST(Plots, RobustTableReproducesTheCommittedRuns)
     std::string out = test::shellOutput(
         script + res + "robust-pocl-xeon.json.xz " + res + "robust-pencil-pocl-xeon.json.xz 2>&1", &code);
     ASSERT_EQ(code, 0) << out;
-    EXPECT_NE(out.find("| `robust` | 211 / 211 | 0.00104 | 0.0148 | 0.0527 | 210 / 211 |"), std::string::npos)
-        << out;
+    EXPECT_NE(out.find("| `robust` | 211 / 211 | 0.00104 | 0.0148 | 0.0527 | 210 / 211 |"), std::string::npos) << out;
     EXPECT_NE(out.find("| `cubature` | 119 / 211 |"), std::string::npos) << out;
     EXPECT_NE(out.find("| pencil.ldt | 7 / 11, 1 / 11 | 11 / 11, 10 / 11 |"), std::string::npos) << out;
     out = test::shellOutput(script + res + "robust-pocl-xeon.json.xz 2>&1", &code);
@@ -66,5 +67,5 @@ TEST(Plots, RobustTableReproducesTheCommittedRuns)
     EXPECT_NE(out.find("| `robust` | 208 / 209 |"), std::string::npos) << out;
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

@@ -19,9 +19,9 @@ namespace fs = std::filesystem;
 
 nlohmann::json rec(const std::string& role, const std::string& spec, double R, double nmse, double mref, double mtest)
 {
-    nlohmann::json r = {{"role", role}, {"spec", spec}, {"luminaire", "L_1.ldt"}, {"height", 1.1},
-                        {"rotation", R}, {"scene", "s" + std::to_string(R)}, {"nmse", nmse},
-                        {"mean_ref", mref}, {"mean_test", mtest}};
+    nlohmann::json r = {{"role", role},  {"spec", spec},     {"luminaire", "L_1.ldt"},
+                        {"height", 1.1}, {"rotation", R},    {"scene", "s" + std::to_string(R)},
+                        {"nmse", nmse},  {"mean_ref", mref}, {"mean_test", mtest}};
     return r;
 }
 
@@ -101,12 +101,13 @@ TEST(Plots, StitchedTableReadsTheCsvAsTheJson)
     std::string script = test::sourceDir() + "/plots/stitched_table.py";
     std::string fromJson = test::shellOutput("python3 " + script + " " + jsonPath + " 2>&1", &code);
     EXPECT_EQ(code, 0) << fromJson;
-    std::string fromCsv = test::shellOutput("python3 " + script + " " + (dir / "results.csv").string() + " 2>&1", &code);
+    std::string fromCsv =
+        test::shellOutput("python3 " + script + " " + (dir / "results.csv").string() + " 2>&1", &code);
     EXPECT_EQ(code, 0) << fromCsv;
     EXPECT_NE(fromJson.find("cubature: beats its equal-time MCI in 107 of 140"), std::string::npos) << fromJson;
     EXPECT_EQ(fromCsv, fromJson);
     fs::remove_all(dir);
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

@@ -15,11 +15,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-nlohmann::json rec(const std::string& role, const std::string& method, nlohmann::json params, const char* lum,
-                   double h, double nmse, double grad, double flip)
+nlohmann::json rec(const std::string& role, const std::string& method, nlohmann::json params, const char* lum, double h,
+                   double nmse, double grad, double flip)
 {
-    return {{"role", role}, {"method", method}, {"params", params}, {"luminaire", lum}, {"height", h},
-            {"rotation", 2.356}, {"nmse", nmse}, {"grad_nmse", grad}, {"flip", flip}};
+    return {{"role", role},      {"method", method}, {"params", params},  {"luminaire", lum}, {"height", h},
+            {"rotation", 2.356}, {"nmse", nmse},     {"grad_nmse", grad}, {"flip", flip}};
 }
 
 TEST(Plots, VisualClaimsTables)
@@ -65,17 +65,19 @@ TEST(Plots, VisualClaimsTables)
 TEST(Plots, VisualClaimsReproducesTheCommittedRun)
 {
     int code = -1;
-    std::string out = test::shellOutput("python3 " + test::sourceDir() + "/plots/visual_claims.py " +
-                                            test::sourceDir() + "/experiments/results/visual-claims-pocl-xeon.json.xz 2>&1",
-                                        &code);
+    std::string out =
+        test::shellOutput("python3 " + test::sourceDir() + "/plots/visual_claims.py " + test::sourceDir() +
+                              "/experiments/results/visual-claims-pocl-xeon.json.xz 2>&1",
+                          &code);
     ASSERT_EQ(code, 0) << out;
     EXPECT_NE(out.find("28 scenes: 7 luminaires"), std::string::npos) << out;
-    EXPECT_NE(out.find("| **all** | 26 / 28 | 27 / 28 | 26 / 28 | 26 / 28 | 28 / 28 | 25 / 28 | 4 / 28 | 4 / 28 | 5 / 28 |"),
-              std::string::npos)
+    EXPECT_NE(
+        out.find("| **all** | 26 / 28 | 27 / 28 | 26 / 28 | 26 / 28 | 28 / 28 | 25 / 28 | 4 / 28 | 4 / 28 | 5 / 28 |"),
+        std::string::npos)
         << out;
     EXPECT_NE(out.find("| ARCOS3 | h 0.1 | 6.63 | 1.26 | 2.22 |"), std::string::npos) << out;
     EXPECT_NE(out.find("| ARCOS3 | 0.405 (7) | 0.000666 (7) | 0.224 (7) |"), std::string::npos) << out;
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

@@ -94,5 +94,5 @@ TEST(SceneKinds, NamesRoundTripAndBadValuesAreRefused)
     EXPECT_THROW(r.validate(), InputError);
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

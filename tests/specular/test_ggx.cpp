@@ -109,15 +109,16 @@ TEST(SpecularReference, LargeLambertianLightGivesAlbedo)
             glm::dvec3 eye = x + 3.0 * glm::dvec3(std::sin(th) * 0.6, std::sin(th) * 0.8, std::cos(th));
             double err;
             int splits, cells;
-            double ls = f64::lb_specular_reference(lum.data(), L, x, {0, 0, 1}, eye, a, 1e-6, 160, &err, &splits, &cells);
+            double ls =
+                f64::lb_specular_reference(lum.data(), L, x, {0, 0, 1}, eye, a, 1e-6, 160, &err, &splits, &cells);
             double want = le * albedoQuadrature(a, th);
-            EXPECT_NEAR(ls, want, 1e-3 * want) << "alpha " << a << " theta " << th << " splits " << splits
-                                               << " cells " << cells << " err " << err;
+            EXPECT_NEAR(ls, want, 1e-3 * want)
+                << "alpha " << a << " theta " << th << " splits " << splits << " cells " << cells << " err " << err;
             // the error estimate is an estimate, not a bound: it must at least
             // be of the size of the error it claims (<= 1e-3 here)
             EXPECT_LT(err, 1e-3 * ls);
         }
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

@@ -179,8 +179,8 @@ TEST(Ltc, PolygonErrorWithinTheFitsL1Distance)
                 if (r == 0) P.a += glm::dvec3(-std::sin(theta), 0, std::cos(theta)) - (P.a + 0.5 * (P.e1 + P.e2));
                 double phi = 2 * M_PI * u(g);  // view azimuth: the world frame is rotated
                 glm::dvec3 wo(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
-                glm::dmat3 rot(glm::dvec3(std::cos(phi), std::sin(phi), 0), glm::dvec3(-std::sin(phi), std::cos(phi), 0),
-                               glm::dvec3(0, 0, 1));
+                glm::dmat3 rot(glm::dvec3(std::cos(phi), std::sin(phi), 0),
+                               glm::dvec3(-std::sin(phi), std::cos(phi), 0), glm::dvec3(0, 0, 1));
                 Poly W{rot * P.a, rot * P.e1, rot * P.e2, P.triangle};
                 f64::real3 v[LB_MAXV];
                 W.vertices(v);
@@ -212,8 +212,8 @@ TEST(Ltc, FitReproducesTheCommittedSmallTable)
     }
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb
 
 namespace lb {
 namespace {
@@ -242,5 +242,5 @@ TEST(Ltc, SmallTableNodesAreTheCommittedTablesNodes)
         }
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

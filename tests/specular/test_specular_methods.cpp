@@ -72,8 +72,8 @@ TEST(SpecularMethods, LtcOfALambertianEmitterIsItsRadianceTimesTheLtcIntegral)
     f64::lb_light L = f64::lb_scene_light(P.data());
     std::vector<float> tab = ltc::packed(ltc::defaultTable());
     const double le = 1000 / M_PI / (sc.width * sc.length);
-    for (const char* spec : {"ltc", "ltc:triangulation=delaunay", "ltc:radiance=structured", "ltc:radiance=cp",
-                             "ltc:radiance=point"})
+    for (const char* spec :
+         {"ltc", "ltc:triangulation=delaunay", "ltc:radiance=structured", "ltc:radiance=cp", "ltc:radiance=point"})
         for (Precision p : {Precision::Double, Precision::Float}) {
             if (p == Precision::Double && !rt->fp64()) continue;
             auto r = run(*rt, t, sc, spec, p);
@@ -83,10 +83,9 @@ TEST(SpecularMethods, LtcOfALambertianEmitterIsItsRadianceTimesTheLtcIntegral)
                     f64::real3 q[4];
                     f64::lb_light_corners(L, q);
                     for (auto& v : q) v -= x;
-                    double want = glm::dot(x - L.c, L.n) > 0
-                                      ? le * f64::lb_ltc_brdf_polygon(tab.data(), q, 4, {0, 0, 1},
-                                                                      glm::normalize(sc.eye - x), sc.alpha)
-                                      : 0.0;
+                    double want = glm::dot(x - L.c, L.n) > 0 ? le *
+                            f64::lb_ltc_brdf_polygon(tab.data(), q, 4, {0, 0, 1}, glm::normalize(sc.eye - x), sc.alpha)
+                                                             : 0.0;
                     double tol = (p == Precision::Double ? 1e-4 : 1e-3) * std::fabs(want) + 1e-9;
                     EXPECT_NEAR(r.image.at(row, col), want, tol) << spec << " " << row << "," << col;
                 }
@@ -122,9 +121,9 @@ TEST(SpecularMethods, EveryMethodIsFiniteAndNonNegativeInFloat)
     for (double h : {0.1, 1.1})
         for (double R : {M_PI / 2, M_PI}) {
             Scene sc = specular(h, R, 9, 0.1);
-            for (const char* spec : {"ltc", "ltc:triangulation=delaunay", "ltc:g_omega=exact", "ltc:radiance=structured",
-                                     "ltc:radiance=cp", "ltc:radiance=point", "mc:n=16", "mc:n=16,sampling=vndf",
-                                     "mc:n=16,sampling=mis"}) {
+            for (const char* spec : {"ltc", "ltc:triangulation=delaunay", "ltc:g_omega=exact",
+                                     "ltc:radiance=structured", "ltc:radiance=cp", "ltc:radiance=point", "mc:n=16",
+                                     "mc:n=16,sampling=vndf", "mc:n=16,sampling=mis"}) {
                 auto r = run(*rt, t, sc, spec, Precision::Float);
                 for (double v : r.image.px) {
                     ASSERT_TRUE(std::isfinite(v)) << spec << " h " << h << " R " << R;
@@ -134,5 +133,5 @@ TEST(SpecularMethods, EveryMethodIsFiniteAndNonNegativeInFloat)
         }
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

@@ -30,14 +30,14 @@ Scene sceneOf(double w, double l, double h = 1)
 TEST(Stability, DegenerateLightsAreInputErrors)
 {
     EXPECT_NO_THROW(sceneOf(1, 1).validate());
-    EXPECT_NO_THROW(sceneOf(1e-3, 1e-3).validate());   // the catalogue's tiny light
-    EXPECT_NO_THROW(sceneOf(40, 0.02).validate());     // and its thin one
-    EXPECT_THROW(sceneOf(0, 0).validate(), InputError);     // coincident corners
-    EXPECT_THROW(sceneOf(0, 1).validate(), InputError);     // collinear corners
+    EXPECT_NO_THROW(sceneOf(1e-3, 1e-3).validate());  // the catalogue's tiny light
+    EXPECT_NO_THROW(sceneOf(40, 0.02).validate());  // and its thin one
+    EXPECT_THROW(sceneOf(0, 0).validate(), InputError);  // coincident corners
+    EXPECT_THROW(sceneOf(0, 1).validate(), InputError);  // collinear corners
     EXPECT_THROW(sceneOf(1, -1).validate(), InputError);
     EXPECT_THROW(sceneOf(1e-9, 1).validate(), InputError);  // collinear in float
     EXPECT_THROW(sceneOf(NAN, 1).validate(), InputError);
-    EXPECT_NO_THROW(sceneOf(1, 1, -0.1).validate());         // light through the receiver plane: clipped, legal
+    EXPECT_NO_THROW(sceneOf(1, 1, -0.1).validate());  // light through the receiver plane: clipped, legal
     EXPECT_THROW(sceneOf(1, 1, INFINITY).validate(), InputError);
     try {
         sceneOf(0, 1).validate();
@@ -76,7 +76,7 @@ TEST(Stability, MetricsClosedForms)
     // 109.5 - 100 = 9.5; over max R = 100.
     EXPECT_DOUBLE_EQ(e.jumpExcess, 0.1);
     EXPECT_DOUBLE_EQ(stability::maxDiffRel(A, R, 100), 0.1);  // 10 / 100
-    EXPECT_DOUBLE_EQ(stability::maxDiffRel(A, R, 0), 10);    // absolute
+    EXPECT_DOUBLE_EQ(stability::maxDiffRel(A, R, 0), 10);  // absolute
 
     A.px[1] = NAN;
     e = stability::measure(R, A);
@@ -152,7 +152,7 @@ TEST(Stability, QuickCliRunPasses)
     std::ofstream(dir / "png" / "old_case_np_float_err.png") << "x";
     std::ofstream(dir / "png" / "notes.txt") << "x";
     std::string cmd = test::binary() + " stability --quick --res 16 --out " + dir.string() + " > " +
-                      (dir.string() + ".log") + " 2>&1";
+        (dir.string() + ".log") + " 2>&1";
     int st = std::system(cmd.c_str());
     std::ifstream log(dir.string() + ".log");
     std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
@@ -166,8 +166,8 @@ TEST(Stability, QuickCliRunPasses)
     std::filesystem::remove(dir.string() + ".log");
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb
 
 namespace lb {
 namespace {
@@ -210,5 +210,5 @@ TEST(Stability, PointBoundValues)
     EXPECT_NEAR(stability::pointBound(s, false), 4 * a / d + 32 * 0x1p-24 * d / a, 1e-15);
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

@@ -21,8 +21,7 @@ TEST(StabilityCubature, CatalogueThroughTheKernel)
     // two and four dynamic points; and voronoi.
     const char* variants[] = {"cubature", "cubature:triangulation=delaunay,weighting=sample,normalize=formfactor",
                               "cubature:triangulation=delaunay,weighting=dotout,dynamic=cp+np+mrp+barycentre",
-                              "cubature:triangulation=delaunay,dynamic=cp+barycentre,normalize=formfactor",
-                              "voronoi"};
+                              "cubature:triangulation=delaunay,dynamic=cp+barycentre,normalize=formfactor", "voronoi"};
     methods::RenderOptions ro;
     ro.reps = 1;
     for (auto& c : stability::catalogue()) {
@@ -33,7 +32,8 @@ TEST(StabilityCubature, CatalogueThroughTheKernel)
         const char* env = std::getenv("LUMIBENCH_STABILITY_RES");
         Scene s = stability::sceneOf(c, env ? std::atoi(env) : 9);
         auto table = stability::luminaire(c.luminaire);
-        Image ref = methods::render(*rt, table, s, methods::parseSpec("reference"), methods::Precision::Double, ro).image;
+        Image ref =
+            methods::render(*rt, table, s, methods::parseSpec("reference"), methods::Precision::Double, ro).image;
         double rmax = 0;
         for (double v : ref.px) rmax = std::max(rmax, v);
         for (std::string v : variants) {
@@ -60,5 +60,5 @@ TEST(StabilityCubature, CatalogueThroughTheKernel)
     }
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

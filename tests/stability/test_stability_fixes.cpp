@@ -89,7 +89,7 @@ TEST(StabilityFixes, InPlaneRadianceIsFinite)
     inPlane<double, glm::dvec3>(F64{});
 }
 
-} // namespace
+}  // namespace
 
 namespace {
 
@@ -121,4 +121,4 @@ TEST(StabilityFixes, TinyFarLambertIrradianceInFloat)
     EXPECT_NEAR(got, ref, 2e-3 * ref);
 }
 
-} // namespace
+}  // namespace

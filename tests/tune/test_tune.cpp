@@ -91,7 +91,8 @@ TEST(Tune, MinimisesTheChosenMetric)
     base["maxeval"] = 3;
     std::map<std::string, nlohmann::json> docs;
     for (const char* metric : {"nmse", "grad_nmse"}) {
-        fs::path dir = fs::temp_directory_path() / ("lb_tune_" + std::string(metric) + "_" + std::to_string(::getpid()));
+        fs::path dir =
+            fs::temp_directory_path() / ("lb_tune_" + std::string(metric) + "_" + std::to_string(::getpid()));
         fs::remove_all(dir);
         fs::create_directories(dir);
         nlohmann::json e = base;
@@ -128,7 +129,7 @@ TEST(Tune, SmokeImprovesValidation)
     fs::path out = fs::temp_directory_path() / ("lb_tune_smoke_" + std::to_string(::getpid()));
     fs::remove_all(out);
     std::string cmd = test::binary() + " tune " + test::sourceDir() + "/experiments/tune-smoke.json --out " +
-                      out.string() + " --quiet > /dev/null";
+        out.string() + " --quiet > /dev/null";
     ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
     nlohmann::json doc;
     std::ifstream(out / "tune.json") >> doc;
@@ -166,5 +167,5 @@ TEST(Tune, SmokeImprovesValidation)
     fs::remove_all(out);
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb

@@ -162,12 +162,13 @@ TEST(AtomicWrite, RemovesOnlyTemporariesOfDeadProcesses)
     if (child == 0) ::_exit(0);
     ::waitpid(child, nullptr, 0);  // its PID is now free (not reused within the test, in practice)
     const std::string dead = std::to_string(child), alive = std::to_string(::getpid());
-    for (const std::string& n : std::vector<std::string>{"results.json.tmp." + dead, "results.json.tmp." + dead + ".7",
-                                                         "results.json.tmp." + alive + ".1", "notes.tmp.txt",
-                                                         "results.json"})
+    for (const std::string& n :
+         std::vector<std::string>{"results.json.tmp." + dead, "results.json.tmp." + dead + ".7",
+                                  "results.json.tmp." + alive + ".1", "notes.tmp.txt", "results.json"})
         std::ofstream(d / n) << "x";
     EXPECT_EQ(util::removeStaleTemporaries(d.string()), 2u);
-    EXPECT_EQ(entries(d), (std::vector<std::string>{"notes.tmp.txt", "results.json", "results.json.tmp." + alive + ".1"}));
+    EXPECT_EQ(entries(d),
+              (std::vector<std::string>{"notes.tmp.txt", "results.json", "results.json.tmp." + alive + ".1"}));
 }
 
 TEST(ReadFile, NamesDirectoriesAndStopsAtTheLimit)
@@ -195,9 +196,8 @@ TEST(AtomicWrite, CliOnAFullTmpfs)
     fs::path m = tmpDir("tmpfs");
     auto inFullTmpfs = [&](const std::string& args) {
         std::string cmd = "unshare -rm sh -c 'mount -t tmpfs -o size=64k tmpfs " + m.string() +
-                          " && (dd if=/dev/zero of=" + m.string() + "/fill bs=4k 2>/dev/null; true) && " +
-                          test::binary() + " " + args + " >/dev/null 2>&1; rc=$?; ls -A " + m.string() +
-                          " > " + m.string() + ".ls; exit $rc'";
+            " && (dd if=/dev/zero of=" + m.string() + "/fill bs=4k 2>/dev/null; true) && " + test::binary() + " " +
+            args + " >/dev/null 2>&1; rc=$?; ls -A " + m.string() + " > " + m.string() + ".ls; exit $rc'";
         int st = std::system(cmd.c_str());
         return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
     };
@@ -212,5 +212,5 @@ TEST(AtomicWrite, CliOnAFullTmpfs)
     }
 }
 
-} // namespace
-} // namespace lb
+}  // namespace
+}  // namespace lb
