@@ -12,7 +12,7 @@ PKGS=(
   pocl-opencl-icd ocl-icd-opencl-dev opencl-headers opencl-clhpp-headers clinfo
   libglm-dev libopenexr-dev libnlopt-cxx-dev libnlopt-dev
   googletest libgtest-dev
-  libcli11-dev nlohmann-json3-dev libfmt-dev libpng-dev jq
+  libcli11-dev nlohmann-json3-dev libfmt-dev libpng-dev jq clang-format-14
   python3 python3-matplotlib python3-numpy python3-pandas python3-venv
   chromium
   parallel

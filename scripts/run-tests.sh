@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
-# Installs the dependencies, builds, and runs the whole test suite on the
+# Installs the dependencies, checks the C++ formatting (scripts/check-format.sh),
+# builds, and runs the whole test suite on the
 # default OpenCL device (PoCL). Tests that need a device fail rather than skip.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
+bash scripts/check-format.sh
 bash scripts/build.sh
 export LUMIBENCH_REQUIRE_DEVICE=1
 export POCL_MAX_PTHREAD_COUNT="${POCL_MAX_PTHREAD_COUNT:-$(nproc)}"
