@@ -206,6 +206,124 @@ struct SceneRun {
     }
 };
 
+// The equal-time MCI partner of cell c, whose method took tM ms in its own
+// cell (DESIGN section 6): MC's N aimed on the measured t(N) (pts: the
+// scene's MC curve, else the experiment's equal_time_fit points timed here),
+// then timed against the method in alternating rounds. The record's extra
+// keys say how it was found (equal_time_candidates, _ratio, _ok, _bracketed).
+results::Record equalTimePartner(const SceneRun& sr, const Cell& c, double tM, std::vector<std::pair<long, double>> pts)
+{
+    const Experiment& e = sr.e;
+    ocl::Runtime& rt = sr.rt;
+    const photometry::Table& table = sr.table;
+    const std::string target = c.parsed.canonical();
+    auto mcAt = [&](long n) {
+        return methods::parseSpec(e.mc + (e.mc.find(':') == std::string::npos ? ":" : ",") + "n=" + std::to_string(n),
+                                  e.kind());
+    };
+    if (pts.size() < 2) {
+        pts.clear();
+        for (long n : e.equalTimeFit) {
+            pts.emplace_back(n, sr.render(mcAt(n)).timing.median_ms);
+        }
+    }
+    // N on the measured t(N), then it and its neighbour on the
+    // method's side timed against the method in alternating
+    // rounds (DESIGN 6: ratios within one run), the ratio the
+    // median of the rounds' ratios. While the closest is off by
+    // more than the tolerance and not bracketed by a measured
+    // neighbour (three tries at most), aim again by the secant
+    // through the paired ratios.
+    Scene ts = sr.scene;
+    if (e.timeRes > 0) ts.res = e.timeRes;
+    methods::Prepared pm(rt, table, ts, c.parsed, sr.prec);
+    std::map<long, std::unique_ptr<methods::Prepared>> prepared;  // MC by N, built once
+    json candJson = json::array();
+    long bestN = 0;
+    double ratio = NAN;
+    std::vector<ocl::Timing> bestT;  // (method, MC at bestN) of bestN's rounds
+    std::map<long, double> measured;  // N -> median round ratio
+    long next = solveN(pts, tM);  // first aim: the curve
+    for (int attempt = 0; attempt < 3; ++attempt) {
+        // the aimed N and its neighbour towards the target on the
+        // curve; later tries: the aimed N and both neighbours
+        long n1 = std::max(1L, next);
+        std::vector<long> tries = {n1};
+        if (attempt == 0)
+            tries.push_back(interpolateMs(pts, n1) > tM ? n1 - 1 : n1 + 1);
+        else
+            tries.insert(tries.end(), {n1 - 1, n1 + 1});
+        std::vector<long> cand;
+        for (long n : tries)
+            if (n >= 1 && !measured.count(n) && std::find(cand.begin(), cand.end(), n) == cand.end()) cand.push_back(n);
+        if (cand.empty()) break;
+        std::vector<std::function<cl::Event()>> launches = {[&] { return pm.launch(0, ts.res); }};
+        for (long n : cand) {
+            auto& p = prepared[n];
+            if (!p) p = std::make_unique<methods::Prepared>(rt, table, ts, mcAt(n), sr.prec);
+            methods::Prepared* pp = p.get();
+            launches.push_back([pp, &ts] { return pp->launch(0, ts.res); });
+        }
+        std::vector<ocl::Timing> tt = rt.timeInterleaved(launches, std::max(1, e.reps), 1);
+        for (size_t k = 0; k < cand.size(); ++k) {
+            std::vector<double> rr;
+            for (size_t ri = 0; ri < tt[0].samples_ms.size(); ++ri)
+                rr.push_back(tt[k + 1].samples_ms[ri] / tt[0].samples_ms[ri]);
+            double q = ocl::summarize(rr).median_ms;  // median of the rounds' ratios
+            measured[cand[k]] = q;
+            candJson.push_back({{"n", cand[k]}, {"ratio", q}, {"ms", tt[k + 1].median_ms}});
+            if (bestN == 0 || std::fabs(std::log(q)) < std::fabs(std::log(ratio))) {
+                bestN = cand[k];
+                ratio = q;
+                bestT = {tt[0], tt[k + 1]};
+            }
+        }
+        if (std::abs(ratio - 1) <= e.equalTimeTolerance) break;
+        // aim again on the paired ratios themselves: the secant
+        // through the measured points nearest below and above 1
+        // (or the two nearest to 1 when all lie on one side)
+        std::vector<std::pair<long, double>> m(measured.begin(), measured.end());
+        std::sort(m.begin(), m.end(),
+                  [](auto x, auto y) { return std::fabs(std::log(x.second)) < std::fabs(std::log(y.second)); });
+        auto lo = std::find_if(m.begin(), m.end(), [](auto x) { return x.second < 1; });
+        auto hi = std::find_if(m.begin(), m.end(), [](auto x) { return x.second >= 1; });
+        std::pair<long, double> p0 = m[0], p1 = m.size() > 1 ? m[1] : m[0];
+        if (lo != m.end() && hi != m.end()) p0 = *lo, p1 = *hi;
+        if (lo != m.end() && hi != m.end() && std::abs(p0.first - p1.first) == 1) break;  // bracketed
+        double slope = p1.first != p0.first ? (p1.second - p0.second) / double(p1.first - p0.first) : 0;
+        next = slope > 0 ? std::lround(double(p0.first) + (1 - p0.second) / slope)
+                         : std::lround(double(p0.first) / p0.second);  // t proportional to N
+        next = std::clamp(next, 1L, 1L << 20);
+    }
+    // Bracketed: the neighbour of N_eq on the other side of 1 was
+    // measured too (or N_eq = 1 is too slow already), so no integer
+    // N matches the method more closely on this device.
+    bool bracketed = ratio >= 1 ? (bestN == 1 || (measured.count(bestN - 1) && measured[bestN - 1] < 1))
+                                : (measured.count(bestN + 1) && measured[bestN + 1] >= 1);
+    long n1 = bestN;
+    auto s1 = mcAt(n1);
+    // the error image at the experiment's res (its time is the paired one above)
+    methods::RenderOptions imageOnly;
+    imageOnly.reps = 1;
+    auto r1 = methods::render(rt, table, sr.scene, s1, sr.prec, imageOnly);
+    r1.timing = bestT[1];
+    r1.timeRes = ts.res;
+    json fitJson = json::array();
+    for (auto [n, t] : pts) fitJson.push_back({n, t});
+    results::Record r = sr.record(s1, r1, c, cellImageName(c.role, c.spec));
+    r.equal_time_to = target;
+    r.n = n1;
+    r.extra["equal_time_candidates"] = candJson;
+    r.extra["equal_time_cell_ms"] = tM;  // the method's own cell, timed apart
+    r.extra["equal_time_label"] = c.spec;
+    r.extra["equal_time_target_ms"] = bestT[0].median_ms;  // the method, in the paired rounds
+    r.extra["equal_time_ratio"] = ratio;
+    r.extra["equal_time_ok"] = std::abs(ratio - 1) <= e.equalTimeTolerance;
+    r.extra["equal_time_bracketed"] = bracketed;
+    r.extra["equal_time_fit"] = fitJson;
+    return r;
+}
+
 }  // namespace
 
 RunSummary run(const Experiment& e, const RunOptions& opt)
@@ -366,124 +484,15 @@ RunSummary run(const Experiment& e, const RunOptions& opt)
                 const std::string target = c.parsed.canonical();
                 if (!times.count(target))
                     throw Error(fmt::format("equal time: no time of '{}' at scene {}", c.spec, sid.label()));
-                const double tM = times[target];
-                std::vector<std::pair<long, double>> pts = curve;
-                if (pts.size() < 2) {
-                    pts.clear();
-                    for (long n : e.equalTimeFit) {
-                        auto s = methods::parseSpec(e.mc + (e.mc.find(':') == std::string::npos ? ":" : ",") +
-                                                        "n=" + std::to_string(n),
-                                                    e.kind());
-                        pts.emplace_back(n, sr.render(s).timing.median_ms);
-                    }
-                }
-                auto mcAt = [&](long n) {
-                    return methods::parseSpec(
-                        e.mc + (e.mc.find(':') == std::string::npos ? ":" : ",") + "n=" + std::to_string(n), e.kind());
-                };
-                // N on the measured t(N), then it and its neighbour on the
-                // method's side timed against the method in alternating
-                // rounds (DESIGN 6: ratios within one run), the ratio the
-                // median of the rounds' ratios. While the closest is off by
-                // more than the tolerance and not bracketed by a measured
-                // neighbour (three tries at most), aim again by the secant
-                // through the paired ratios.
-                Scene ts = sr.scene;
-                if (e.timeRes > 0) ts.res = e.timeRes;
-                methods::Prepared pm(rt, table, ts, c.parsed, sr.prec);
-                std::map<long, std::unique_ptr<methods::Prepared>> prepared;  // MC by N, built once
-                json candJson = json::array();
-                long bestN = 0;
-                double ratio = NAN;
-                std::vector<ocl::Timing> bestT;  // (method, MC at bestN) of bestN's rounds
-                std::map<long, double> measured;  // N -> median round ratio
-                long next = solveN(pts, tM);  // first aim: the curve
-                for (int attempt = 0; attempt < 3; ++attempt) {
-                    // the aimed N and its neighbour towards the target on the
-                    // curve; later tries: the aimed N and both neighbours
-                    long n1 = std::max(1L, next);
-                    std::vector<long> tries = {n1};
-                    if (attempt == 0)
-                        tries.push_back(interpolateMs(pts, n1) > tM ? n1 - 1 : n1 + 1);
-                    else
-                        tries.insert(tries.end(), {n1 - 1, n1 + 1});
-                    std::vector<long> cand;
-                    for (long n : tries)
-                        if (n >= 1 && !measured.count(n) && std::find(cand.begin(), cand.end(), n) == cand.end())
-                            cand.push_back(n);
-                    if (cand.empty()) break;
-                    std::vector<std::function<cl::Event()>> launches = {[&] { return pm.launch(0, ts.res); }};
-                    for (long n : cand) {
-                        auto& p = prepared[n];
-                        if (!p) p = std::make_unique<methods::Prepared>(rt, table, ts, mcAt(n), sr.prec);
-                        methods::Prepared* pp = p.get();
-                        launches.push_back([pp, &ts] { return pp->launch(0, ts.res); });
-                    }
-                    std::vector<ocl::Timing> tt = rt.timeInterleaved(launches, std::max(1, e.reps), 1);
-                    for (size_t k = 0; k < cand.size(); ++k) {
-                        std::vector<double> rr;
-                        for (size_t ri = 0; ri < tt[0].samples_ms.size(); ++ri)
-                            rr.push_back(tt[k + 1].samples_ms[ri] / tt[0].samples_ms[ri]);
-                        double q = ocl::summarize(rr).median_ms;  // median of the rounds' ratios
-                        measured[cand[k]] = q;
-                        candJson.push_back({{"n", cand[k]}, {"ratio", q}, {"ms", tt[k + 1].median_ms}});
-                        if (bestN == 0 || std::fabs(std::log(q)) < std::fabs(std::log(ratio))) {
-                            bestN = cand[k];
-                            ratio = q;
-                            bestT = {tt[0], tt[k + 1]};
-                        }
-                    }
-                    if (std::abs(ratio - 1) <= e.equalTimeTolerance) break;
-                    // aim again on the paired ratios themselves: the secant
-                    // through the measured points nearest below and above 1
-                    // (or the two nearest to 1 when all lie on one side)
-                    std::vector<std::pair<long, double>> m(measured.begin(), measured.end());
-                    std::sort(m.begin(), m.end(), [](auto x, auto y) {
-                        return std::fabs(std::log(x.second)) < std::fabs(std::log(y.second));
-                    });
-                    auto lo = std::find_if(m.begin(), m.end(), [](auto x) { return x.second < 1; });
-                    auto hi = std::find_if(m.begin(), m.end(), [](auto x) { return x.second >= 1; });
-                    std::pair<long, double> p0 = m[0], p1 = m.size() > 1 ? m[1] : m[0];
-                    if (lo != m.end() && hi != m.end()) p0 = *lo, p1 = *hi;
-                    if (lo != m.end() && hi != m.end() && std::abs(p0.first - p1.first) == 1) break;  // bracketed
-                    double slope = p1.first != p0.first ? (p1.second - p0.second) / double(p1.first - p0.first) : 0;
-                    next = slope > 0 ? std::lround(double(p0.first) + (1 - p0.second) / slope)
-                                     : std::lround(double(p0.first) / p0.second);  // t proportional to N
-                    next = std::clamp(next, 1L, 1L << 20);
-                }
-                // Bracketed: the neighbour of N_eq on the other side of 1 was
-                // measured too (or N_eq = 1 is too slow already), so no integer
-                // N matches the method more closely on this device.
-                bool bracketed = ratio >= 1 ? (bestN == 1 || (measured.count(bestN - 1) && measured[bestN - 1] < 1))
-                                            : (measured.count(bestN + 1) && measured[bestN + 1] >= 1);
-                long n1 = bestN;
-                auto s1 = mcAt(n1);
-                // the error image at the experiment's res (its time is the paired one above)
-                methods::RenderOptions imageOnly;
-                imageOnly.reps = 1;
-                auto r1 = methods::render(rt, table, sr.scene, s1, sr.prec, imageOnly);
-                r1.timing = bestT[1];
-                r1.timeRes = ts.res;
-                json fitJson = json::array();
-                for (auto [n, t] : pts) fitJson.push_back({n, t});
-                results::Record r = sr.record(s1, r1, c, cellImageName(c.role, c.spec));
-                r.equal_time_to = target;
-                r.n = n1;
-                r.extra["equal_time_candidates"] = candJson;
-                r.extra["equal_time_cell_ms"] = tM;  // the method's own cell, timed apart
-                r.extra["equal_time_label"] = c.spec;
-                r.extra["equal_time_target_ms"] = bestT[0].median_ms;  // the method, in the paired rounds
-                r.extra["equal_time_ratio"] = ratio;
-                r.extra["equal_time_ok"] = std::abs(ratio - 1) <= e.equalTimeTolerance;
-                r.extra["equal_time_bracketed"] = bracketed;
-                r.extra["equal_time_fit"] = fitJson;
+                results::Record r = equalTimePartner(sr, c, times[target], curve);
                 r.inputs = cellInputs[i];
-                if (std::abs(ratio - 1) > e.equalTimeTolerance) {
+                if (!r.extra["equal_time_ok"].get<bool>()) {
                     ++sum.equalTimeOff;
                     std::cerr << fmt::format("lumibench: warning: {}: MCI at equal time to {}: N = {}, {:.4g} ms vs "
                                              "{:.4g} ms (ratio {:.3f}, outside +-{:.0f}%)\n",
-                                             sid.label(), c.spec, n1, r1.timing.median_ms, bestT[0].median_ms, ratio,
-                                             100 * e.equalTimeTolerance);
+                                             sid.label(), c.spec, *r.n, r.time_ms.median,
+                                             r.extra["equal_time_target_ms"].get<double>(),
+                                             r.extra["equal_time_ratio"].get<double>(), 100 * e.equalTimeTolerance);
                 }
                 results::appendRecord(resultsPath, context, r);
             }
