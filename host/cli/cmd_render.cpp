@@ -90,6 +90,15 @@ int deviceFlag(const CLI::App& cmd, int device)
     return cmd.count("--device") ? util::checkRange("--device", device, 0, 4095) : -1;
 }
 
+methods::Precision precisionFlag(const std::string& text)
+{
+    try {
+        return methods::parsePrecision(text);
+    } catch (const InputError& e) {
+        throw InputError(fmt::format("--precision: {}", e.what()));
+    }
+}
+
 void addRenderCommand(CLI::App& app)
 {
     struct Opts {
@@ -135,7 +144,7 @@ void addRenderCommand(CLI::App& app)
         Scene scene = sceneFromFlags(o->height, o->rotation, o->size, o->extent, o->res);
         sceneKindFromFlags(*cmd, o->scene, o->alpha, o->eye, o->albedo, scene);
         methods::MethodSpec spec = methods::parseSpec(o->method, scene.kind);
-        methods::Precision prec = methods::parsePrecision(o->precision);
+        methods::Precision prec = precisionFlag(o->precision);
         util::checkRange("--reps", o->reps, 1, ocl::kMaxReps);
         const int device = deviceFlag(*cmd, o->device);
 

@@ -64,7 +64,7 @@ void addSequenceCommand(CLI::App& app)
             path.from = o->path == "rotate" ? util::parseAngle("--from", o->from) : util::parseReal("--from", o->from);
         if (!o->to.empty())
             path.to = o->path == "rotate" ? util::parseAngle("--to", o->to) : util::parseReal("--to", o->to);
-        methods::Precision prec = methods::parsePrecision(o->precision);
+        methods::Precision prec = precisionFlag(o->precision);
         photometry::Table table = methods::loadLuminaire(o->luminaire);
         ocl::Runtime rt(deviceFlag(*cmd, o->device));
         experiments::SequenceOptions so;

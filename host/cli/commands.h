@@ -2,6 +2,7 @@
 // file per command (cmd_<name>.cpp), so commands can grow independently.
 #pragma once
 
+#include "methods/registry.h"
 #include "scene/scene.h"
 
 #include <CLI/CLI.hpp>
@@ -31,6 +32,8 @@ Scene sceneFromFlags(double height, const std::string& rotation, const std::stri
 
 // The --device flag: -1 (the default device) when not given, else an index >= 0.
 int deviceFlag(const CLI::App& cmd, int device);
+// The --precision flag: float or double.
+methods::Precision precisionFlag(const std::string& text);
 // --scene, --alpha, --eye, --albedo into scene (a flag of another kind is an error).
 void sceneKindFromFlags(const CLI::App& cmd, const std::string& kind, double alpha, const std::string& eye,
                         double albedo, Scene& scene);

@@ -55,7 +55,7 @@ Precision parsePrecision(const std::string& s)
 {
     if (s == "float") return Precision::Float;
     if (s == "double") return Precision::Double;
-    throw InputError(fmt::format("--precision: expected float or double, got '{}'", s));
+    throw InputError(fmt::format("expected float or double, got '{}'", s));
 }
 
 bool renders(const Family& f, SceneKind kind)

@@ -46,7 +46,7 @@ namespace lb::methods {
 
 enum class Precision { Float, Double };
 std::string precisionName(Precision p);
-Precision parsePrecision(const std::string& s);  // "float" | "double", else InputError
+Precision parsePrecision(const std::string& s);  // "float" | "double", else InputError (the caller names the source)
 
 struct Family;
 

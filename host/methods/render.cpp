@@ -150,7 +150,7 @@ Prepared::Prepared(ocl::Runtime& rt, const photometry::Table& table, const Scene
     if (spec.kind != scene.kind)
         throw InputError(fmt::format("method {} was given for the {} scene, not the {} scene it renders here",
                                      spec.name, sceneKindName(spec.kind), sceneKindName(scene.kind)));
-    util::checkRange("--res", scene_.res, 1, kMaxRes);
+    util::checkRange("the scene's res (pixels per side)", scene_.res, 1, kMaxRes);
     scene_.validate();
     table.validate();
     const bool dbl = precision == Precision::Double;

@@ -41,6 +41,7 @@ TEST(Flags, RenderAndBenchSceneFlags)
         {kRender + "--height 1 --extent 1e9", "--extent: expected a number in [0, 10000] m, got 1000000000"},
         {kRender + "--height 1 --size 1xnan", "--size L: expected a finite number, got 'nan'"},
         {kRender + "--height 1 --res 0", "--res: expected an integer in [1, 16384], got 0"},
+        {kRender + "--height 1 --precision half", "--precision: expected float or double, got 'half'"},
         {kRender + "--height 1 --reps 0", "--reps: expected an integer in [1, 1000], got 0"},
         {kRender + "--height 1 --reps 1000000000", "--reps: expected an integer in [1, 1000], got 1000000000"},
         {kRender + "--height 1 --device -1", "--device: expected an integer in [0, 4095], got -1"},
