@@ -321,11 +321,21 @@ uintmax_t sizeOr0(const std::string& path)
     return ec ? 0 : n;
 }
 
+Results loadUnlocked(const std::string& path)
+{
+    const std::string jpath = journalPath(path);
+    const bool journal = std::filesystem::exists(jpath);
+    Results doc;
+    if (!journal || std::filesystem::exists(path)) doc = loadDocument(path);
+    if (journal) foldJournal(jpath, doc);
+    return doc;
+}
+
 void compactLocked(const std::string& path, const json& context)
 {
     Results doc;
     if (exists(path))
-        doc = load(path);
+        doc = loadUnlocked(path);
     else
         doc.context = context;
     save(path, doc);  // then removes the journal: after a crash between the two, load folds it again (dedupe)
@@ -335,12 +345,20 @@ void compactLocked(const std::string& path, const json& context)
 
 Results load(const std::string& path)
 {
-    const std::string jpath = journalPath(path);
-    const bool journal = std::filesystem::exists(jpath);
-    Results doc;
-    if (!journal || std::filesystem::exists(path)) doc = loadDocument(path);
-    if (journal) foldJournal(jpath, doc);
-    return doc;
+    // The document and its journal as one state: a shared lock keeps an
+    // appender from folding the journal in between the two reads. No lock
+    // file: no appender has ever written here (e.g. a read-only copy).
+    int fd = ::open((path + ".lock").c_str(), O_RDONLY | O_CLOEXEC);
+    struct Unlock {
+        int fd;
+        ~Unlock()
+        {
+            if (fd >= 0) ::close(fd);
+        }
+    } unlock{fd};
+    if (fd >= 0 && ::flock(fd, LOCK_SH) != 0)
+        throw Error(fmt::format("{}.lock: cannot lock: {}", path, std::strerror(errno)));
+    return loadUnlocked(path);
 }
 
 void save(const std::string& path, const Results& doc)

@@ -108,7 +108,9 @@ std::string journalPath(const std::string& path);
 bool exists(const std::string& path);
 
 // Reads a results file: the document, then the journal's records (dedupe: a
-// journal record replaces the document's of the same cell). Throws
+// journal record replaces the document's of the same cell), both under a
+// shared lock on `path`.lock where it exists, so that a concurrent append
+// cannot fold the journal in between the two reads. Throws
 // lb::InputError naming the file (and the record index or journal line) when
 // both are missing, or either is not JSON or not a results document.
 Results load(const std::string& path);

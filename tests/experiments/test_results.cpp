@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <algorithm>
 #include <filesystem>
@@ -17,6 +18,8 @@
 
 #include <sys/wait.h>
 #include <sys/stat.h>
+#include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 namespace lb {
@@ -281,6 +284,39 @@ TEST_F(Results, CutOffJournalLineIsNoRecord)
     }
     std::string msg = test::inputErrorOf([&] { results::load(p); });
     EXPECT_NE(msg.find(results::journalPath(p) + ":5:"), std::string::npos) << msg;  // context, 3 records, then it
+}
+
+// A reader takes the shared lock: it waits while an appender holds the
+// exclusive one (which may be folding the journal into the document), so it
+// never reads the document before and the journal after a fold.
+TEST_F(Results, LoadWaitsForAnAppendersLock)
+{
+    const std::string p = file("live.json");
+    results::appendRecord(p, json{{"device", "x"}}, cell("mc", 0.1, 1.0));  // creates live.json.lock
+    int ready[2];
+    ASSERT_EQ(pipe(ready), 0);
+    pid_t pid = fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+        int fd = ::open((p + ".lock").c_str(), O_RDWR);
+        int rc = fd >= 0 && ::flock(fd, LOCK_EX) == 0 ? 0 : 1;
+        char c = 'x';
+        if (::write(ready[1], &c, 1) != 1) rc = 1;
+        ::usleep(300000);  // hold it 0.3 s
+        _exit(rc);
+    }
+    char c;
+    ASSERT_EQ(::read(ready[0], &c, 1), 1);
+    auto t0 = std::chrono::steady_clock::now();
+    EXPECT_EQ(results::load(p).records.size(), 1u);
+    double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    int st = 0;
+    waitpid(pid, &st, 0);
+    EXPECT_TRUE(WIFEXITED(st) && WEXITSTATUS(st) == 0);
+    // the child holds the lock 0.3 s after signalling; without the lock load takes ~1 ms
+    EXPECT_GE(waited, 0.2);
+    ::close(ready[0]);
+    ::close(ready[1]);
 }
 
 TEST_F(Results, ConcurrentAppendsLoseNothing)
