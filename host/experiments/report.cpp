@@ -294,23 +294,18 @@ std::string makePlots(const std::string& dir)
     return "";
 }
 
-void writeReport(const std::string& dir, const std::string& plotNote)
-{
-    const std::string path = (fs::path(dir) / "results.json").string();
-    results::Results doc = results::load(path);
-    results::dedupe(doc.records);  // files of older versions may hold two partners of one method
-    const json& c = doc.context;
-    const std::string title = fmt::format("Experiment `{}`", str(c, "experiment", "?"));
+namespace {
 
+// The report's first table: the run's context (device, commit, ...).
+Table runInfo(const results::Results& doc)
+{
+    const json& c = doc.context;
     Table info{"Run", "", {"", ""}, {}, ""};
     for (const char* k : {"device", "driver", "platform", "commit", "date", "host", "os", "lumibench_version", "shard",
                           "experiment_file", "luminaire_dir"})
         if (c.contains(k)) info.rows.push_back({{k}, {c[k].is_string() ? c[k].get<std::string>() : c[k].dump()}});
-    std::set<std::string> devices, drivers;
-    for (const auto& r : doc.records) {
-        devices.insert(r.device);
-        drivers.insert(r.driver);
-    }
+    std::set<std::string> devices;
+    for (const auto& r : doc.records) devices.insert(r.device);
     if (devices.size() > 1) {
         std::string d;
         for (const auto& x : devices) d += x + "; ";
@@ -318,8 +313,14 @@ void writeReport(const std::string& dir, const std::string& plotNote)
     }
     if (c.contains("merged_from"))
         info.rows.push_back({{"merged from"}, {fmt::format("{} files", c["merged_from"].size())}});
+    return info;
+}
 
-    // Columns: methods in the order first met, then their equal-time partners.
+// The main tables' columns: methods in the order first met, then their
+// equal-time partners; and the summary line (records, scenes, pixels, how
+// many equal-time pairs met the tolerance).
+std::vector<std::string> columns(const results::Results& doc, std::string* summary)
+{
     std::vector<std::string> cols;
     std::set<std::string> scenes;
     size_t eqOk = 0, eqAll = 0, eqClosest = 0;
@@ -337,7 +338,7 @@ void writeReport(const std::string& dir, const std::string& plotNote)
     int res = doc.records.empty() ? 0 : doc.records.front().res;
     int timeRes = doc.records.empty() ? 0 : doc.records.front().time_ms.res;
     double tol = doc.context.value("equal_time_tolerance", NAN);
-    const std::string summary = fmt::format(
+    *summary = fmt::format(
         "{} records, {} scenes, {} x {} pixels{}; {} of {} equal-time MCI partners ({:.0f} %) within "
         "{} of the matched method's median time, {} ({:.0f} %) within or at the closest integer N.\n"
         "Times are OpenCL profiling-event medians (DESIGN section 6); errors against the reference (section 5). "
@@ -348,67 +349,63 @@ void writeReport(const std::string& dir, const std::string& plotNote)
         std::isfinite(tol) ? fmt::format("+-{:g} %", 100 * tol) : std::string("the tolerance"), eqClosest,
         eqAll ? 100.0 * eqClosest / eqAll : 0.0);
 
-    std::vector<Table> tables;
-    // Main tables: per luminaire, precision and height, the rotations' images
-    // pooled into one (metrics::pooled: the thesis' stitched image).
-    auto mainTable = [&](const std::string& key, const std::string& heading, const std::string& note) {
-        struct Acc {
-            std::vector<metrics::Metrics> parts;
-            double nsum = 0;
-        };
-        std::map<std::tuple<std::string, std::string, std::string, double>, std::map<std::string, Acc>> rows;
-        size_t carried = 0;
-        bool kinds = false;  // records of a scene kind other than diffuse: a column for it
-        for (const auto& r : doc.records) {
-            if (role(r) == "mci_curve") continue;
-            kinds = kinds || !kindText(r).empty();
-            auto& a = rows[{r.luminaire, kindText(r), r.precision, r.height}][label(r)];
-            a.parts.push_back(r.error);
-            carried += std::isfinite(metrics::minimisable(r.error, key));
-            if (r.n) a.nsum += double(*r.n);
-        }
-        Table t{heading, note, {"luminaire", "precision", "h"}, {}, ""};
-        if (kinds) t.head.insert(t.head.begin() + 1, "scene");
-        if (carried == 0) {
-            t.empty =
-                fmt::format("No record carries {} (records of an older lumibench{}).", key,
-                            key == "flip" ? ", or flip-evaluator was not available: scripts/install-deps.sh" : "");
-            tables.push_back(t);
-            return;
-        }
-        t.note += "MCI=M is Monte Carlo at the time of method M (its mean N over the rotations in brackets).";
-        for (const auto& col : cols) t.head.push_back(col);
-        for (const auto& [k, m] : rows) {
-            std::vector<Cell> row = {
-                {std::get<0>(k)}, {std::get<2>(k)}, num(std::get<3>(k), fmt::format("{}", std::get<3>(k)))};
-            if (kinds) row.insert(row.begin() + 1, Cell{std::get<1>(k)});
-            for (const auto& col : cols) {
-                auto it = m.find(col);
-                if (it == m.end()) {
-                    row.push_back({});
-                    continue;
-                }
-                const double v = metrics::minimisable(metrics::pooled(it->second.parts), key);
-                std::string text = sci(v);
-                if (col.rfind("MCI=", 0) == 0)
-                    text += fmt::format(" ({:.0f})", it->second.nsum / double(it->second.parts.size()));
-                row.push_back(num(v, text));
-            }
-            t.rows.push_back(std::move(row));
-        }
-        tables.push_back(t);
-    };
-    const std::string pooledNote =
-        "Each cell is the error of the rotations' images stitched into one, as in the thesis: squared errors summed "
-        "over all rotations' pixels, against the pooled means (`metrics::pooled`; docs/thesis-sct-vs-mci.md), not "
-        "the mean of the rotations' values, which one nearly dark rotation can dominate. ";
-    mainTable("nmse", "NMSE per luminaire and height (rotations stitched)", pooledNote);
-    mainTable("grad_nmse", "grad_nmse per luminaire and height (rotations stitched)",
-              "NMSE of the neighbouring-pixel differences: ripples and bumps, not a smooth bias. " + pooledNote);
-    mainTable("flip", "FLIP per luminaire and height (pixel mean over the rotations)",
-              "Mean HDR-FLIP (NVIDIA flip-evaluator), in [0, 1], over all rotations' pixels. ");
+    return cols;
+}
 
-    // Relative times (paper Table 1): geometric mean over scenes of the median over point's median.
+// Main tables: per luminaire, precision and height, the rotations' images
+// pooled into one (metrics::pooled: the thesis' stitched image), of metric `key`.
+Table mainTable(const results::Results& doc, const std::vector<std::string>& cols, const std::string& key,
+                const std::string& heading, const std::string& note)
+{
+    struct Acc {
+        std::vector<metrics::Metrics> parts;
+        double nsum = 0;
+    };
+    std::map<std::tuple<std::string, std::string, std::string, double>, std::map<std::string, Acc>> rows;
+    size_t carried = 0;
+    bool kinds = false;  // records of a scene kind other than diffuse: a column for it
+    for (const auto& r : doc.records) {
+        if (role(r) == "mci_curve") continue;
+        kinds = kinds || !kindText(r).empty();
+        auto& a = rows[{r.luminaire, kindText(r), r.precision, r.height}][label(r)];
+        a.parts.push_back(r.error);
+        carried += std::isfinite(metrics::minimisable(r.error, key));
+        if (r.n) a.nsum += double(*r.n);
+    }
+    Table t{heading, note, {"luminaire", "precision", "h"}, {}, ""};
+    if (kinds) t.head.insert(t.head.begin() + 1, "scene");
+    if (carried == 0) {
+        t.empty = fmt::format("No record carries {} (records of an older lumibench{}).", key,
+                              key == "flip" ? ", or flip-evaluator was not available: scripts/install-deps.sh" : "");
+        return t;
+    }
+    t.note += "MCI=M is Monte Carlo at the time of method M (its mean N over the rotations in brackets).";
+    for (const auto& col : cols) t.head.push_back(col);
+    for (const auto& [k, m] : rows) {
+        std::vector<Cell> row = {
+            {std::get<0>(k)}, {std::get<2>(k)}, num(std::get<3>(k), fmt::format("{}", std::get<3>(k)))};
+        if (kinds) row.insert(row.begin() + 1, Cell{std::get<1>(k)});
+        for (const auto& col : cols) {
+            auto it = m.find(col);
+            if (it == m.end()) {
+                row.push_back({});
+                continue;
+            }
+            const double v = metrics::minimisable(metrics::pooled(it->second.parts), key);
+            std::string text = sci(v);
+            if (col.rfind("MCI=", 0) == 0)
+                text += fmt::format(" ({:.0f})", it->second.nsum / double(it->second.parts.size()));
+            row.push_back(num(v, text));
+        }
+        t.rows.push_back(std::move(row));
+    }
+    return t;
+}
+
+// Relative times (paper Table 1) and each method's kernel form.
+Table timesTable(const results::Results& doc, const std::vector<std::string>& cols)
+{
+    // geometric mean over scenes of the median over point's median
     std::map<std::string, double> pointMs;
     for (const auto& r : doc.records)
         if (label(r) == "point") pointMs[sceneKey(r)] = r.time_ms.median;
@@ -451,47 +448,74 @@ void writeReport(const std::string& dir, const std::string& plotNote)
                               num(relv, std::isfinite(relv) ? fmt::format("{:.2f}", relv) : "n/a"),
                               {form}});
     }
-    tables.push_back(times);
+    return times;
+}
 
-    // Equal-time pairs.
-    if (eqAll) {
-        std::map<std::string, metrics::Metrics> errBy;  // scene|label -> errors
-        for (const auto& r : doc.records) errBy[sceneKey(r) + "|" + str(r.extra, "spec", r.method)] = r.error;
-        Table pairs{"Equal-time pairs",
-                    "",
-                    {"luminaire", "h", "R (rad)", "method", "t method (ms)", "N", "t MCI (ms)", "ratio", "NMSE method",
-                     "NMSE MCI", "grad_nmse method", "grad_nmse MCI", "FLIP method", "FLIP MCI"},
-                    {},
-                    ""};
-        for (const auto& r : doc.records) {
-            if (!r.equal_time_to) continue;
-            std::string m = str(r.extra, "equal_time_label", *r.equal_time_to);
-            auto it = errBy.find(sceneKey(r) + "|" + m);
-            auto of = [&](double metrics::Metrics::*f) {
-                double v = it != errBy.end() ? it->second.*f : NAN;
-                return num(v, sci(v));
-            };
-            const double tm = r.extra.value("equal_time_target_ms", NAN),
-                         ratio = r.extra.value("equal_time_ratio", NAN);
-            const double n = r.n ? double(*r.n) : 0;
-            pairs.rows.push_back(
-                {{r.luminaire},
-                 num(r.height, fmt::format("{}", r.height)),
-                 num(r.rotation, fmt::format("{:.4f}", r.rotation)),
-                 {m},
-                 num(tm, fmt::format("{:.4f}", tm)),
-                 num(n, fmt::format("{}", r.n ? *r.n : 0)),
-                 num(r.time_ms.median, fmt::format("{:.4f}", r.time_ms.median)),
-                 num(ratio, fmt::format("{:.3f}{}", ratio, r.extra.value("equal_time_ok", false) ? "" : " (!)")),
-                 of(&metrics::Metrics::nmse),
-                 num(r.error.nmse, sci(r.error.nmse)),
-                 of(&metrics::Metrics::grad_nmse),
-                 num(r.error.grad_nmse, sci(r.error.grad_nmse)),
-                 of(&metrics::Metrics::flip),
-                 num(r.error.flip, sci(r.error.flip))});
-        }
-        tables.push_back(pairs);
+// Every equal-time pair: the method's and MCI's times and errors.
+Table pairsTable(const results::Results& doc)
+{
+    std::map<std::string, metrics::Metrics> errBy;  // scene|label -> errors
+    for (const auto& r : doc.records) errBy[sceneKey(r) + "|" + str(r.extra, "spec", r.method)] = r.error;
+    Table pairs{"Equal-time pairs",
+                "",
+                {"luminaire", "h", "R (rad)", "method", "t method (ms)", "N", "t MCI (ms)", "ratio", "NMSE method",
+                 "NMSE MCI", "grad_nmse method", "grad_nmse MCI", "FLIP method", "FLIP MCI"},
+                {},
+                ""};
+    for (const auto& r : doc.records) {
+        if (!r.equal_time_to) continue;
+        std::string m = str(r.extra, "equal_time_label", *r.equal_time_to);
+        auto it = errBy.find(sceneKey(r) + "|" + m);
+        auto of = [&](double metrics::Metrics::*f) {
+            double v = it != errBy.end() ? it->second.*f : NAN;
+            return num(v, sci(v));
+        };
+        const double tm = r.extra.value("equal_time_target_ms", NAN), ratio = r.extra.value("equal_time_ratio", NAN);
+        const double n = r.n ? double(*r.n) : 0;
+        pairs.rows.push_back(
+            {{r.luminaire},
+             num(r.height, fmt::format("{}", r.height)),
+             num(r.rotation, fmt::format("{:.4f}", r.rotation)),
+             {m},
+             num(tm, fmt::format("{:.4f}", tm)),
+             num(n, fmt::format("{}", r.n ? *r.n : 0)),
+             num(r.time_ms.median, fmt::format("{:.4f}", r.time_ms.median)),
+             num(ratio, fmt::format("{:.3f}{}", ratio, r.extra.value("equal_time_ok", false) ? "" : " (!)")),
+             of(&metrics::Metrics::nmse),
+             num(r.error.nmse, sci(r.error.nmse)),
+             of(&metrics::Metrics::grad_nmse),
+             num(r.error.grad_nmse, sci(r.error.grad_nmse)),
+             of(&metrics::Metrics::flip),
+             num(r.error.flip, sci(r.error.flip))});
     }
+    return pairs;
+}
+
+}  // namespace
+
+void writeReport(const std::string& dir, const std::string& plotNote)
+{
+    const std::string path = (fs::path(dir) / "results.json").string();
+    results::Results doc = results::load(path);
+    results::dedupe(doc.records);  // files of older versions may hold two partners of one method
+    const std::string title = fmt::format("Experiment `{}`", str(doc.context, "experiment", "?"));
+    const Table info = runInfo(doc);
+    std::string summary;
+    const std::vector<std::string> cols = columns(doc, &summary);
+
+    const std::string pooledNote =
+        "Each cell is the error of the rotations' images stitched into one, as in the thesis: squared errors summed "
+        "over all rotations' pixels, against the pooled means (`metrics::pooled`; docs/thesis-sct-vs-mci.md), not "
+        "the mean of the rotations' values, which one nearly dark rotation can dominate. ";
+    std::vector<Table> tables = {
+        mainTable(doc, cols, "nmse", "NMSE per luminaire and height (rotations stitched)", pooledNote),
+        mainTable(doc, cols, "grad_nmse", "grad_nmse per luminaire and height (rotations stitched)",
+                  "NMSE of the neighbouring-pixel differences: ripples and bumps, not a smooth bias. " + pooledNote),
+        mainTable(doc, cols, "flip", "FLIP per luminaire and height (pixel mean over the rotations)",
+                  "Mean HDR-FLIP (NVIDIA flip-evaluator), in [0, 1], over all rotations' pixels. "),
+        timesTable(doc, cols)};
+    if (std::any_of(doc.records.begin(), doc.records.end(), [](const auto& r) { return bool(r.equal_time_to); }))
+        tables.push_back(pairsTable(doc));
 
     // Plots.
     std::vector<std::string> pngs;
