@@ -4,6 +4,15 @@
  * st[2i], st[2i+1] in [0,1]^2 are the points' (s, t) along (u, v); the host
  * makes the sets (host/methods/samples.h).
  *
+ * A fractional sample count N + extra (0 <= extra < 1), so that MCI's time can
+ * match another method's within a few per cent where one point more is a
+ * 25-50 % step (DESIGN 6): the share `extra` of the work-group tiles, spread
+ * evenly over the image, takes the N + 1 point set stored after the N points
+ * (st[2N ..]); the rest the N points. Each pixel is still an MCI-N or
+ * MCI-(N+1) estimate, so the image's mean squared error and the time are the
+ * mixtures of those two with weights 1 - extra and extra. The count is the
+ * same for the whole work-group, as the barrier in the loop requires.
+ *
  * Written for speed (the straightforward version is kernels/naive.cl):
  * everything is done in the light's orthonormal frame (u, v, n_L), where a
  * sample's offset from the pixel is (ou + W s, ov + L t, on) with ou, ov, on
@@ -31,7 +40,7 @@ LB_FN real mc_on(__global const real* P, int col, int row)
 }
 
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
-                     __global const real* st, int n)
+                     __global const real* st, int n, float extra)
 {
     int col = get_global_id(0);
     int row = row0 + (int)get_global_id(1);
@@ -65,12 +74,24 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     }
 #endif
     /* Receiver cosine (unnormalised): n_x . w = au (ou + W s) + av (ov + L t) + an on. */
+    int m = n;
+    if (extra > 0.0f) {
+        /* tile index, row-major over the whole image (launches come in bands
+         * of rows: row0 counts) */
+        int ls0 = (int)get_local_size(0), ls1 = (int)get_local_size(1);
+        int tile_row = (row0 + (int)(get_group_id(1) * get_local_size(1))) / ls1;
+        float g = (float)(tile_row * ((res + ls0 - 1) / ls0) + (int)get_group_id(0));
+        if (floor((g + 1.0f) * extra) > floor(g * extra)) {
+            st += 2 * n;
+            m = n + 1;
+        }
+    }
     real au, av, an;
     lb_receiver_normal_local(P, &au, &av, &an);
     real an0 = an * on;
     real on2 = on * on;
     real sum = R(0);
-    for (int i = 0; i < n; ++i) {
+    for (int i = 0; i < m; ++i) {
         real wu = ou + w * st[2 * i];
         real wv = ov + l * st[2 * i + 1];
         real r2 = wu * wu + wv * wv + on2;
@@ -90,5 +111,5 @@ __kernel void render(__global const real* P, __global const float* lum, __global
         barrier(CLK_LOCAL_MEM_FENCE);
     }
     if (inside)
-        out[row * res + col] = sum / (real)n;
+        out[row * res + col] = sum / (real)m;
 }

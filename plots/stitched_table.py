@@ -73,7 +73,7 @@ def main():
             if not g:
                 cells.append("-")
             elif c.startswith("mci@"):
-                n = sum(r["n"] for r in g) / len(g)
+                n = sum(r.get("equal_time_n", r["n"]) for r in g) / len(g)
                 cells.append(f"{fmt(stitched(g))} ({n:.0f})")
             else:
                 cells.append(fmt(stitched(g)))
@@ -86,12 +86,12 @@ def main():
         missed = sum(1 for r in eq if not r.get("equal_time_ok", True))
         # bracketed: N_eq's measured neighbour lies on the other side (no integer N is closer)
         closest = sum(1 for r in eq if r.get("equal_time_ok", True) or r.get("equal_time_bracketed", False))
-        ns = sorted(r["n"] for r in eq)
+        ns = sorted(r.get("equal_time_n", r["n"]) for r in eq)
         rows_won = sum(1 for lum, h in keys
                        if groups.get((lum, h, lab)) and groups.get((lum, h, "mci@" + lab))
                        and stitched(groups[(lum, h, lab)]) < stitched(groups[(lum, h, "mci@" + lab)]))
         print(f"- {lab}: beats its equal-time MCI in {wins} of {len(eq)} scenes and {rows_won} of {len(keys)} "
-              f"stitched rows; MCI N {ns[0]}..{ns[-1]} (median {ns[len(ns) // 2]}); pairs outside the tolerance: "
+              f"stitched rows; MCI N {ns[0]:g}..{ns[-1]:g} (median {ns[len(ns) // 2]:g}); pairs outside the tolerance: "
               f"{missed} ({100 * (len(eq) - missed) / len(eq):.0f} % within"
               + (f", {100 * closest / len(eq):.0f} % within or bracketed)"
                  if any("equal_time_bracketed" in r for r in eq) else ")"))

@@ -226,7 +226,9 @@ Experiment loadExperiment(const std::string& path, const Overrides& ov)
     }
     if (r.has("mc")) e.mc = r.string("mc");
     if (checkSpec("mc", e.mc).name != "mc") r.fail("mc", fmt::format("expected an mc SPEC, found '{}'", e.mc));
-    if (checkSpec("mc", e.mc).given.count("n")) r.fail("mc", "must not set n (the runner chooses it)");
+    for (const char* k : {"n", "extra"})
+        if (checkSpec("mc", e.mc).given.count(k))
+            r.fail("mc", fmt::format("must not set {} (the runner chooses it)", k));
     if (r.has("reference")) e.reference = r.string("reference");
     checkSpec("reference", e.reference);
     if (r.has("mci_curve")) e.mciCurve = r.integers("mci_curve", 1, 1 << 20);

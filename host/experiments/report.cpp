@@ -370,7 +370,7 @@ Table mainTable(const results::Results& doc, const std::vector<std::string>& col
         auto& a = rows[{r.luminaire, kindText(r), r.precision, r.height}][label(r)];
         a.parts.push_back(r.error);
         carried += std::isfinite(metrics::minimisable(r.error, key));
-        if (r.n) a.nsum += double(*r.n);
+        if (r.n) a.nsum += r.extra.value("equal_time_n", double(*r.n));  // N + extra: MC's mean count
     }
     Table t{heading, note, {"luminaire", "precision", "h"}, {}, ""};
     if (kinds) t.head.insert(t.head.begin() + 1, "scene");
@@ -471,14 +471,14 @@ Table pairsTable(const results::Results& doc)
             return num(v, sci(v));
         };
         const double tm = r.extra.value("equal_time_target_ms", NAN), ratio = r.extra.value("equal_time_ratio", NAN);
-        const double n = r.n ? double(*r.n) : 0;
+        const double n = r.n ? r.extra.value("equal_time_n", double(*r.n)) : 0;  // N + extra
         pairs.rows.push_back(
             {{r.luminaire},
              num(r.height, fmt::format("{}", r.height)),
              num(r.rotation, fmt::format("{:.4f}", r.rotation)),
              {m},
              num(tm, fmt::format("{:.4f}", tm)),
-             num(n, fmt::format("{}", r.n ? *r.n : 0)),
+             num(n, fmt::format("{:g}", n)),
              num(r.time_ms.median, fmt::format("{:.4f}", r.time_ms.median)),
              num(ratio, fmt::format("{:.3f}{}", ratio, r.extra.value("equal_time_ok", false) ? "" : " (!)")),
              of(&metrics::Metrics::nmse),

@@ -150,6 +150,14 @@ results::Record baseRecord(const SceneId& sid, ocl::Runtime& rt)
     return r;
 }
 
+// "mc:n=N" or "mc:n=N,extra=F" (the equal-time MCI's sample count).
+std::string mcLabel(const methods::MethodSpec& s)
+{
+    std::string label = "mc:n=" + std::to_string(s.integer("n"));
+    if (s.has("extra") && s.num("extra") > 0) label += ",extra=" + s.values.at("extra");
+    return label;
+}
+
 struct SceneRun {
     const Experiment& e;
     const SceneId& sid;
@@ -182,7 +190,7 @@ struct SceneRun {
         r.time_ms = {rr.timing.median_ms, rr.timing.min_ms, rr.timing.max_ms, rr.timing.reps, rr.timeRes};
         r.error = metrics::compare(ref, rr.image);
         r.error.flip = metrics::flip(ref, rr.image);  // null, with one warning per run, without flip-evaluator
-        r.extra["spec"] = cell.role == "equal_time" ? "mc:n=" + std::to_string(spec.integer("n")) : cell.spec;
+        r.extra["spec"] = cell.role == "equal_time" ? mcLabel(spec) : cell.spec;
         r.extra["role"] = cell.role;
         r.extra["build_s"] = rr.buildSeconds;
         if (!rr.stats.empty()) r.extra["stats"] = rr.stats;
@@ -217,9 +225,10 @@ results::Record equalTimePartner(const SceneRun& sr, const Cell& c, double tM, s
     ocl::Runtime& rt = sr.rt;
     const photometry::Table& table = sr.table;
     const std::string target = c.parsed.canonical();
-    auto mcAt = [&](long n) {
-        return methods::parseSpec(e.mc + (e.mc.find(':') == std::string::npos ? ":" : ",") + "n=" + std::to_string(n),
-                                  e.kind());
+    auto mcAt = [&](long n, double extra = 0) {
+        std::string s = e.mc + (e.mc.find(':') == std::string::npos ? ":" : ",") + "n=" + std::to_string(n);
+        if (extra > 0) s += fmt::format(",extra={:.3f}", extra);
+        return methods::parseSpec(s, e.kind());
     };
     if (pts.size() < 2) {
         pts.clear();
@@ -300,8 +309,39 @@ results::Record equalTimePartner(const SceneRun& sr, const Cell& c, double tM, s
     // N matches the method more closely on this device.
     bool bracketed = ratio >= 1 ? (bestN == 1 || (measured.count(bestN - 1) && measured[bestN - 1] < 1))
                                 : (measured.count(bestN + 1) && measured[bestN + 1] >= 1);
+    // No integer N within the tolerance, but N and N + 1 bracket the
+    // method: MC's fractional sample count (mc's `extra`, kernels/mc.cl: that
+    // share of the tiles takes N + 1 points; time is linear in it) closes the
+    // step. Aimed by linear interpolation between the paired ratios of N and
+    // N + 1, then by the secant through the nearest measured pair; two tries.
     long n1 = bestN;
-    auto s1 = mcAt(n1);
+    double extra = 0;
+    long lo = ratio >= 1 ? bestN - 1 : bestN;
+    if (std::abs(ratio - 1) > e.equalTimeTolerance && bracketed && lo >= 1 && measured.count(lo) &&
+        measured.count(lo + 1) && mcAt(lo).has("extra")) {
+        double f0 = 0, q0 = measured[lo], f1 = 1, q1 = measured[lo + 1];
+        for (int attempt = 0; attempt < 2 && q1 > q0; ++attempt) {
+            double f = std::round(1000 * std::clamp(f0 + (1 - q0) * (f1 - f0) / (q1 - q0), 0.001, 0.999)) / 1000;
+            methods::Prepared pf(rt, table, ts, mcAt(lo, f), sr.prec);
+            std::vector<ocl::Timing> tt = rt.timeInterleaved(
+                {[&] { return pm.launch(0, ts.res); }, [&] { return pf.launch(0, ts.res); }}, std::max(1, e.reps), 1);
+            std::vector<double> rr;
+            for (size_t ri = 0; ri < tt[0].samples_ms.size(); ++ri)
+                rr.push_back(tt[1].samples_ms[ri] / tt[0].samples_ms[ri]);
+            double q = ocl::summarize(rr).median_ms;
+            candJson.push_back({{"n", lo}, {"extra", f}, {"ratio", q}, {"ms", tt[1].median_ms}});
+            if (std::fabs(std::log(q)) < std::fabs(std::log(ratio))) {
+                n1 = lo;
+                extra = f;
+                ratio = q;
+                bestT = tt;
+            }
+            if (std::abs(q - 1) <= e.equalTimeTolerance) break;
+            (q < 1 ? f0 : f1) = f;
+            (q < 1 ? q0 : q1) = q;
+        }
+    }
+    auto s1 = mcAt(n1, extra);
     // the error image at the experiment's res (its time is the paired one above)
     methods::RenderOptions imageOnly;
     imageOnly.reps = 1;
@@ -313,6 +353,7 @@ results::Record equalTimePartner(const SceneRun& sr, const Cell& c, double tM, s
     results::Record r = sr.record(s1, r1, c, cellImageName(c.role, c.spec));
     r.equal_time_to = target;
     r.n = n1;
+    r.extra["equal_time_n"] = double(n1) + extra;  // N + extra: MC's mean sample count
     r.extra["equal_time_candidates"] = candJson;
     r.extra["equal_time_cell_ms"] = tM;  // the method's own cell, timed apart
     r.extra["equal_time_label"] = c.spec;

@@ -170,6 +170,10 @@ TEST(Experiment, BadFilesNameFileAndKey)
     j = tinyExperiment();
     j["mc"] = "mc:n=4";
     expectError(j, "mc", "must not set n");
+    j["mc"] = "mc:extra=0.5";
+    expectError(j, "mc", "must not set extra");
+    j["mc"] = "mc:n=3,extra=1";  // the fractional part is < 1 (checked before the key)
+    expectError(j, "mc", "extra");
 }
 
 // ---------------------------------------------------------------- equal time
@@ -307,12 +311,19 @@ TEST_F(ExperimentRun, RecordsAreSaneAndAnInterruptedRunResumes)
             ASSERT_TRUE(r.n.has_value());
             EXPECT_GE(*r.n, 1);
             EXPECT_EQ(r.params["n"], *r.n);
-            // N_eq is the timed candidate whose paired ratio is closest to 1
+            // N_eq (with its fractional part `extra`, where integers could
+            // only bracket the method) is the timed candidate whose paired
+            // ratio is closest to 1
             const double ratio = r.extra["equal_time_ratio"].get<double>();
+            const double extra = r.params.value("extra", 0.0);
+            EXPECT_GE(extra, 0.0);
+            EXPECT_LT(extra, 1.0);
+            EXPECT_DOUBLE_EQ(r.extra["equal_time_n"].get<double>(), double(*r.n) + extra) << r.key();
             bool found = false;
             for (const auto& c : r.extra["equal_time_candidates"]) {
                 EXPECT_GE(std::fabs(std::log(c["ratio"].get<double>())), std::fabs(std::log(ratio)) - 1e-12);
-                if (c["n"] == *r.n) found = c["ratio"].get<double>() == ratio;
+                found =
+                    found || (c["n"] == *r.n && c.value("extra", 0.0) == extra && c["ratio"].get<double>() == ratio);
             }
             EXPECT_TRUE(found) << r.key();
             EXPECT_GT(r.extra["equal_time_target_ms"].get<double>(), 0);

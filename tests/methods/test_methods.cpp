@@ -91,6 +91,43 @@ TEST(Mc, FixedSetIsDeterministic)
     }
 }
 
+TEST(Mc, FractionalCountMixesWholeTilesOfNAndNPlusOne)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    // mc:n=N,extra=f: the share f of the 8 x 8 work-group tiles (spread by
+    // floor((g + 1) f) > floor(g f) over the row-major tile index g) takes the
+    // N + 1 point set, the rest the N points. Each tile must equal the MCI-N or
+    // the MCI-(N+1) image bit for bit (same kernel, same arithmetic), and the
+    // sequence gives floor(64 f) of the 64 tiles N + 1 points; +-1 for the
+    // float rounding of g f at a boundary.
+    Scene sc = scene(1.1, 3 * M_PI / 4, 64);
+    auto t = batwing();
+    Image a = run(*rt, t, sc, "mc:n=3", Precision::Float).image;
+    Image b = run(*rt, t, sc, "mc:n=4", Precision::Float).image;
+    for (double f : {0.25, 0.5, 0.8}) {
+        Image m = run(*rt, t, sc, fmt::format("mc:n=3,extra={}", f), Precision::Float).image;
+        int more = 0, bad = 0;
+        for (int ty = 0; ty < 8; ++ty)
+            for (int tx = 0; tx < 8; ++tx) {
+                bool eqA = true, eqB = true, differ = false;
+                for (int y = 8 * ty; y < 8 * ty + 8; ++y)
+                    for (int x = 8 * tx; x < 8 * tx + 8; ++x) {
+                        size_t i = size_t(y) * 64 + x;
+                        eqA = eqA && m.px[i] == a.px[i];
+                        eqB = eqB && m.px[i] == b.px[i];
+                        differ = differ || a.px[i] != b.px[i];
+                    }
+                ASSERT_TRUE(differ) << "tile " << tx << "," << ty << " cannot tell N from N + 1";
+                more += eqB;
+                bad += !eqA && !eqB;
+            }
+        EXPECT_EQ(bad, 0) << "extra " << f << ": tiles that are neither MCI-3 nor MCI-4";
+        EXPECT_NEAR(more, std::floor(64 * f), 1.0) << "extra " << f;
+    }
+    // extra = 0 is MCI-N itself
+    EXPECT_EQ(run(*rt, t, sc, "mc:n=3,extra=0", Precision::Float).image.px, a.px);
+}
+
 TEST(Methods, AgreeWithReferenceInTheFarField)
 {
     LB_REQUIRE_RUNTIME(rt);
