@@ -45,9 +45,9 @@ void registerSpecular(Registry& r)
             Param::choice("pattern", "poisson", {"poisson", "halton", "stratified", "random"},
                           "point set on the light"),
             Param::integer("seed", 0, 0, 2147483647L, Scale::Linear, "seed of the point set and the VNDF hash"),
-            Param::choice("lookup", "exact", {"exact", "lut"},
-                          "intensity lookup: the exact bilinear one (docs/specular.md's runs) or the trig-free "
-                          "table (photometry/lut.h) that ltc and the diffuse mc use by default"),
+            Param::choice("lookup", "lut", {"lut", "exact"},
+                          "intensity lookup: the trig-free table (photometry/lut.h), as ltc and the diffuse mc, or "
+                          "the exact bilinear one"),
         };
         f.lumBuffer = lookupBuffer;
         f.defines = [](const MethodSpec& s) {
