@@ -46,18 +46,27 @@ struct Bench {
     // t(a) / t(b) as the median of per-round ratios, the two launched in
     // alternation (Runtime::timeInterleaved): a drift of the machine's speed
     // hits both sides of every ratio alike. At least 11 rounds.
-    double ratio(const std::string& a, const std::string& b)
+    double ratio(const std::string& a, const std::string& b) { return paired(scene, a, scene, b).ratio; }
+
+    struct Paired {
+        double ratio;  // median of the rounds' ratios
+        double msA, msB;  // the medians of each side
+        int rounds;
+    };
+    // a on scene sa against b on scene sb, in alternating rounds.
+    Paired paired(const Scene& sa, const std::string& a, const Scene& sb, const std::string& b)
     {
-        methods::MethodSpec sa = methods::parseSpec(a), sb = methods::parseSpec(b);
-        methods::Prepared pa(rt, table, scene, sa, methods::Precision::Float);
-        methods::Prepared pb(rt, table, scene, sb, methods::Precision::Float);
+        methods::Prepared pa(rt, table, sa, methods::parseSpec(a, sa.kind), methods::Precision::Float);
+        methods::Prepared pb(rt, table, sb, methods::parseSpec(b, sb.kind), methods::Precision::Float);
         pa.setLocal(opt.lx, opt.ly);
         pb.setLocal(opt.lx, opt.ly);
-        auto t = rt.timeInterleaved({[&] { return pa.launch(0, scene.res); }, [&] { return pb.launch(0, scene.res); }},
-                                    std::max(opt.reps, 11), 1);
+        const int rounds = std::max(opt.reps, 11);
+        auto t =
+            rt.timeInterleaved({[&] { return pa.launch(0, sa.res); }, [&] { return pb.launch(0, sb.res); }}, rounds, 1);
         std::vector<double> q;
         for (size_t i = 0; i < t[0].samples_ms.size(); ++i) q.push_back(t[0].samples_ms[i] / t[1].samples_ms[i]);
-        return ocl::summarize(q).median_ms;
+        return {ocl::summarize(q).median_ms, ocl::summarize(t[0].samples_ms).median_ms,
+                ocl::summarize(t[1].samples_ms).median_ms, rounds};
     }
 
     // naive.cl: render(P, lum, out, row0, st, n), the exact packed table.
@@ -101,36 +110,34 @@ std::vector<std::string> benchSpecs(bool quick)
     return v;
 }
 
-}  // namespace
-
-nlohmann::json run(ocl::Runtime& rt, const photometry::Table& table, const Scene& scene0, const Options& opt)
+// The run's header: device, context, scene, the specialisation and the LUT.
+nlohmann::json header(Bench& b)
 {
-    Scene scene = scene0;
-    scene.res = opt.res;
-    Bench b{rt, table, scene, opt};
-    const double px = double(scene.res) * scene.res;
-    const auto lut = photometry::buildLut(table);
-    const auto spec = methods::analyse(scene, table, true, true);
-
+    const auto lut = photometry::buildLut(b.table);
     nlohmann::json doc;
-    doc["device"] = rt.info().name;
-    doc["driver"] = rt.info().platform + " " + rt.info().driver;
+    doc["device"] = b.rt.info().name;
+    doc["driver"] = b.rt.info().platform + " " + b.rt.info().driver;
     // commit, date, host, compiler (as the experiments' result files)
-    doc["context"] = results::makeContext(rt.info().name, doc["driver"].get<std::string>(), nullptr);
-    doc["res"] = scene.res;
-    doc["reps"] = opt.reps;
-    doc["local"] = {opt.lx, opt.ly};
-    doc["luminaire"] = table.source.empty() ? table.format : table.source;
-    doc["scene"] = scene.describe();
-    doc["specialization"] = spec.json();
-    doc["lut"] = {{"ng", lut.ng}, {"na", lut.na}, {"error_bound_rel", lut.errorBound / table.maxCd()}};
+    doc["context"] = results::makeContext(b.rt.info().name, doc["driver"].get<std::string>(), nullptr);
+    doc["res"] = b.scene.res;
+    doc["reps"] = b.opt.reps;
+    doc["local"] = {b.opt.lx, b.opt.ly};
+    doc["luminaire"] = b.table.source.empty() ? b.table.format : b.table.source;
+    doc["scene"] = b.scene.describe();
+    doc["specialization"] = methods::analyse(b.scene, b.table, true, true).json();
+    doc["lut"] = {{"ng", lut.ng}, {"na", lut.na}, {"error_bound_rel", lut.errorBound / b.table.maxCd()}};
+    return doc;
+}
 
-    // 1. Samples per second: naive against the fast kernel, same N, same run.
-    // The machine may be shared: naive and fast alternate in `rounds` rounds
-    // and each keeps its median, so a burst of load hits both alike.
-    int n = opt.samples;
+// 1. Samples per second: naive against the fast kernel, same N, same run.
+// The machine may be shared: naive and fast alternate in `rounds` rounds
+// and each keeps its median, so a burst of load hits both alike.
+nlohmann::json samplesPerSecond(Bench& b)
+{
+    const int n = b.opt.samples;
+    const double px = double(b.scene.res) * b.scene.res;
     std::vector<double> naives, fasts;
-    for (int r = 0; r < opt.rounds; ++r) {
+    for (int r = 0; r < b.opt.rounds; ++r) {
         naives.push_back(b.naive(n));
         fasts.push_back(b.mc(n));
     }
@@ -139,80 +146,103 @@ nlohmann::json run(ocl::Runtime& rt, const photometry::Table& table, const Scene
     double generalLut = b.spec(fmt::format("mc:n={},specialize=none", n)).ms;
     auto sps = [&](double ms) { return px * n / (ms * 1e-3); };
     double ratio = naive / fast;
-    doc["mc"] = {{"n", n},
-                 {"rounds", opt.rounds},
-                 {"naive_rounds_ms", naives},
-                 {"fast_rounds_ms", fasts},
-                 {"naive_ms", naive},
-                 {"fast_ms", fast},
-                 {"fast_exact_ms", fastExact},
-                 {"general_lut_ms", generalLut},
-                 {"naive_sps", sps(naive)},
-                 {"fast_sps", sps(fast)},
-                 {"ratio", ratio},
-                 {"target", 10},
-                 {"ok", ratio >= 10}};
+    return {{"n", n},
+            {"rounds", b.opt.rounds},
+            {"naive_rounds_ms", naives},
+            {"fast_rounds_ms", fasts},
+            {"naive_ms", naive},
+            {"fast_ms", fast},
+            {"fast_exact_ms", fastExact},
+            {"general_lut_ms", generalLut},
+            {"naive_sps", sps(naive)},
+            {"fast_sps", sps(fast)},
+            {"ratio", ratio},
+            {"target", 10},
+            {"ok", ratio >= 10}};
+}
 
-    // 2. MC time against N (near linear, DESIGN 6): least-squares line.
-    std::vector<int> ns = opt.quick ? std::vector<int>{1, 8, 32} : std::vector<int>{1, 4, 8, 16, 32, 64, 128};
+// 2. MC time against N (near linear, DESIGN 6): least-squares line.
+struct McFit {
+    double t0 = 0, slope = 0;
+    double mc8 = 0;  // t(8), measured
+    nlohmann::json json;
+};
+
+McFit mcFit(Bench& b)
+{
+    std::vector<int> ns = b.opt.quick ? std::vector<int>{1, 8, 32} : std::vector<int>{1, 4, 8, 16, 32, 64, 128};
     nlohmann::json pts = nlohmann::json::array();
     double sx = 0, sy = 0, sxx = 0, sxy = 0;
-    double mc8 = 0;
+    McFit f;
     for (int k : ns) {
         double t = b.mc(k);
-        if (k == 8) mc8 = t;
+        if (k == 8) f.mc8 = t;
         pts.push_back({k, t});
         sx += k, sy += t, sxx += double(k) * k, sxy += k * t;
     }
     double m = double(ns.size());
-    double slope = (m * sxy - sx * sy) / (m * sxx - sx * sx);
-    double t0 = (sy - slope * sx) / m;
-    doc["mc_fit"] = {{"points", pts}, {"t0_ms", t0}, {"ms_per_sample", slope}};
+    f.slope = (m * sxy - sx * sy) / (m * sxx - sx * sx);
+    f.t0 = (sy - f.slope * sx) / m;
+    f.json = {{"points", pts}, {"t0_ms", f.t0}, {"ms_per_sample", f.slope}};
+    return f;
+}
 
-    // 3. Every method's time per pixel, each as render() builds it.
+// 3. Every method's time per pixel, each as render() builds it; into doc's
+// "methods", "cubature_specialization" and "cubature_lanes". Returns the
+// cubature's time.
+double methodTimes(Bench& b, double naiveMs, const McFit& fit, nlohmann::json& doc)
+{
+    const double px = double(b.scene.res) * b.scene.res;
     nlohmann::json methods = nlohmann::json::array();
     std::map<std::string, double> ms;
     auto add = [&](const std::string& name, double t, const std::string& defines) {
         ms[name] = t;
         methods.push_back({{"method", name}, {"time_ms", t}, {"ns_per_pixel", t * 1e6 / px}, {"defines", defines}});
     };
-    add(fmt::format("naive mc:n={}", n), naive, "");
+    add(fmt::format("naive mc:n={}", b.opt.samples), naiveMs, "");
     int cubLanes = 1;
-    for (const auto& s : benchSpecs(opt.quick)) {
+    const std::string mcDefines = methods::analyse(b.scene, b.table, true, true).defines();
+    for (const auto& s : benchSpecs(b.opt.quick)) {
         if (ms.count(s)) continue;
-        Bench::Timed t = s == "mc:n=8" ? Bench::Timed{mc8, spec.defines(), 1} : b.spec(s);
+        Bench::Timed t = s == "mc:n=8" ? Bench::Timed{fit.mc8, mcDefines, 1} : b.spec(s);
         add(s, t.ms, t.defines + (t.lanes > 1 ? fmt::format(" -DLB_LANES={}", t.lanes) : ""));
         if (s == "cubature") cubLanes = t.lanes;
     }
-    const double cub = ms.at("cubature");
     methods::CubatureOptions co;
-    doc["cubature_specialization"] = methods::analyseCubature(scene, table, co).json();
+    doc["cubature_specialization"] = methods::analyseCubature(b.scene, b.table, co).json();
     doc["cubature_lanes"] = cubLanes;
     doc["methods"] = methods;
+    return ms.at("cubature");
+}
 
-    // 4. Cubature against MC 8, and its equal-time sample count.
-    // From the fit, then one secant correction on the measured t(N) (the fit
-    // is only near linear, and the machine's load drifts).
-    int neq = std::max(1, int(std::lround((cub - t0) / slope)));
+// 4. Cubature against MC 8, and its equal-time sample count: from the fit,
+// then one secant correction on the measured t(N) (the fit is only near
+// linear, and the machine's load drifts).
+nlohmann::json cubatureAgainstMc(Bench& b, double cub, const McFit& fit)
+{
+    int neq = std::max(1, int(std::lround((cub - fit.t0) / fit.slope)));
     double verify = b.mc(neq);
     int fitN = neq;
     if (verify > 0 && std::fabs(verify - cub) > 0.1 * cub) {
         neq = std::max(1, int(std::lround(neq * cub / verify)));
         verify = b.mc(neq);
     }
-    double cr = cub / mc8;
-    doc["cubature"] = {{"time_ms", cub},  {"mc8_ms", mc8},       {"ratio", cr},         {"target", 1.0},
-                       {"ok", cr <= 1.0}, {"equal_time_n", neq}, {"verify_ms", verify}, {"fit_n", fitN}};
+    double cr = cub / fit.mc8;
+    return {{"time_ms", cub},  {"mc8_ms", fit.mc8},   {"ratio", cr},         {"target", 1.0},
+            {"ok", cr <= 1.0}, {"equal_time_n", neq}, {"verify_ms", verify}, {"fit_n", fitN}};
+}
 
-    // 5. The fair-equal-time goals: every variant in its fastest form before
-    // its verdict. Each ratio from its own alternating rounds (Bench::ratio).
+// 5. The fair-equal-time goals: every variant in its fastest form before
+// its verdict. Each ratio from its own alternating rounds (Bench::ratio).
+nlohmann::json goals(Bench& b)
+{
     struct Goal {
         const char* name;
         const char* num;
         const char* den;
         double target;
     };
-    nlohmann::json goals = nlohmann::json::array();
+    nlohmann::json out = nlohmann::json::array();
     for (Goal g : {Goal{"delaunay cp+barycentre / fan", "cubature:triangulation=delaunay,dynamic=cp+barycentre",
                         "cubature", 1.5},
                    Goal{"delaunay cp+np+mrp+barycentre / fan",
@@ -220,73 +250,87 @@ nlohmann::json run(ocl::Runtime& rt, const photometry::Table& table, const Scene
                    Goal{"np / cp", "np", "cp", 2.0}, Goal{"mrp / cp", "mrp", "cp", 2.0},
                    Goal{"cubature / mc 8", "cubature", "mc:n=8", 1.0}}) {
         double r = b.ratio(g.num, g.den);
-        goals.push_back({{"name", g.name},
-                         {"numerator", g.num},
-                         {"denominator", g.den},
-                         {"ratio", r},
-                         {"rounds", std::max(opt.reps, 11)},
-                         {"target", g.target},
-                         {"ok", r <= g.target}});
+        out.push_back({{"name", g.name},
+                       {"numerator", g.num},
+                       {"denominator", g.den},
+                       {"ratio", r},
+                       {"rounds", std::max(b.opt.reps, 11)},
+                       {"target", g.target},
+                       {"ok", r <= g.target}});
     }
-    doc["goals"] = goals;
+    return out;
+}
 
-    // 6. The indirect scene's RSM methods (DESIGN 9): each method's time and
-    // its stages (RSM, clustering, evaluation: Prepared::stageMs) at the
-    // bench's resolution, the same light in the room (at h = 1.1 where the
-    // bench's height does not fit it).
-    Scene ind = scene;
+// 6. The indirect scene's RSM methods (DESIGN 9): each method's time and
+// its stages (RSM, clustering, evaluation: Prepared::stageMs) at the
+// bench's resolution, the same light in the room (at h = 1.1 where the
+// bench's height does not fit it).
+nlohmann::json indirectTimes(Bench& b)
+{
+    Scene ind = b.scene;
     ind.kind = SceneKind::Indirect;
     try {
         ind.validate();
     } catch (const InputError&) {
         ind.height = 1.1;
     }
-    nlohmann::json indirect = nlohmann::json::array();
+    nlohmann::json rows = nlohmann::json::array();
     for (const auto& f : methods::registry().all()) {
         if (f.expensive || f.name == "mc" || !methods::renders(f, SceneKind::Indirect)) continue;
         std::vector<std::string> specs{f.name};
-        if (!opt.quick) specs.insert(specs.end(), f.benchSpecs.begin(), f.benchSpecs.end());
+        if (!b.opt.quick) specs.insert(specs.end(), f.benchSpecs.begin(), f.benchSpecs.end());
         for (const auto& text : specs) {
             methods::MethodSpec s = methods::parseSpec(text, SceneKind::Indirect);
-            methods::Prepared p(rt, table, ind, s, methods::Precision::Float);
-            p.setLocal(opt.lx, opt.ly);
-            double t = p.time(opt.reps).median_ms;
-            indirect.push_back({{"method", text}, {"time_ms", t}, {"stage_ms", p.stageMs()}});
+            methods::Prepared p(b.rt, b.table, ind, s, methods::Precision::Float);
+            p.setLocal(b.opt.lx, b.opt.ly);
+            double t = p.time(b.opt.reps).median_ms;
+            rows.push_back({{"method", text}, {"time_ms", t}, {"stage_ms", p.stageMs()}});
         }
     }
-    doc["indirect"] = {{"scene", ind.describe()}, {"methods", indirect}};
-    // 7. The specular extension (paper Table 1: Cubature + LTC 0.77 ms against
-    // Cubature 0.41 ms at 1080p on an RTX 2080 Ti, 1.9x): `ltc` on the
-    // specular scene of the same light over `cubature` on the diffuse scene,
-    // in alternating rounds as the goals above; once against the cubature as
-    // render() runs it (its fastest, straight-line form where the scene
-    // allows) and once against its general kernel, the code path the ltc
-    // kernel shares (lb_cubature_setup).
-    {
-        Scene sp = scene;
-        sp.kind = SceneKind::Specular;
-        nlohmann::json rows = nlohmann::json::array();
-        for (const char* den : {"cubature", "cubature:specialize=none"}) {
-            methods::Prepared pa(rt, table, sp, methods::parseSpec("ltc", SceneKind::Specular),
-                                 methods::Precision::Float);
-            methods::Prepared pb(rt, table, scene, methods::parseSpec(den), methods::Precision::Float);
-            pa.setLocal(opt.lx, opt.ly);
-            pb.setLocal(opt.lx, opt.ly);
-            int rounds = std::max(opt.reps, 11);
-            auto t = rt.timeInterleaved({[&] { return pa.launch(0, sp.res); }, [&] { return pb.launch(0, scene.res); }},
-                                        rounds, 1);
-            std::vector<double> q;
-            for (size_t i = 0; i < t[0].samples_ms.size(); ++i) q.push_back(t[0].samples_ms[i] / t[1].samples_ms[i]);
-            rows.push_back({{"numerator", "ltc (specular scene)"},
-                            {"denominator", std::string(den) + " (diffuse scene)"},
-                            {"ratio", ocl::summarize(q).median_ms},
-                            {"ltc_ms", ocl::summarize(t[0].samples_ms).median_ms},
-                            {"cubature_ms", ocl::summarize(t[1].samples_ms).median_ms},
-                            {"rounds", rounds},
-                            {"paper", 0.77 / 0.41}});
-        }
-        doc["specular"] = rows;
+    return {{"scene", ind.describe()}, {"methods", rows}};
+}
+
+// 7. The specular extension (paper Table 1: Cubature + LTC 0.77 ms against
+// Cubature 0.41 ms at 1080p on an RTX 2080 Ti, 1.9x): `ltc` on the
+// specular scene of the same light over `cubature` on the diffuse scene,
+// in alternating rounds as the goals above; once against the cubature as
+// render() runs it (its fastest, straight-line form where the scene
+// allows) and once against its general kernel, the code path the ltc
+// kernel shares (lb_cubature_setup).
+nlohmann::json specularTimes(Bench& b)
+{
+    Scene sp = b.scene;
+    sp.kind = SceneKind::Specular;
+    nlohmann::json rows = nlohmann::json::array();
+    for (const char* den : {"cubature", "cubature:specialize=none"}) {
+        Bench::Paired t = b.paired(sp, "ltc", b.scene, den);
+        rows.push_back({{"numerator", "ltc (specular scene)"},
+                        {"denominator", std::string(den) + " (diffuse scene)"},
+                        {"ratio", t.ratio},
+                        {"ltc_ms", t.msA},
+                        {"cubature_ms", t.msB},
+                        {"rounds", t.rounds},
+                        {"paper", 0.77 / 0.41}});
     }
+    return rows;
+}
+
+}  // namespace
+
+nlohmann::json run(ocl::Runtime& rt, const photometry::Table& table, const Scene& scene0, const Options& opt)
+{
+    Scene scene = scene0;
+    scene.res = opt.res;
+    Bench b{rt, table, scene, opt};
+    nlohmann::json doc = header(b);
+    doc["mc"] = samplesPerSecond(b);
+    const McFit fit = mcFit(b);
+    doc["mc_fit"] = fit.json;
+    const double cub = methodTimes(b, doc["mc"]["naive_ms"].get<double>(), fit, doc);
+    doc["cubature"] = cubatureAgainstMc(b, cub, fit);
+    doc["goals"] = goals(b);
+    doc["indirect"] = indirectTimes(b);
+    doc["specular"] = specularTimes(b);
     return doc;
 }
 

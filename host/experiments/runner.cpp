@@ -23,6 +23,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 
 namespace lb::experiments {
@@ -214,71 +215,87 @@ struct SceneRun {
     }
 };
 
-// The equal-time MCI partner of cell c, whose method took tM ms in its own
-// cell (DESIGN section 6): MC's N aimed on the measured t(N) (pts: the
-// scene's MC curve, else the experiment's equal_time_fit points timed here),
-// then timed against the method in alternating rounds. The record's extra
-// keys say how it was found (equal_time_candidates, _ratio, _ok, _bracketed).
-results::Record equalTimePartner(const SceneRun& sr, const Cell& c, double tM, std::vector<std::pair<long, double>> pts)
+// MC's SPEC of the experiment at N samples (N + extra: mc's fractional count).
+methods::MethodSpec mcAt(const Experiment& e, long n, double extra = 0)
 {
-    const Experiment& e = sr.e;
-    ocl::Runtime& rt = sr.rt;
-    const photometry::Table& table = sr.table;
-    const std::string target = c.parsed.canonical();
-    auto mcAt = [&](long n, double extra = 0) {
-        std::string s = e.mc + (e.mc.find(':') == std::string::npos ? ":" : ",") + "n=" + std::to_string(n);
-        if (extra > 0) s += fmt::format(",extra={:.3f}", extra);
-        return methods::parseSpec(s, e.kind());
-    };
-    if (pts.size() < 2) {
-        pts.clear();
-        for (long n : e.equalTimeFit) {
-            pts.emplace_back(n, sr.render(mcAt(n)).timing.median_ms);
-        }
-    }
-    // N on the measured t(N), then it and its neighbour on the
-    // method's side timed against the method in alternating
-    // rounds (DESIGN 6: ratios within one run), the ratio the
-    // median of the rounds' ratios. While the closest is off by
-    // more than the tolerance and not bracketed by a measured
-    // neighbour (three tries at most), aim again by the secant
-    // through the paired ratios.
-    Scene ts = sr.scene;
-    if (e.timeRes > 0) ts.res = e.timeRes;
-    methods::Prepared pm(rt, table, ts, c.parsed, sr.prec);
+    std::string s = e.mc + (e.mc.find(':') == std::string::npos ? ":" : ",") + "n=" + std::to_string(n);
+    if (extra > 0) s += fmt::format(",extra={:.3f}", extra);
+    return methods::parseSpec(s, e.kind());
+}
+
+// The Ns one try of the equal-time search times: the aimed N and its
+// neighbour towards the target on the curve pts (first try), or the aimed N
+// and both neighbours (later tries); none measured before, none below 1.
+std::vector<long> triesAround(long next, int attempt, const std::vector<std::pair<long, double>>& pts, double tM,
+                              const std::map<long, double>& measured)
+{
+    long n1 = std::max(1L, next);
+    std::vector<long> tries = {n1};
+    if (attempt == 0)
+        tries.push_back(interpolateMs(pts, n1) > tM ? n1 - 1 : n1 + 1);
+    else
+        tries.insert(tries.end(), {n1 - 1, n1 + 1});
+    std::vector<long> cand;
+    for (long n : tries)
+        if (n >= 1 && !measured.count(n) && std::find(cand.begin(), cand.end(), n) == cand.end()) cand.push_back(n);
+    return cand;
+}
+
+// The search for MC's N at the time of one method (DESIGN 6): candidates
+// timed against the method in alternating rounds, the ratio of each the
+// median of the rounds' ratios; the best is the closest to 1 in log.
+struct EqualTimeSearch {
+    const SceneRun& sr;
+    Scene ts;  // the scene at the experiment's time_res
+    methods::Prepared pm;  // the method
     std::map<long, std::unique_ptr<methods::Prepared>> prepared;  // MC by N, built once
     json candJson = json::array();
     long bestN = 0;
     double ratio = NAN;
     std::vector<ocl::Timing> bestT;  // (method, MC at bestN) of bestN's rounds
     std::map<long, double> measured;  // N -> median round ratio
-    long next = solveN(pts, tM);  // first aim: the curve
-    for (int attempt = 0; attempt < 3; ++attempt) {
-        // the aimed N and its neighbour towards the target on the
-        // curve; later tries: the aimed N and both neighbours
-        long n1 = std::max(1L, next);
-        std::vector<long> tries = {n1};
-        if (attempt == 0)
-            tries.push_back(interpolateMs(pts, n1) > tM ? n1 - 1 : n1 + 1);
-        else
-            tries.insert(tries.end(), {n1 - 1, n1 + 1});
-        std::vector<long> cand;
-        for (long n : tries)
-            if (n >= 1 && !measured.count(n) && std::find(cand.begin(), cand.end(), n) == cand.end()) cand.push_back(n);
-        if (cand.empty()) break;
+    long partnerN = 0;  // the partner's N and extra (fractional)
+    double partnerExtra = 0;
+
+    EqualTimeSearch(const SceneRun& run, const Cell& c)
+        : sr(run), ts(timeScene(run)), pm(run.rt, run.table, ts, c.parsed, run.prec)
+    {
+    }
+    static Scene timeScene(const SceneRun& run)
+    {
+        Scene s = run.scene;
+        if (run.e.timeRes > 0) s.res = run.e.timeRes;
+        return s;
+    }
+
+    // The method and each of mcs launched in alternation (DESIGN 6: ratios within one run).
+    std::vector<ocl::Timing> pairedRounds(const std::vector<methods::Prepared*>& mcs)
+    {
         std::vector<std::function<cl::Event()>> launches = {[&] { return pm.launch(0, ts.res); }};
+        for (methods::Prepared* p : mcs) launches.push_back([p, this] { return p->launch(0, ts.res); });
+        return sr.rt.timeInterleaved(launches, std::max(1, sr.e.reps), 1);
+    }
+    // The median of the rounds' ratios of MC k (1-based in tt) over the method.
+    static double medianRatio(const std::vector<ocl::Timing>& tt, size_t k)
+    {
+        std::vector<double> rr;
+        for (size_t ri = 0; ri < tt[0].samples_ms.size(); ++ri)
+            rr.push_back(tt[k].samples_ms[ri] / tt[0].samples_ms[ri]);
+        return ocl::summarize(rr).median_ms;
+    }
+
+    // Times the candidates against the method in one set of alternating rounds.
+    void time(const std::vector<long>& cand)
+    {
+        std::vector<methods::Prepared*> mcs;
         for (long n : cand) {
             auto& p = prepared[n];
-            if (!p) p = std::make_unique<methods::Prepared>(rt, table, ts, mcAt(n), sr.prec);
-            methods::Prepared* pp = p.get();
-            launches.push_back([pp, &ts] { return pp->launch(0, ts.res); });
+            if (!p) p = std::make_unique<methods::Prepared>(sr.rt, sr.table, ts, mcAt(sr.e, n), sr.prec);
+            mcs.push_back(p.get());
         }
-        std::vector<ocl::Timing> tt = rt.timeInterleaved(launches, std::max(1, e.reps), 1);
+        std::vector<ocl::Timing> tt = pairedRounds(mcs);
         for (size_t k = 0; k < cand.size(); ++k) {
-            std::vector<double> rr;
-            for (size_t ri = 0; ri < tt[0].samples_ms.size(); ++ri)
-                rr.push_back(tt[k + 1].samples_ms[ri] / tt[0].samples_ms[ri]);
-            double q = ocl::summarize(rr).median_ms;  // median of the rounds' ratios
+            double q = medianRatio(tt, k + 1);
             measured[cand[k]] = q;
             candJson.push_back({{"n", cand[k]}, {"ratio", q}, {"ms", tt[k + 1].median_ms}});
             if (bestN == 0 || std::fabs(std::log(q)) < std::fabs(std::log(ratio))) {
@@ -287,10 +304,13 @@ results::Record equalTimePartner(const SceneRun& sr, const Cell& c, double tM, s
                 bestT = {tt[0], tt[k + 1]};
             }
         }
-        if (std::abs(ratio - 1) <= e.equalTimeTolerance) break;
-        // aim again on the paired ratios themselves: the secant
-        // through the measured points nearest below and above 1
-        // (or the two nearest to 1 when all lie on one side)
+    }
+
+    // The next aim on the paired ratios themselves: the secant through the
+    // measured points nearest below and above 1 (or the two nearest to 1 when
+    // all lie on one side); none when those below and above are adjacent Ns.
+    std::optional<long> secantAim() const
+    {
         std::vector<std::pair<long, double>> m(measured.begin(), measured.end());
         std::sort(m.begin(), m.end(),
                   [](auto x, auto y) { return std::fabs(std::log(x.second)) < std::fabs(std::log(y.second)); });
@@ -298,41 +318,48 @@ results::Record equalTimePartner(const SceneRun& sr, const Cell& c, double tM, s
         auto hi = std::find_if(m.begin(), m.end(), [](auto x) { return x.second >= 1; });
         std::pair<long, double> p0 = m[0], p1 = m.size() > 1 ? m[1] : m[0];
         if (lo != m.end() && hi != m.end()) p0 = *lo, p1 = *hi;
-        if (lo != m.end() && hi != m.end() && std::abs(p0.first - p1.first) == 1) break;  // bracketed
+        if (lo != m.end() && hi != m.end() && std::abs(p0.first - p1.first) == 1) return std::nullopt;  // bracketed
         double slope = p1.first != p0.first ? (p1.second - p0.second) / double(p1.first - p0.first) : 0;
-        next = slope > 0 ? std::lround(double(p0.first) + (1 - p0.second) / slope)
-                         : std::lround(double(p0.first) / p0.second);  // t proportional to N
-        next = std::clamp(next, 1L, 1L << 20);
+        long next = slope > 0 ? std::lround(double(p0.first) + (1 - p0.second) / slope)
+                              : std::lround(double(p0.first) / p0.second);  // t proportional to N
+        return std::clamp(next, 1L, 1L << 20);
     }
-    // Bracketed: the neighbour of N_eq on the other side of 1 was
-    // measured too (or N_eq = 1 is too slow already), so no integer
-    // N matches the method more closely on this device.
-    bool bracketed = ratio >= 1 ? (bestN == 1 || (measured.count(bestN - 1) && measured[bestN - 1] < 1))
-                                : (measured.count(bestN + 1) && measured[bestN + 1] >= 1);
-    // No integer N within the tolerance, but N and N + 1 bracket the
-    // method: MC's fractional sample count (mc's `extra`, kernels/mc.cl: that
-    // share of the tiles takes N + 1 points; time is linear in it) closes the
-    // step. Aimed by linear interpolation between the paired ratios of N and
-    // N + 1, then by the secant through the nearest measured pair; two tries.
-    long n1 = bestN;
-    double extra = 0;
-    long lo = ratio >= 1 ? bestN - 1 : bestN;
-    if (std::abs(ratio - 1) > e.equalTimeTolerance && bracketed && lo >= 1 && measured.count(lo) &&
-        measured.count(lo + 1) && mcAt(lo).has("extra")) {
-        double f0 = 0, q0 = measured[lo], f1 = 1, q1 = measured[lo + 1];
+
+    // Bracketed: the neighbour of N_eq on the other side of 1 was measured
+    // too (or N_eq = 1 is too slow already), so no integer N matches the
+    // method more closely on this device.
+    bool bracketed() const
+    {
+        auto at = [&](long n) { return measured.count(n) ? std::optional<double>(measured.at(n)) : std::nullopt; };
+        return ratio >= 1 ? (bestN == 1 || (at(bestN - 1) && *at(bestN - 1) < 1))
+                          : (at(bestN + 1) && *at(bestN + 1) >= 1);
+    }
+
+    // No integer N within the tolerance, but N and N + 1 bracket the method:
+    // MC's fractional sample count (mc's `extra`, kernels/mc.cl: that share of
+    // the tiles takes N + 1 points; time is linear in it) closes the step.
+    // Aimed by linear interpolation between the paired ratios of N and N + 1,
+    // then by the secant through the nearest measured pair; two tries. Sets
+    // partnerN and partnerExtra (bestN and 0 unless a fraction is closer).
+    void fractional(bool bracketedN)
+    {
+        const Experiment& e = sr.e;
+        partnerN = bestN;
+        partnerExtra = 0;
+        long lo = ratio >= 1 ? bestN - 1 : bestN;
+        if (!(std::abs(ratio - 1) > e.equalTimeTolerance && bracketedN && lo >= 1 && measured.count(lo) &&
+              measured.count(lo + 1) && mcAt(e, lo).has("extra")))
+            return;
+        double f0 = 0, q0 = measured.at(lo), f1 = 1, q1 = measured.at(lo + 1);
         for (int attempt = 0; attempt < 2 && q1 > q0; ++attempt) {
             double f = std::round(1000 * std::clamp(f0 + (1 - q0) * (f1 - f0) / (q1 - q0), 0.001, 0.999)) / 1000;
-            methods::Prepared pf(rt, table, ts, mcAt(lo, f), sr.prec);
-            std::vector<ocl::Timing> tt = rt.timeInterleaved(
-                {[&] { return pm.launch(0, ts.res); }, [&] { return pf.launch(0, ts.res); }}, std::max(1, e.reps), 1);
-            std::vector<double> rr;
-            for (size_t ri = 0; ri < tt[0].samples_ms.size(); ++ri)
-                rr.push_back(tt[1].samples_ms[ri] / tt[0].samples_ms[ri]);
-            double q = ocl::summarize(rr).median_ms;
+            methods::Prepared pf(sr.rt, sr.table, ts, mcAt(e, lo, f), sr.prec);
+            std::vector<ocl::Timing> tt = pairedRounds({&pf});
+            double q = medianRatio(tt, 1);
             candJson.push_back({{"n", lo}, {"extra", f}, {"ratio", q}, {"ms", tt[1].median_ms}});
             if (std::fabs(std::log(q)) < std::fabs(std::log(ratio))) {
-                n1 = lo;
-                extra = f;
+                partnerN = lo;
+                partnerExtra = f;
                 ratio = q;
                 bestT = tt;
             }
@@ -341,222 +368,349 @@ results::Record equalTimePartner(const SceneRun& sr, const Cell& c, double tM, s
             (q < 1 ? q0 : q1) = q;
         }
     }
-    auto s1 = mcAt(n1, extra);
+};
+
+// The equal-time MCI partner of cell c, whose method took tM ms in its own
+// cell (DESIGN section 6): MC's N aimed on the measured t(N) (pts: the
+// scene's MC curve, else the experiment's equal_time_fit points timed here),
+// then timed against the method in alternating rounds; while the closest is
+// off by more than the tolerance and not bracketed by a measured neighbour
+// (three tries at most), aimed again by the secant through the paired
+// ratios. The record's extra keys say how it was found
+// (equal_time_candidates, _ratio, _ok, _bracketed).
+results::Record equalTimePartner(const SceneRun& sr, const Cell& c, double tM, std::vector<std::pair<long, double>> pts)
+{
+    const Experiment& e = sr.e;
+    if (pts.size() < 2) {
+        pts.clear();
+        for (long n : e.equalTimeFit) pts.emplace_back(n, sr.render(mcAt(e, n)).timing.median_ms);
+    }
+    EqualTimeSearch q(sr, c);
+    long next = solveN(pts, tM);  // first aim: the curve
+    for (int attempt = 0; attempt < 3; ++attempt) {
+        std::vector<long> cand = triesAround(next, attempt, pts, tM, q.measured);
+        if (cand.empty()) break;
+        q.time(cand);
+        if (std::abs(q.ratio - 1) <= e.equalTimeTolerance) break;
+        std::optional<long> aim = q.secantAim();
+        if (!aim) break;
+        next = *aim;
+    }
+    const bool bracketed = q.bracketed();  // of the integer N
+    q.fractional(bracketed);
     // the error image at the experiment's res (its time is the paired one above)
+    auto s1 = mcAt(e, q.partnerN, q.partnerExtra);
     methods::RenderOptions imageOnly;
     imageOnly.reps = 1;
-    auto r1 = methods::render(rt, table, sr.scene, s1, sr.prec, imageOnly);
-    r1.timing = bestT[1];
-    r1.timeRes = ts.res;
+    auto r1 = methods::render(sr.rt, sr.table, sr.scene, s1, sr.prec, imageOnly);
+    r1.timing = q.bestT[1];
+    r1.timeRes = q.ts.res;
     json fitJson = json::array();
     for (auto [n, t] : pts) fitJson.push_back({n, t});
     results::Record r = sr.record(s1, r1, c, cellImageName(c.role, c.spec));
-    r.equal_time_to = target;
-    r.n = n1;
-    r.extra["equal_time_n"] = double(n1) + extra;  // N + extra: MC's mean sample count
-    r.extra["equal_time_candidates"] = candJson;
+    r.equal_time_to = c.parsed.canonical();
+    r.n = q.partnerN;
+    r.extra["equal_time_n"] = double(q.partnerN) + q.partnerExtra;  // N + extra: MC's mean sample count
+    r.extra["equal_time_candidates"] = q.candJson;
     r.extra["equal_time_cell_ms"] = tM;  // the method's own cell, timed apart
     r.extra["equal_time_label"] = c.spec;
-    r.extra["equal_time_target_ms"] = bestT[0].median_ms;  // the method, in the paired rounds
-    r.extra["equal_time_ratio"] = ratio;
-    r.extra["equal_time_ok"] = std::abs(ratio - 1) <= e.equalTimeTolerance;
+    r.extra["equal_time_target_ms"] = q.bestT[0].median_ms;  // the method, in the paired rounds
+    r.extra["equal_time_ratio"] = q.ratio;
+    r.extra["equal_time_ok"] = std::abs(q.ratio - 1) <= e.equalTimeTolerance;
     r.extra["equal_time_bracketed"] = bracketed;
     r.extra["equal_time_fit"] = fitJson;
     return r;
 }
 
-}  // namespace
+// The cells a resumed run finds in results.json, by cell key (an equal-time
+// partner, whose N was chosen at run time, by scene, device and the SPEC it
+// matches): the inputs they were computed from and their median times.
+struct DoneCells {
+    std::map<std::string, json> inputs;
+    std::map<std::string, double> times;  // median ms (equal-time targets)
 
-RunSummary run(const Experiment& e, const RunOptions& opt)
-{
-    RunSummary sum;
-    auto t0 = Clock::now();
-    fs::create_directories(opt.outDir);
-    const std::string resultsPath = (fs::path(opt.outDir) / "results.json").string();
-
-    ocl::Runtime rt(opt.device);
-    json context = results::makeContext(rt.info().name, rt.info().driver,
-                                        {{"platform", rt.info().platform},
-                                         {"experiment", e.name},
-                                         {"experiment_file", e.path},
-                                         {"experiment_spec", e.raw},
-                                         {"luminaire_dir", e.luminaireDir},
-                                         {"res", e.res},
-                                         {"reps", e.reps},
-                                         {"time_res", e.timeRes},
-                                         {"equal_time_tolerance", e.equalTimeTolerance},
-                                         {"shard", fmt::format("{}/{}", opt.shardK, opt.shardN)}});
-
-    // Resume: the cells already written, by cell key (an equal-time partner,
-    // whose N was chosen at run time, by scene, device and the SPEC it
-    // matches), with the inputs they were computed from. A cell is done
-    // only when its inputs are this run's; otherwise it is recomputed and
-    // its record replaced.
-    util::removeStaleTemporaries(opt.outDir);  // left by a killed run
-    std::map<std::string, json> doneInputs;  // key -> inputs
-    std::map<std::string, double> doneTimes;  // key -> median ms (equal-time targets)
-    if (results::exists(resultsPath)) {
+    static DoneCells load(const std::string& resultsPath)
+    {
+        DoneCells d;
+        if (!results::exists(resultsPath)) return d;
         for (const auto& r : results::load(resultsPath).records) {
-            doneInputs[r.key()] = r.inputs;
-            doneTimes[r.key()] = r.time_ms.median;
+            d.inputs[r.key()] = r.inputs;
+            d.times[r.key()] = r.time_ms.median;
         }
+        return d;
+    }
+};
+
+// What every record depends on besides its cell key (results.h, runner.h):
+// the digests of the kernels and luminaires, each computed once per run.
+class CellInputs {
+public:
+    CellInputs(const Experiment& e, const methods::MethodSpec& refSpec) : e_(e), refSpec_(refSpec) {}
+
+    json of(const SceneId& sid, const Cell& c)
+    {
+        json in = {{"size", {sid.width, sid.length}},
+                   {"extent", sid.extent},
+                   {"luminaire_digest", luminaire(sid.luminaire)},
+                   {"reference", refSpec_.canonical()},
+                   {"reference_kernel", kernel(refSpec_.name)},
+                   {"reps", e_.reps},
+                   {"time_res", e_.timeRes},
+                   {"metrics", kMetricSet}};
+        if (c.role == "equal_time") {
+            in["kernel"] = kernel("mc");
+            in["target_kernel"] = kernel(c.parsed.name);
+            in["mc"] = methods::parseSpec(e_.mc, e_.kind()).canonical();
+            in["equal_time_tolerance"] = e_.equalTimeTolerance;
+        } else {
+            in["kernel"] = kernel(c.parsed.name);
+        }
+        return in;
     }
 
-    // What every record depends on besides its cell key (results.h).
-    std::map<std::string, std::string> kernelDigests;  // kernel file -> digest of it and its headers
-    auto kernelDigest = [&](const std::string& method) {
-        const std::string& file = methods::family(method, e.kind()).file;
-        auto it = kernelDigests.find(file);
-        if (it == kernelDigests.end()) it = kernelDigests.emplace(file, ocl::kernelSourceDigest(file)).first;
+private:
+    const std::string& kernel(const std::string& method)
+    {
+        const std::string& file = methods::family(method, e_.kind()).file;
+        auto it = kernels_.find(file);
+        if (it == kernels_.end()) it = kernels_.emplace(file, ocl::kernelSourceDigest(file)).first;
         return it->second;
-    };
-    std::map<std::string, std::string> lumDigests;  // luminaire path -> digest of its bytes
+    }
+    const std::string& luminaire(const std::string& path)
+    {
+        auto it = luminaires_.find(path);
+        if (it == luminaires_.end()) it = luminaires_.emplace(path, luminaireDigest(path)).first;
+        return it->second;
+    }
 
-    std::vector<Cell> cells = cellsOf(e);
-    std::vector<SceneId> mine;
-    for (const auto& s : scenes(e))
-        if (inShard(s, opt.shardK, opt.shardN)) mine.push_back(s);
-    sum.scenes = mine.size();
-    sum.cells = mine.size() * cells.size();
+    const Experiment& e_;
+    const methods::MethodSpec& refSpec_;
+    std::map<std::string, std::string> kernels_;  // kernel file -> digest of it and its headers
+    std::map<std::string, std::string> luminaires_;  // luminaire path -> digest of its bytes
+};
 
-    std::map<std::string, photometry::Table> tables;
-    const methods::MethodSpec refSpec = methods::parseSpec(e.reference, e.kind());
-    size_t cellsSeen = 0;
-    double computeSeconds = 0;
+// The key of a cell's record (results.h Record::key).
+std::string cellKey(const SceneId& sid, ocl::Runtime& rt, const Cell& c)
+{
+    results::Record r = baseRecord(sid, rt);
+    if (c.role == "equal_time") {
+        r.method = "mc";
+        r.equal_time_to = c.parsed.canonical();
+    } else {
+        r.method = c.parsed.name;
+        r.params = c.parsed.paramsJson();
+    }
+    return r.key();
+}
 
-    for (size_t si = 0; si < mine.size(); ++si) {
-        const SceneId& sid = mine[si];
+// Which of a scene's cells are to be computed: those not done, and those
+// done with other inputs (stale; `changed` names the inputs that differ).
+struct ScenePlan {
+    std::vector<bool> todo;
+    std::vector<json> inputs;
+    std::set<std::string> changed;
+    size_t ntodo = 0, nstale = 0;
+};
 
-        // Keys and inputs of this scene's cells, to skip the scene without a reference render.
-        auto keyOf = [&](const Cell& c) {
-            results::Record r = baseRecord(sid, rt);
-            if (c.role == "equal_time") {
-                r.method = "mc";
-                r.equal_time_to = c.parsed.canonical();
-            } else {
-                r.method = c.parsed.name;
-                r.params = c.parsed.paramsJson();
-            }
-            return r.key();
-        };
-        if (!lumDigests.count(sid.luminaire)) lumDigests[sid.luminaire] = luminaireDigest(sid.luminaire);
-        auto inputsOf = [&](const Cell& c) {
-            json in = {{"size", {sid.width, sid.length}},
-                       {"extent", sid.extent},
-                       {"luminaire_digest", lumDigests[sid.luminaire]},
-                       {"reference", refSpec.canonical()},
-                       {"reference_kernel", kernelDigest(refSpec.name)},
-                       {"reps", e.reps},
-                       {"time_res", e.timeRes},
-                       {"metrics", kMetricSet}};
-            if (c.role == "equal_time") {
-                in["kernel"] = kernelDigest("mc");
-                in["target_kernel"] = kernelDigest(c.parsed.name);
-                in["mc"] = methods::parseSpec(e.mc, e.kind()).canonical();
-                in["equal_time_tolerance"] = e.equalTimeTolerance;
-            } else {
-                in["kernel"] = kernelDigest(c.parsed.name);
-            }
-            return in;
-        };
-        std::vector<bool> todo(cells.size());
-        std::vector<json> cellInputs(cells.size());
-        std::set<std::string> changed;  // why done cells are recomputed
-        size_t ntodo = 0, nstale = 0;
-        for (size_t i = 0; i < cells.size(); ++i) {
-            cellInputs[i] = inputsOf(cells[i]);
-            auto it = doneInputs.find(keyOf(cells[i]));
-            todo[i] = it == doneInputs.end() || it->second != cellInputs[i];
-            if (it != doneInputs.end() && todo[i]) {
-                ++nstale;
-                changed.insert(changedInputs(it->second, cellInputs[i]));
-            }
-            ntodo += todo[i];
+ScenePlan planScene(const SceneId& sid, const std::vector<Cell>& cells, const DoneCells& done, CellInputs& inputs,
+                    ocl::Runtime& rt)
+{
+    ScenePlan p;
+    p.todo.resize(cells.size());
+    p.inputs.resize(cells.size());
+    for (size_t i = 0; i < cells.size(); ++i) {
+        p.inputs[i] = inputs.of(sid, cells[i]);
+        auto it = done.inputs.find(cellKey(sid, rt, cells[i]));
+        p.todo[i] = it == done.inputs.end() || it->second != p.inputs[i];
+        if (it != done.inputs.end() && p.todo[i]) {
+            ++p.nstale;
+            p.changed.insert(changedInputs(it->second, p.inputs[i]));
         }
-        sum.skipped += cells.size() - ntodo;
-        sum.stale += nstale;
-        cellsSeen += cells.size() - ntodo;
-        if (ntodo == 0) continue;
+        p.ntodo += p.todo[i];
+    }
+    return p;
+}
 
-        if (!tables.count(sid.luminaire)) tables.emplace(sid.luminaire, methods::loadLuminaire(sid.luminaire));
-        const photometry::Table& table = tables.at(sid.luminaire);
-        SceneRun sr{e,  sid, rt, table, opt, resultsPath, context, sid.scene(), methods::parsePrecision(sid.precision),
-                    {}, {}};
-        if (e.saveImages) {
-            sr.imageDir = (fs::path(opt.outDir) / "images" / sid.label()).string();
+// The medians of a scene's cells (this run or an earlier one), by canonical
+// SPEC, and the points of the experiment's MC pattern among them: the t(N)
+// curve the equal-time partners aim on.
+struct SceneTimes {
+    const Experiment& e;
+    std::map<std::string, double> times;
+    std::vector<std::pair<long, double>> curve;
+
+    void remember(const methods::MethodSpec& s, double ms)
+    {
+        times[s.canonical()] = ms;
+        if (s.name == "mc" && s.given.count("n")) {
+            // Only curve points of the experiment's MC pattern enter the fit.
+            methods::MethodSpec base = methods::parseSpec(e.mc, e.kind());
+            json pa = s.paramsJson(), pb = base.paramsJson();
+            pa.erase("n");
+            pb.erase("n");
+            if (pa == pb) curve.emplace_back(s.integer("n"), ms);
+        }
+    }
+};
+
+// The run of an experiment's shard, scene by scene (runner.h).
+class Runner {
+public:
+    Runner(const Experiment& e, const RunOptions& opt)
+        : e_(e), opt_(opt), resultsPath_(createdResultsPath(opt.outDir)), rt_(opt.device),
+          refSpec_(methods::parseSpec(e.reference, e.kind())), inputs_(e, refSpec_)
+    {
+    }
+
+    RunSummary run()
+    {
+        context_ = runContext();
+        util::removeStaleTemporaries(opt_.outDir);  // left by a killed run
+        done_ = DoneCells::load(resultsPath_);
+        cells_ = cellsOf(e_);
+        for (const auto& s : scenes(e_))
+            if (inShard(s, opt_.shardK, opt_.shardN)) mine_.push_back(s);
+        sum_.scenes = mine_.size();
+        sum_.cells = mine_.size() * cells_.size();
+        for (size_t si = 0; si < mine_.size(); ++si) runScene(si);
+        sum_.seconds = std::chrono::duration<double>(Clock::now() - t0_).count();
+        results::compact(resultsPath_, context_);  // the journal folded in: results.json holds every record
+        results::saveCsv(resultsPath_, results::load(resultsPath_));  // DIR/results.csv, the same records as a table
+        return sum_;
+    }
+
+private:
+    // DIR/results.json, DIR created first (before the device is opened).
+    static std::string createdResultsPath(const std::string& outDir)
+    {
+        fs::create_directories(outDir);
+        return (fs::path(outDir) / "results.json").string();
+    }
+
+    json runContext()
+    {
+        return results::makeContext(rt_.info().name, rt_.info().driver,
+                                    {{"platform", rt_.info().platform},
+                                     {"experiment", e_.name},
+                                     {"experiment_file", e_.path},
+                                     {"experiment_spec", e_.raw},
+                                     {"luminaire_dir", e_.luminaireDir},
+                                     {"res", e_.res},
+                                     {"reps", e_.reps},
+                                     {"time_res", e_.timeRes},
+                                     {"equal_time_tolerance", e_.equalTimeTolerance},
+                                     {"shard", fmt::format("{}/{}", opt_.shardK, opt_.shardN)}});
+    }
+
+    // A scene's cells still to do: its reference, then each cell in order.
+    void runScene(size_t si)
+    {
+        const SceneId& sid = mine_[si];
+        const ScenePlan plan = planScene(sid, cells_, done_, inputs_, rt_);
+        sum_.skipped += cells_.size() - plan.ntodo;
+        sum_.stale += plan.nstale;
+        cellsSeen_ += cells_.size() - plan.ntodo;
+        if (plan.ntodo == 0) return;  // no reference render for a scene that is done
+
+        if (!tables_.count(sid.luminaire)) tables_.emplace(sid.luminaire, methods::loadLuminaire(sid.luminaire));
+        SceneRun sr{e_,
+                    sid,
+                    rt_,
+                    tables_.at(sid.luminaire),
+                    opt_,
+                    resultsPath_,
+                    context_,
+                    sid.scene(),
+                    methods::parsePrecision(sid.precision),
+                    {},
+                    {}};
+        renderReference(sr);
+
+        SceneTimes st{e_, {}, {}};
+        for (size_t i = 0; i < cells_.size(); ++i)
+            if (cells_[i].role != "equal_time" && !plan.todo[i])
+                st.remember(cells_[i].parsed, done_.times[cellKey(sid, rt_, cells_[i])]);
+
+        for (size_t i = 0; i < cells_.size(); ++i) {
+            if (!plan.todo[i]) continue;
+            results::Record r = runCell(sr, cells_[i], st);
+            r.inputs = plan.inputs[i];
+            results::appendRecord(resultsPath_, context_, r);
+            ++sum_.computed;
+            ++cellsSeen_;
+        }
+        if (opt_.progress) progress(si, plan);
+    }
+
+    void renderReference(SceneRun& sr)
+    {
+        if (e_.saveImages) {
+            sr.imageDir = (fs::path(opt_.outDir) / "images" / sr.sid.label()).string();
             fs::create_directories(sr.imageDir);
         }
-        {
-            methods::RenderOptions ro;
-            ro.reps = 1;
-            sr.ref = methods::render(rt, table, sr.scene, refSpec, sr.prec, ro).image;
-            if (!sr.imageDir.empty()) writeExr((fs::path(sr.imageDir) / "reference.exr").string(), sr.ref);
-        }
-
-        // Medians of this scene's cells (this run or an earlier one), by canonical SPEC.
-        std::map<std::string, double> times;
-        std::vector<std::pair<long, double>> curve;
-        auto remember = [&](const methods::MethodSpec& s, double ms) {
-            times[s.canonical()] = ms;
-            if (s.name == "mc" && s.given.count("n")) {
-                // Only curve points of the experiment's MC pattern enter the fit.
-                methods::MethodSpec base = methods::parseSpec(e.mc, e.kind());
-                json pa = s.paramsJson(), pb = base.paramsJson();
-                pa.erase("n");
-                pb.erase("n");
-                if (pa == pb) curve.emplace_back(s.integer("n"), ms);
-            }
-        };
-        for (size_t i = 0; i < cells.size(); ++i)
-            if (cells[i].role != "equal_time" && !todo[i]) remember(cells[i].parsed, doneTimes[keyOf(cells[i])]);
-
-        for (size_t i = 0; i < cells.size(); ++i) {
-            if (!todo[i]) continue;
-            const Cell& c = cells[i];
-            auto tc = Clock::now();
-            if (c.role != "equal_time") {
-                auto rr = sr.render(c.parsed);
-                remember(c.parsed, rr.timing.median_ms);
-                results::Record r = sr.record(c.parsed, rr, c, cellImageName(c.role, c.spec));
-                r.inputs = cellInputs[i];
-                results::appendRecord(resultsPath, context, r);
-            } else {
-                // Equal-time MCI partner of c.spec (DESIGN section 6).
-                const std::string target = c.parsed.canonical();
-                if (!times.count(target))
-                    throw Error(fmt::format("equal time: no time of '{}' at scene {}", c.spec, sid.label()));
-                results::Record r = equalTimePartner(sr, c, times[target], curve);
-                r.inputs = cellInputs[i];
-                if (!r.extra["equal_time_ok"].get<bool>()) {
-                    ++sum.equalTimeOff;
-                    std::cerr << fmt::format("lumibench: warning: {}: MCI at equal time to {}: N = {}, {:.4g} ms vs "
-                                             "{:.4g} ms (ratio {:.3f}, outside +-{:.0f}%)\n",
-                                             sid.label(), c.spec, *r.n, r.time_ms.median,
-                                             r.extra["equal_time_target_ms"].get<double>(),
-                                             r.extra["equal_time_ratio"].get<double>(), 100 * e.equalTimeTolerance);
-                }
-                results::appendRecord(resultsPath, context, r);
-            }
-            ++sum.computed;
-            ++cellsSeen;
-            computeSeconds += std::chrono::duration<double>(Clock::now() - tc).count();
-        }
-        if (opt.progress) {
-            double elapsed = std::chrono::duration<double>(Clock::now() - t0).count();
-            size_t left = sum.cells - cellsSeen;
-            double eta = sum.computed ? elapsed / double(sum.computed) * double(left) : NAN;
-            std::cerr << fmt::format("[{}] cells {}/{} ({:.0f}%), scene {}/{} {}, elapsed {}, ETA {}{}\n", e.name,
-                                     cellsSeen, sum.cells, 100.0 * cellsSeen / std::max<size_t>(1, sum.cells), si + 1,
-                                     mine.size(), sid.label(), hms(elapsed), hms(eta),
-                                     nstale ? fmt::format("; recomputed {} cells whose inputs changed ({})", nstale,
-                                                          fmt::format("{}", fmt::join(changed, "; ")))
-                                            : std::string());
-        }
+        methods::RenderOptions ro;
+        ro.reps = 1;
+        sr.ref = methods::render(rt_, sr.table, sr.scene, refSpec_, sr.prec, ro).image;
+        if (!sr.imageDir.empty()) writeExr((fs::path(sr.imageDir) / "reference.exr").string(), sr.ref);
     }
-    sum.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
-    results::compact(resultsPath, context);  // the journal folded in: results.json holds every record
-    results::saveCsv(resultsPath, results::load(resultsPath));  // DIR/results.csv, the same records as a table
-    return sum;
-}
+
+    // One cell's record: the method (or curve point) rendered and compared,
+    // or the equal-time MCI partner of c.spec (DESIGN section 6).
+    results::Record runCell(const SceneRun& sr, const Cell& c, SceneTimes& st)
+    {
+        if (c.role != "equal_time") {
+            auto rr = sr.render(c.parsed);
+            st.remember(c.parsed, rr.timing.median_ms);
+            return sr.record(c.parsed, rr, c, cellImageName(c.role, c.spec));
+        }
+        const std::string target = c.parsed.canonical();
+        if (!st.times.count(target))
+            throw Error(fmt::format("equal time: no time of '{}' at scene {}", c.spec, sr.sid.label()));
+        results::Record r = equalTimePartner(sr, c, st.times[target], st.curve);
+        if (!r.extra["equal_time_ok"].get<bool>()) {
+            ++sum_.equalTimeOff;
+            std::cerr << fmt::format("lumibench: warning: {}: MCI at equal time to {}: N = {}, {:.4g} ms vs "
+                                     "{:.4g} ms (ratio {:.3f}, outside +-{:.0f}%)\n",
+                                     sr.sid.label(), c.spec, *r.n, r.time_ms.median,
+                                     r.extra["equal_time_target_ms"].get<double>(),
+                                     r.extra["equal_time_ratio"].get<double>(), 100 * e_.equalTimeTolerance);
+        }
+        return r;
+    }
+
+    // One line on stderr after each scene: cells done, elapsed, ETA.
+    void progress(size_t si, const ScenePlan& plan) const
+    {
+        double elapsed = std::chrono::duration<double>(Clock::now() - t0_).count();
+        size_t left = sum_.cells - cellsSeen_;
+        double eta = sum_.computed ? elapsed / double(sum_.computed) * double(left) : NAN;
+        std::cerr << fmt::format("[{}] cells {}/{} ({:.0f}%), scene {}/{} {}, elapsed {}, ETA {}{}\n", e_.name,
+                                 cellsSeen_, sum_.cells, 100.0 * cellsSeen_ / std::max<size_t>(1, sum_.cells), si + 1,
+                                 mine_.size(), mine_[si].label(), hms(elapsed), hms(eta),
+                                 plan.nstale
+                                     ? fmt::format("; recomputed {} cells whose inputs changed ({})", plan.nstale,
+                                                   fmt::format("{}", fmt::join(plan.changed, "; ")))
+                                     : std::string());
+    }
+
+    const Experiment& e_;
+    const RunOptions& opt_;
+    const Clock::time_point t0_ = Clock::now();
+    const std::string resultsPath_;
+    ocl::Runtime rt_;
+    const methods::MethodSpec refSpec_;
+    CellInputs inputs_;
+    json context_;
+    DoneCells done_;
+    std::vector<Cell> cells_;
+    std::vector<SceneId> mine_;
+    std::map<std::string, photometry::Table> tables_;
+    RunSummary sum_;
+    size_t cellsSeen_ = 0;
+};
+
+}  // namespace
+
+RunSummary run(const Experiment& e, const RunOptions& opt) { return Runner(e, opt).run(); }
 
 }  // namespace lb::experiments

@@ -72,10 +72,20 @@ Table readIes(const TextFile& f, IesExtra* extraOut)
     }
 }
 
-static Table readIesBody(const TextFile& f, IesExtra* extraOut)
+namespace {
+
+// The numbers after the TILT data: the counts, types and sizes the table needs.
+struct IesCounts {
+    int nv = 0, nh = 0;
+    size_t countLine = 0;  // of Nv, where a count too large for the file is reported
+    int units = 2;  // 1 feet, 2 metres
+    double width = 0, length = 0;
+};
+
+// The version (line 1) and the TILT= line with its data; returns the cursor
+// at the numbers after them.
+TokenCursor readTilt(const TextFile& f, IesExtra& x)
 {
-    IesExtra x;
-    // Header: everything up to the TILT= line.
     size_t i = 0;
     if (!f.lines.empty()) {
         std::string first = trimmed(f.lines[0]);
@@ -87,9 +97,7 @@ static Table readIesBody(const TextFile& f, IesExtra* extraOut)
     std::string tiltLine = trimmed(f.lines[i]);
     auto eq = tiltLine.find('=');
     std::string tilt = eq == std::string::npos ? "" : trimmed(tiltLine.substr(eq + 1));
-    size_t tiltLineNo = i + 1;
-    ++i;
-    TokenCursor in(f, i, true, false);
+    TokenCursor in(f, i + 1, true, false);
     if (tilt == "NONE") {
         x.tilt = "NONE";
     } else if (tilt == "INCLUDE") {
@@ -105,84 +113,109 @@ static Table readIesBody(const TextFile& f, IesExtra* extraOut)
             if (x.tiltFactors[k] < 0) f.fail(l, "a TILT factor >= 0", fmt::format("{}", x.tiltFactors[k]));
         }
     } else {
-        f.fail(tiltLineNo, "TILT=NONE or TILT=INCLUDE (a TILT file is not supported)", quote(tiltLine));
+        f.fail(i + 1, "TILT=NONE or TILT=INCLUDE (a TILT file is not supported)", quote(tiltLine));
     }
+    return in;
+}
 
+// A number that must be > 0.
+double positive(TokenCursor& in, const TextFile& f, const std::string& what)
+{
+    size_t l = in.lineNo();
+    double v = in.number("the " + what);
+    if (!(v > 0)) f.fail(l, "a " + what + " > 0", fmt::format("{}", v));
+    return v;
+}
+
+// The two lines of numbers after the TILT data (lamps .. input watts).
+IesCounts readCounts(TokenCursor& in, const TextFile& f, IesExtra& x)
+{
+    IesCounts c;
     x.lamps = in.integer("the number of lamps", -1000000, 1000000);
     x.lampLumens = in.number("the lumens per lamp (-1 = absolute)");
+    x.multiplier = positive(in, f, "candela multiplier");
+    c.countLine = in.lineNo();
+    c.nv = in.integer("the number of vertical angles", 2, kMaxAngles);
+    c.nh = in.integer("the number of horizontal angles", 1, kMaxAngles);
     size_t l = in.lineNo();
-    x.multiplier = in.number("the candela multiplier");
-    if (!(x.multiplier > 0)) f.fail(l, "a candela multiplier > 0", fmt::format("{}", x.multiplier));
-    const size_t countLine = in.lineNo();
-    int nv = in.integer("the number of vertical angles", 2, kMaxAngles);
-    int nh = in.integer("the number of horizontal angles", 1, kMaxAngles);
-    l = in.lineNo();
     x.photometricType = in.integer("the photometric type (1 = C)", 1, 3);
     if (x.photometricType == 2)
         f.fail(l, "photometric type 1 (C); type B (2, floodlights) is not supported, convert it to type C", "2");
     if (x.photometricType == 3) f.fail(l, "photometric type 1 (C); type A (3) is not supported", "3");
-    int units = in.integer("the units type (1 feet, 2 metres)", 1, 2);
-    double w = in.number("the luminous width");
-    double len = in.number("the luminous length");
+    c.units = in.integer("the units type (1 feet, 2 metres)", 1, 2);
+    c.width = in.number("the luminous width");
+    c.length = in.number("the luminous length");
     in.number("the luminous height");
-    l = in.lineNo();
-    x.ballastFactor = in.number("the ballast factor");
-    if (!(x.ballastFactor > 0)) f.fail(l, "a ballast factor > 0", fmt::format("{}", x.ballastFactor));
-    l = in.lineNo();
-    x.ballastLampFactor = in.number("the ballast-lamp photometric factor");
-    if (!(x.ballastLampFactor > 0))
-        f.fail(l, "a ballast-lamp photometric factor > 0", fmt::format("{}", x.ballastLampFactor));
+    x.ballastFactor = positive(in, f, "ballast factor");
+    x.ballastLampFactor = positive(in, f, "ballast-lamp photometric factor");
     x.inputWatts = in.number("the input watts");
+    return c;
+}
 
-    std::vector<double> v(nv), h(nh);
-    for (int k = 0; k < nv; ++k) {
-        l = in.lineNo();
-        v[k] = in.number(fmt::format("vertical angle {} of {}", k + 1, nv));
-        if (k > 0 && !(v[k] > v[k - 1]))
-            f.fail(l, fmt::format("vertical angles ascending (after {})", v[k - 1]), fmt::format("{}", v[k]));
+// n angles, each ascending after the previous one.
+std::vector<double> ascending(TokenCursor& in, const TextFile& f, int n, const char* name)
+{
+    std::vector<double> a(n);
+    for (int k = 0; k < n; ++k) {
+        size_t l = in.lineNo();
+        a[k] = in.number(fmt::format("{} angle {} of {}", name, k + 1, n));
+        if (k > 0 && !(a[k] > a[k - 1]))
+            f.fail(l, fmt::format("{} angles ascending (after {})", name, a[k - 1]), fmt::format("{}", a[k]));
     }
-    if (!((v.front() == 0 || v.front() == 90) && (v.back() == 90 || v.back() == 180) && v.front() < v.back()))
-        f.fail(in.lastLine(), "vertical angles 0-90, 90-180 or 0-180", fmt::format("{}-{}", v.front(), v.back()));
-    for (int k = 0; k < nh; ++k) {
-        l = in.lineNo();
-        h[k] = in.number(fmt::format("horizontal angle {} of {}", k + 1, nh));
-        if (k > 0 && !(h[k] > h[k - 1]))
-            f.fail(l, fmt::format("horizontal angles ascending (after {})", h[k - 1]), fmt::format("{}", h[k]));
-    }
-    const size_t hLine = in.lastLine();
-    // Horizontal set -> symmetry.
-    int isym;
+    return a;
+}
+
+// The symmetry (Isym as EULUMDAT numbers it) of a set of horizontal angles.
+int symmetryOf(const std::vector<double>& h, const TextFile& f, size_t line)
+{
     double h0 = h.front(), h1 = h.back();
-    if (nh == 1 && h0 == 0)
-        isym = 1;
-    else if (h0 == 0 && h1 == 90)
-        isym = 4;
-    else if (h0 == 0 && h1 == 180)
-        isym = 2;
-    else if (h0 == 90 && h1 == 270)
-        isym = 3;
-    else if (h0 == 0 && h1 > 180 && h1 <= 360)
-        isym = 0;
-    else
-        f.fail(in.lastLine(), "horizontal angles {0}, 0-90, 0-180, 90-270, 0-360 or 0 to (180, 360)",
-               fmt::format("{}-{}", h0, h1));
+    if (h.size() == 1 && h0 == 0) return 1;
+    if (h0 == 0 && h1 == 90) return 4;
+    if (h0 == 0 && h1 == 180) return 2;
+    if (h0 == 90 && h1 == 270) return 3;
+    if (h0 == 0 && h1 > 180 && h1 <= 360) return 0;
+    f.fail(line, "horizontal angles {0}, 0-90, 0-180, 90-270, 0-360 or 0 to (180, 360)", fmt::format("{}-{}", h0, h1));
+}
 
-    const double scale = x.multiplier * x.ballastFactor * x.ballastLampFactor;
+// The Nh x Nv candela values (vertical fastest), times scale, then the end of the file.
+std::vector<std::vector<double>> readCandela(TokenCursor& in, const TextFile& f, const IesCounts& c,
+                                             const std::vector<double>& h, double scale)
+{
+    const int nv = c.nv, nh = c.nh;
     // Angles are at most kMaxAngles each; the Nh x Nv table is what could be
     // large, so its count is checked against the file before it is allocated.
-    in.requireRoom(double(nv) * nh, fmt::format("Nh x Nv = {} x {} candela values", nh, nv), countLine);
+    in.requireRoom(double(nv) * nh, fmt::format("Nh x Nv = {} x {} candela values", nh, nv), c.countLine);
     std::vector<std::vector<double>> planes(nh, std::vector<double>(nv));
     for (int p = 0; p < nh; ++p)
         for (int k = 0; k < nv; ++k) {
-            l = in.lineNo();
-            double c = in.number(fmt::format("candela {} of {} at horizontal angle {}", k + 1, nv, h[p]));
-            if (c < 0) f.fail(l, "a candela value >= 0", fmt::format("{}", c));
-            planes[p][k] = absoluteCandela(f, l, c, scale, "a candela value");
+            size_t l = in.lineNo();
+            double v = in.number(fmt::format("candela {} of {} at horizontal angle {}", k + 1, nv, h[p]));
+            if (v < 0) f.fail(l, "a candela value >= 0", fmt::format("{}", v));
+            planes[p][k] = absoluteCandela(f, l, v, scale, "a candela value");
         }
     if (!in.atEnd()) {
-        l = in.lineNo();
+        size_t l = in.lineNo();
         f.fail(l, fmt::format("the end of the file after the {} x {} candela values", nh, nv), quote(in.token("")));
     }
+    return planes;
+}
+
+}  // namespace
+
+static Table readIesBody(const TextFile& f, IesExtra* extraOut)
+{
+    IesExtra x;
+    TokenCursor in = readTilt(f, x);
+    const IesCounts c = readCounts(in, f, x);
+    std::vector<double> v = ascending(in, f, c.nv, "vertical");
+    if (!((v.front() == 0 || v.front() == 90) && (v.back() == 90 || v.back() == 180) && v.front() < v.back()))
+        f.fail(in.lastLine(), "vertical angles 0-90, 90-180 or 0-180", fmt::format("{}-{}", v.front(), v.back()));
+    std::vector<double> h = ascending(in, f, c.nh, "horizontal");
+    const size_t hLine = in.lastLine();
+    const int isym = symmetryOf(h, f, hLine);
+    const double scale = x.multiplier * x.ballastFactor * x.ballastLampFactor;
+    std::vector<std::vector<double>> planes = readCandela(in, f, c, h, scale);
+
     // A full set that stores 360 keeps its own 360 plane; one that stops short
     // gets 360 = 0 (unfold).
     Table t = unfold(isym, h, v, planes, fmt::format("{}:{}", f.path, hLine));
@@ -190,9 +223,9 @@ static Table readIesBody(const TextFile& f, IesExtra* extraOut)
     t.format = "ies";
     t.isym = isym;
     t.symmetry = symmetryName(isym);
-    const double toM = units == 1 ? 0.3048 : 1.0;
-    t.widthM = std::abs(w) * toM;  // LM-63-2019: negative = rounded shapes
-    t.lengthM = std::abs(len) * toM;
+    const double toM = c.units == 1 ? 0.3048 : 1.0;
+    t.widthM = std::abs(c.width) * toM;  // LM-63-2019: negative = rounded shapes
+    t.lengthM = std::abs(c.length) * toM;
     t.validate();
     if (extraOut) *extraOut = x;
     return t;

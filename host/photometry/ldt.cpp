@@ -27,31 +27,21 @@ namespace lb::photometry {
 
 Table readLdt(const std::string& path) { return readLdt(TextFile::read(path)); }
 
-Table readLdt(const TextFile& f)
+namespace {
+
+// Fields 1-26 and the lamp sets: what the table needs of them, and the lines
+// of the counts that later complaints point at.
+struct LdtHeader {
+    int isym = 0, nc = 0, ng = 0;
+    size_t isymLine = 0, ncLine = 0;
+    double lenMm = 0, widMm = 0;  // luminous area (fields 16, 17)
+    double lor = 0;  // light output ratio, %
+    double lampFlux = 0;  // total over the lamp sets, lm
+};
+
+// Field 26's lamp sets, then the 10 direct ratios: the total lamp flux.
+double readLampSets(LineCursor& in, const TextFile& f)
 {
-    LineCursor in(f);
-    in.text("a company line (line 1)");
-    in.integer("the type indicator Ityp", 0, 3);
-    size_t isymLine = in.lineNo();
-    int isym = in.integer("the symmetry indicator Isym", 0, 4);
-    size_t ncLine = in.lineNo();
-    int nc = in.integer("the number of C planes Nc", 0, kMaxAngles);
-    // Rotational files sometimes list no C angle at all (Nc = 0); others need one.
-    if (nc == 0 && isym != 1) f.fail(ncLine, "Nc >= 1 unless Isym = 1", "Nc = 0");
-    in.number("the C plane distance Dc");
-    int ng = in.integer("the number of gamma angles Ng", 2, kMaxAngles);
-    in.number("the gamma distance Dg");
-    for (int i = 8; i <= 12; ++i) in.text(fmt::format("text field {}", i));
-    for (int i = 13; i <= 15; ++i) in.number(fmt::format("a luminaire dimension in mm (field {})", i));
-    double lenMm = in.number("the length / diameter of the luminous area in mm (field 16)");
-    double widMm = in.number("the width of the luminous area in mm (field 17)");
-    for (int i = 18; i <= 21; ++i) in.number(fmt::format("a luminous area height in mm (field {})", i));
-    in.number("the downward flux fraction DFF in % (field 22)");
-    size_t lorLine = in.lineNo();
-    double lor = in.number("the light output ratio LOR in % (field 23)");
-    if (lor < 0) f.fail(lorLine, "a light output ratio >= 0", fmt::format("{}", lor));
-    in.number("the conversion factor (field 24)");
-    in.number("the tilt angle (field 25)");
     int sets = in.integer("the number of lamp sets n (field 26)", 1, 1000);
     double lampFlux = 0;
     for (int s = 0; s < sets; ++s) {
@@ -67,32 +57,65 @@ Table readLdt(const TextFile& f)
     }
     if (!(lampFlux > 0)) f.fail(in.lineNo() - 4, "a total lamp flux > 0 over all lamp sets", "0");
     for (int i = 0; i < 10; ++i) in.number(fmt::format("direct ratio {} of 10", i + 1));
+    return lampFlux;
+}
 
-    // Angles. Numeric blocks are read as tokens, so a file that puts several
-    // numbers on a line still reads; the usual layout is one per line.
-    TokenCursor tok(f, in.index(), false, true);
-    std::vector<double> cAll(static_cast<size_t>(nc)), gamma(static_cast<size_t>(ng));
-    for (int i = 0; i < nc; ++i) {
-        size_t l = tok.lineNo();
-        cAll[i] = tok.number(fmt::format("C angle {} of {}", i + 1, nc));
-        if (isym != 1) {
-            if (cAll[i] < 0 || cAll[i] >= 360) f.fail(l, "a C angle in [0, 360)", fmt::format("{}", cAll[i]));
-            if (i > 0 && !(cAll[i] > cAll[i - 1]))
-                f.fail(l, fmt::format("C angles ascending (after {})", cAll[i - 1]), fmt::format("{}", cAll[i]));
-        }
-    }
-    for (int i = 0; i < ng; ++i) {
-        size_t l = tok.lineNo();
-        gamma[i] = tok.number(fmt::format("gamma angle {} of {}", i + 1, ng));
-        if (gamma[i] < 0 || gamma[i] > 180) f.fail(l, "a gamma angle in [0, 180]", fmt::format("{}", gamma[i]));
-        if (i > 0 && !(gamma[i] > gamma[i - 1]))
-            f.fail(l, fmt::format("gamma angles ascending (after {})", gamma[i - 1]), fmt::format("{}", gamma[i]));
-    }
+LdtHeader readHeader(LineCursor& in, const TextFile& f)
+{
+    LdtHeader h;
+    in.text("a company line (line 1)");
+    in.integer("the type indicator Ityp", 0, 3);
+    h.isymLine = in.lineNo();
+    h.isym = in.integer("the symmetry indicator Isym", 0, 4);
+    h.ncLine = in.lineNo();
+    h.nc = in.integer("the number of C planes Nc", 0, kMaxAngles);
+    // Rotational files sometimes list no C angle at all (Nc = 0); others need one.
+    if (h.nc == 0 && h.isym != 1) f.fail(h.ncLine, "Nc >= 1 unless Isym = 1", "Nc = 0");
+    in.number("the C plane distance Dc");
+    h.ng = in.integer("the number of gamma angles Ng", 2, kMaxAngles);
+    in.number("the gamma distance Dg");
+    for (int i = 8; i <= 12; ++i) in.text(fmt::format("text field {}", i));
+    for (int i = 13; i <= 15; ++i) in.number(fmt::format("a luminaire dimension in mm (field {})", i));
+    h.lenMm = in.number("the length / diameter of the luminous area in mm (field 16)");
+    h.widMm = in.number("the width of the luminous area in mm (field 17)");
+    for (int i = 18; i <= 21; ++i) in.number(fmt::format("a luminous area height in mm (field {})", i));
+    in.number("the downward flux fraction DFF in % (field 22)");
+    size_t lorLine = in.lineNo();
+    h.lor = in.number("the light output ratio LOR in % (field 23)");
+    if (h.lor < 0) f.fail(lorLine, "a light output ratio >= 0", fmt::format("{}", h.lor));
+    in.number("the conversion factor (field 24)");
+    in.number("the tilt angle (field 25)");
+    h.lampFlux = readLampSets(in, f);
+    return h;
+}
 
-    // Which of the listed C angles carry data.
+// n angles, each ascending after the previous one and within [lo, hi]
+// (hiOpen: hi excluded); range and order unchecked when !check.
+std::vector<double> readAngles(TokenCursor& tok, const TextFile& f, int n, const char* name, double lo, double hi,
+                               bool hiOpen, bool check)
+{
+    std::vector<double> a(static_cast<size_t>(n));
+    for (int i = 0; i < n; ++i) {
+        size_t l = tok.lineNo();
+        a[i] = tok.number(fmt::format("{} angle {} of {}", name, i + 1, n));
+        if (!check) continue;
+        if (a[i] < lo || (hiOpen ? a[i] >= hi : a[i] > hi))
+            f.fail(l, fmt::format("a {} angle in [{}, {}{}", name, lo, hi, hiOpen ? ")" : "]"),
+                   fmt::format("{}", a[i]));
+        if (i > 0 && !(a[i] > a[i - 1]))
+            f.fail(l, fmt::format("{} angles ascending (after {})", name, a[i - 1]), fmt::format("{}", a[i]));
+    }
+    return a;
+}
+
+// The C angles of the stored planes Mc1..Mc2 (Isym: see the top of the file),
+// checked against the symmetry's first and last plane.
+std::vector<double> storedPlanes(const TextFile& f, const LdtHeader& h, const std::vector<double>& cAll)
+{
+    const int isym = h.isym, nc = h.nc;
     size_t first = 0, mc = static_cast<size_t>(nc);
     auto need = [&](bool ok, const std::string& what) {
-        if (!ok) f.fail(ncLine, what, fmt::format("Nc = {} with Isym = {}", nc, isym));
+        if (!ok) f.fail(h.ncLine, what, fmt::format("Nc = {} with Isym = {}", nc, isym));
     };
     switch (isym) {
     case 1:
@@ -102,12 +125,11 @@ Table readLdt(const TextFile& f)
         need(nc % 2 == 0, "an even Nc for Isym 2");
         mc = nc / 2 + 1;
         break;
-    case 3: {
+    case 3:
         need(nc % 4 == 0, "Nc divisible by 4 for Isym 3");
         mc = nc / 2 + 1;
         first = static_cast<size_t>(3 * nc / 4);  // C270, then on through C0 to C90
         break;
-    }
     case 4:
         need(nc % 4 == 0, "Nc divisible by 4 for Isym 4");
         mc = nc / 4 + 1;
@@ -123,18 +145,25 @@ Table readLdt(const TextFile& f)
     }
     const double firstC[] = {0, 0, 0, 270, 0}, lastC[] = {-1, 0, 180, 90, 90};
     if (isym == 3 && cStored.front() != firstC[isym])
-        f.fail(isymLine, fmt::format("stored planes starting at C = {} for Isym {}", firstC[isym], isym),
+        f.fail(h.isymLine, fmt::format("stored planes starting at C = {} for Isym {}", firstC[isym], isym),
                fmt::format("C = {}", cStored.front()));
     if (isym >= 2 && cStored.back() != lastC[isym])
-        f.fail(isymLine, fmt::format("stored planes ending at C = {} for Isym {}", lastC[isym], isym),
+        f.fail(h.isymLine, fmt::format("stored planes ending at C = {} for Isym {}", lastC[isym], isym),
                fmt::format("C = {}", cStored.back()));
     if ((isym == 0 || isym == 2 || isym == 4) && cAll[0] != 0)
-        f.fail(isymLine, "the first C angle 0", fmt::format("{}", cAll[0]));
+        f.fail(h.isymLine, "the first C angle 0", fmt::format("{}", cAll[0]));
+    return cStored;
+}
 
-    // Intensities, cd/klm -> absolute cd.
-    const double scale = lampFlux / 1000.0;
+// The Mc x Ng intensities, cd/klm -> absolute cd, then the end of the file.
+std::vector<std::vector<double>> readIntensities(TokenCursor& tok, const TextFile& f, const LdtHeader& h,
+                                                 const std::vector<double>& cStored)
+{
+    const size_t mc = cStored.size();
+    const int ng = h.ng;
+    const double scale = h.lampFlux / 1000.0;
     tok.requireRoom(double(mc) * ng,
-                    fmt::format("Mc x Ng = {} x {} intensities (Nc = {}, Isym = {})", mc, ng, nc, isym), ncLine);
+                    fmt::format("Mc x Ng = {} x {} intensities (Nc = {}, Isym = {})", mc, ng, h.nc, h.isym), h.ncLine);
     std::vector<std::vector<double>> planes(mc, std::vector<double>(static_cast<size_t>(ng)));
     for (size_t p = 0; p < mc; ++p)
         for (int i = 0; i < ng; ++i) {
@@ -147,23 +176,40 @@ Table readLdt(const TextFile& f)
         size_t l = tok.lineNo();
         f.fail(l,
                fmt::format("the end of the file after the {} x {} intensities (Mc x Ng for Nc = {}, Isym = {})", mc, ng,
-                           nc, isym),
+                           h.nc, h.isym),
                quote(tok.token("")));
     }
+    return planes;
+}
+
+}  // namespace
+
+Table readLdt(const TextFile& f)
+{
+    LineCursor in(f);
+    const LdtHeader h = readHeader(in, f);
+
+    // Angles. Numeric blocks are read as tokens, so a file that puts several
+    // numbers on a line still reads; the usual layout is one per line.
+    TokenCursor tok(f, in.index(), false, true);
+    std::vector<double> cAll = readAngles(tok, f, h.nc, "C", 0, 360, true, h.isym != 1);
+    std::vector<double> gamma = readAngles(tok, f, h.ng, "gamma", 0, 180, false, true);
+    std::vector<double> cStored = storedPlanes(f, h, cAll);
+    std::vector<std::vector<double>> planes = readIntensities(tok, f, h, cStored);
 
     // unfold() takes the C90-C270 half for Isym 3: plane C stands for its mirror
     // image 180 - C there (C270 -> 270, C0 -> 180, C90 -> 90).
     std::vector<double> cUnfold = cStored;
-    if (isym == 3)
+    if (h.isym == 3)
         for (double& c : cUnfold) c = c <= 90 ? 180 - c : 540 - c;
-    Table t = unfold(isym, cUnfold, gamma, planes, fmt::format("{}:{}", f.path, isymLine));
+    Table t = unfold(h.isym, cUnfold, gamma, planes, fmt::format("{}:{}", f.path, h.isymLine));
     t.source = f.path;
     t.format = "ldt";
-    t.isym = isym;
-    t.symmetry = symmetryName(isym);
-    t.declaredFluxLm = lampFlux * lor / 100.0;
-    t.lengthM = lenMm / 1000.0;
-    t.widthM = (widMm > 0 ? widMm : lenMm) / 1000.0;  // b1 = 0: circular, diameter = length
+    t.isym = h.isym;
+    t.symmetry = symmetryName(h.isym);
+    t.declaredFluxLm = h.lampFlux * h.lor / 100.0;
+    t.lengthM = h.lenMm / 1000.0;
+    t.widthM = (h.widMm > 0 ? h.widMm : h.lenMm) / 1000.0;  // b1 = 0: circular, diameter = length
     t.validate();
     return t;
 }
