@@ -5,6 +5,7 @@
 #include "util/check.h"
 #include "util/error.h"
 #include "util/fileio.h"
+#include "util/json_file.h"
 
 #include <fmt/format.h>
 
@@ -20,68 +21,6 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 namespace {
-
-// Errors name the file and the key.
-struct Reader {
-    std::string path;
-    const json& j;
-
-    std::string name(const std::string& key) const { return fmt::format("{}: key \"{}\"", path, key); }
-    [[noreturn]] void fail(const std::string& key, const std::string& what) const
-    {
-        throw InputError(fmt::format("{}: {}", name(key), what));
-    }
-    bool has(const std::string& key) const { return j.contains(key); }
-    const json& at(const std::string& key) const
-    {
-        if (!j.contains(key)) fail(key, "missing");
-        return j.at(key);
-    }
-    double number(const std::string& key, double lo, double hi) const
-    {
-        const json& v = at(key);
-        if (!v.is_number()) fail(key, fmt::format("expected a number, found {}", v.dump()));
-        return util::checkRange(name(key), v.get<double>(), lo, hi);
-    }
-    long integer(const std::string& key, long lo, long hi) const
-    {
-        const json& v = at(key);
-        if (!v.is_number_integer()) fail(key, fmt::format("expected an integer, found {}", v.dump()));
-        return util::checkRange(name(key), v.get<long>(), lo, hi);
-    }
-    std::string string(const std::string& key) const
-    {
-        const json& v = at(key);
-        if (!v.is_string()) fail(key, fmt::format("expected a string, found {}", v.dump()));
-        return v.get<std::string>();
-    }
-    // A list of strings. A bare string is an error (a typo for a list of one
-    // would otherwise pass silently), except `luminaires: "*"`, read by the caller.
-    std::vector<std::string> strings(const std::string& key, bool nonEmpty = true) const
-    {
-        const json& v = at(key);
-        std::vector<std::string> out;
-        if (!v.is_array()) fail(key, fmt::format("expected a list of strings like [\"a\", \"b\"], found {}", v.dump()));
-        for (const auto& x : v) {
-            if (!x.is_string()) fail(key, fmt::format("expected a list of strings, found element {}", x.dump()));
-            out.push_back(x.get<std::string>());
-        }
-        if (nonEmpty && out.empty()) fail(key, "expected a non-empty list");
-        return out;
-    }
-    std::vector<long> integers(const std::string& key, long lo, long hi) const
-    {
-        const json& v = at(key);
-        if (!v.is_array()) fail(key, fmt::format("expected a list of integers, found {}", v.dump()));
-        std::vector<long> out;
-        for (const auto& x : v) {
-            if (!x.is_number_integer() || x.get<long>() < lo || x.get<long>() > hi)
-                fail(key, fmt::format("expected integers in [{}, {}], found element {}", lo, hi, x.dump()));
-            out.push_back(x.get<long>());
-        }
-        return out;
-    }
-};
 
 const std::set<std::string> kKeys = {"name",
                                      "description",
@@ -137,77 +76,35 @@ std::vector<std::string> luminaireFiles(const std::string& dir, const std::strin
     return out;
 }
 
-std::string resolveDir(const std::string& dir)
+using Reader = util::JsonKeys;
+
+// Luminaires: --luminaires DIR takes every file there; otherwise the list
+// (or "*") relative to luminaire_dir.
+void readLuminaires(const Reader& r, const Overrides& ov, Experiment& e)
 {
-    fs::path p(dir);
-    if (p.is_absolute() || fs::exists(p)) return p.string();
-    return (fs::path(LB_SOURCE_DIR) / p).string();  // relative to the source tree
-}
-
-}  // namespace
-
-Experiment loadExperiment(const std::string& path, const Overrides& ov)
-{
-    // An experiment file is a few kB; 16 MiB leaves room for generated ones.
-    const std::string fileText = util::readFile(path, "an experiment file (JSON)", 16u << 20);
-    json j;
-    try {
-        j = json::parse(fileText);
-    } catch (const json::parse_error& e) {
-        throw InputError(fmt::format("{}: not valid JSON: {}", path, e.what()));
-    }
-    if (!j.is_object()) throw InputError(fmt::format("{}: expected a JSON object", path));
-    Reader r{path, j};
-    for (auto it = j.begin(); it != j.end(); ++it)
-        if (!kKeys.count(it.key()))
-            r.fail(it.key(),
-                   "unknown key (known: name, description, luminaire_dir, luminaires, heights, rotations, "
-                   "methods, equal_time, mci_curve, mc, equal_time_fit, reference, res, precision, size, "
-                   "extent, reps, equal_time_tolerance, save_images, time_res, scene, alpha, eye, albedo)");
-
-    Experiment e;
-    e.path = path;
-    e.raw = j;
-    e.name = r.has("name") ? r.string("name") : fs::path(path).stem().string();
-
-    // Luminaires: --luminaires DIR takes every file there; otherwise the list
-    // (or "*") relative to luminaire_dir.
-    e.luminaireDir = resolveDir(r.has("luminaire_dir") ? r.string("luminaire_dir") : "luminaires");
+    e.luminaireDir = util::resolveSourceDir(r.has("luminaire_dir") ? r.string("luminaire_dir") : "luminaires");
     if (!ov.luminaireDir.empty()) {
         e.luminaireDir = ov.luminaireDir;
         e.luminaires = luminaireFiles(ov.luminaireDir, "--luminaires");
-    } else {
-        auto names = j.contains("luminaires") && j["luminaires"] == "*" ? std::vector<std::string>{"*"}
-                                                                        : r.strings("luminaires");
-        if (names.size() == 1 && names[0] == "*") {
-            e.luminaires = luminaireFiles(e.luminaireDir, path + ": key \"luminaires\"");
-        } else {
-            for (const auto& n : names) {
-                fs::path p = fs::path(n).is_absolute() ? fs::path(n) : fs::path(e.luminaireDir) / n;
-                if (!fs::exists(p)) r.fail("luminaires", fmt::format("file '{}' not found", p.string()));
-                e.luminaires.push_back(p.string());
-            }
-        }
+        return;
     }
+    auto names =
+        r.has("luminaires") && r.j["luminaires"] == "*" ? std::vector<std::string>{"*"} : r.strings("luminaires");
+    if (names.size() == 1 && names[0] == "*") {
+        e.luminaires = luminaireFiles(e.luminaireDir, r.name("luminaires"));
+        return;
+    }
+    for (const auto& n : names) {
+        fs::path p = fs::path(n).is_absolute() ? fs::path(n) : fs::path(e.luminaireDir) / n;
+        if (!fs::exists(p)) r.fail("luminaires", fmt::format("file '{}' not found", p.string()));
+        e.luminaires.push_back(p.string());
+    }
+}
 
-    const json& hs = r.at("heights");
-    if (!hs.is_array() || hs.empty()) r.fail("heights", "expected a non-empty list of numbers");
-    for (const auto& h : hs) {
-        if (!h.is_number()) r.fail("heights", fmt::format("expected numbers, found element {}", h.dump()));
-        e.heights.push_back(util::checkRange(r.name("heights"), h.get<double>(), 0, kMaxSceneLength, "m"));
-    }
-    const json& rs = r.at("rotations");
-    if (!rs.is_array() || rs.empty()) r.fail("rotations", "expected a non-empty list");
-    for (const auto& x : rs) {
-        std::string text = x.is_string() ? x.get<std::string>() : x.dump();
-        if (!x.is_string() && !x.is_number())
-            r.fail("rotations", fmt::format("expected radians or an expression like 3pi/4, found {}", x.dump()));
-        e.rotations.push_back(util::parseAngle(r.name("rotations"), text));
-        e.rotationText.push_back(text);
-    }
-
-    e.sceneKeys = SceneKindKeys::read(j, path);
-    // Methods are checked against the registry now, not after an hour of references.
+// The methods, equal_time, mc, reference and the MCI curve, each checked
+// against the registry now, not after an hour of references.
+void readMethods(const Reader& r, Experiment& e)
+{
     auto checkSpec = [&](const std::string& key, const std::string& s) {
         try {
             return methods::parseSpec(s, e.kind());
@@ -235,7 +132,12 @@ Experiment loadExperiment(const std::string& path, const Overrides& ov)
     e.equalTimeFit = r.has("equal_time_fit") ? r.integers("equal_time_fit", 1, 1 << 20) : std::vector<long>{8, 32, 128};
     if (!e.equalTime.empty() && e.mciCurve.empty() && e.equalTimeFit.size() < 2)
         r.fail("equal_time_fit", "expected at least two sample counts to fit t(N)");
+}
 
+// res, precision, size, extent, reps, time_res, tolerance, save_images; the
+// command line's overrides last.
+void readSettings(const Reader& r, const Overrides& ov, Experiment& e)
+{
     if (r.has("res")) e.res = static_cast<int>(r.integer("res", 1, kMaxRes));
     if (ov.res) e.res = util::checkRange("--res", *ov.res, 1, kMaxRes);
     if (r.has("precision")) {
@@ -261,10 +163,28 @@ Experiment loadExperiment(const std::string& path, const Overrides& ov)
     if (r.has("time_res")) e.timeRes = static_cast<int>(r.integer("time_res", 0, kMaxRes));
     if (ov.timeRes) e.timeRes = util::checkRange("--time-res", *ov.timeRes, 0, kMaxRes);
     if (r.has("equal_time_tolerance")) e.equalTimeTolerance = r.number("equal_time_tolerance", 0.001, 10);
-    if (r.has("save_images")) {
-        if (!j["save_images"].is_boolean()) r.fail("save_images", "expected true or false");
-        e.saveImages = j["save_images"];
-    }
+    if (r.has("save_images")) e.saveImages = r.boolean("save_images");
+}
+
+}  // namespace
+
+Experiment loadExperiment(const std::string& path, const Overrides& ov)
+{
+    // An experiment file is a few kB; 16 MiB leaves room for generated ones.
+    const json j = util::readJsonObject(path, "an experiment file (JSON)", 16u << 20);
+    Reader r{path, j};
+    r.onlyKnown(kKeys);
+
+    Experiment e;
+    e.path = path;
+    e.raw = j;
+    e.name = r.has("name") ? r.string("name") : fs::path(path).stem().string();
+    readLuminaires(r, ov, e);
+    e.heights = r.numbers("heights", 0, kMaxSceneLength, "m");
+    e.rotations = r.angles("rotations", e.rotationText);
+    e.sceneKeys = SceneKindKeys::read(j, path);
+    readMethods(r, e);
+    readSettings(r, ov, e);
     return e;
 }
 

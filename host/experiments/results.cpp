@@ -2,6 +2,7 @@
 
 #include "util/error.h"
 #include "util/fileio.h"
+#include "util/json_file.h"
 
 #include <fmt/format.h>
 
@@ -255,13 +256,7 @@ namespace {
 Results loadDocument(const std::string& path)
 {
     // 1 GiB: a results file of a million records is ~1 GB; anything larger is not one.
-    const std::string text = util::readFile(path, "a results file (JSON)", size_t(1) << 30);
-    json j;
-    try {
-        j = json::parse(text);
-    } catch (const json::parse_error& e) {
-        throw InputError(fmt::format("{}: not a JSON document: {}", path, e.what()));
-    }
+    const json j = util::readJson(path, "a results file (JSON)", size_t(1) << 30);
     try {
         return j.get<Results>();
     } catch (const InputError& e) {

@@ -9,7 +9,7 @@
 #include "util/check.h"
 #include "util/error.h"
 #include "util/fileio.h"
-#include "util/fileio.h"
+#include "util/json_file.h"
 
 #include <fmt/format.h>
 #include <nlopt.hpp>
@@ -34,73 +34,24 @@ using nlohmann::json;
 
 namespace {
 
-[[noreturn]] void fail(const std::string& path, const std::string& key, const std::string& what)
-{
-    throw InputError(fmt::format("{}: key \"{}\": {}", path, key, what));
-}
+using Reader = util::JsonKeys;
 
-std::string resolveDir(const std::string& dir)
+// train / validation: {luminaires, heights, rotations}. Heights from
+// -kMaxSceneLength (a light through the receiver plane is a case to tune on).
+SceneSet sceneSet(const Reader& file, const std::string& key, const std::string& lumDir)
 {
-    fs::path p(dir);
-    if (p.is_absolute() || fs::exists(p)) return p.string();
-    return (fs::path(LB_SOURCE_DIR) / p).string();  // relative to the source tree
-}
-
-std::string keyName(const std::string& path, const std::string& key)
-{
-    return fmt::format("{}: key \"{}\"", path, key);
-}
-
-// Lengths in metres, each in [lo, kMaxSceneLength]: sizes from 0, heights
-// from -kMaxSceneLength (a light through the receiver plane is a case to tune on).
-std::vector<double> lengths(const std::string& path, const std::string& key, const json& v, double lo)
-{
-    if (!v.is_array() || v.empty()) fail(path, key, "expected a non-empty list of numbers");
-    std::vector<double> out;
-    for (const auto& x : v) {
-        if (!x.is_number()) fail(path, key, fmt::format("expected numbers, found element {}", x.dump()));
-        out.push_back(util::checkRange(keyName(path, key), x.get<double>(), lo, kMaxSceneLength, "m"));
-    }
-    return out;
-}
-
-// A list of strings; a bare string is an error naming the key.
-std::vector<std::string> strings(const std::string& path, const std::string& key, const json& v)
-{
-    std::vector<std::string> out;
-    if (!v.is_array())
-        fail(path, key, fmt::format("expected a list of strings like [\"a\", \"b\"], found {}", v.dump()));
-    for (const auto& x : v) {
-        if (!x.is_string()) fail(path, key, fmt::format("expected strings, found element {}", x.dump()));
-        out.push_back(x.get<std::string>());
-    }
-    if (out.empty()) fail(path, key, "expected a non-empty list");
-    return out;
-}
-
-SceneSet sceneSet(const std::string& path, const std::string& key, const json& j, const std::string& lumDir)
-{
-    if (!j.is_object()) fail(path, key, "expected an object with luminaires, heights, rotations");
-    static const std::set<std::string> keys = {"luminaires", "heights", "rotations"};
-    for (auto it = j.begin(); it != j.end(); ++it)
-        if (!keys.count(it.key()))
-            fail(path, key + "." + it.key(), "unknown key (known: luminaires, heights, rotations)");
-    for (const auto& k : keys)
-        if (!j.contains(k)) fail(path, key + "." + k, "missing");
+    const json& j = file.at(key);
+    if (!j.is_object()) file.fail(key, "expected an object with luminaires, heights, rotations");
+    Reader r{file.path, j, key + "."};
+    r.onlyKnown({"luminaires", "heights", "rotations"});
     SceneSet s;
-    for (const auto& n : strings(path, key + ".luminaires", j["luminaires"])) {
+    for (const auto& n : r.strings("luminaires")) {
         fs::path p = fs::path(n).is_absolute() ? fs::path(n) : fs::path(lumDir) / n;
-        if (!fs::exists(p)) fail(path, key + ".luminaires", fmt::format("file '{}' not found", p.string()));
+        if (!fs::exists(p)) r.fail("luminaires", fmt::format("file '{}' not found", p.string()));
         s.luminaires.push_back(p.string());
     }
-    s.heights = lengths(path, key + ".heights", j["heights"], -kMaxSceneLength);
-    const json& rs = j["rotations"];
-    if (!rs.is_array() || rs.empty()) fail(path, key + ".rotations", "expected a non-empty list");
-    for (const auto& x : rs) {
-        std::string text = x.is_string() ? x.get<std::string>() : x.dump();
-        s.rotations.push_back(util::parseAngle(keyName(path, key + ".rotations"), text));
-        s.rotationText.push_back(text);
-    }
+    s.heights = r.numbers("heights", -kMaxSceneLength, kMaxSceneLength, "m");
+    s.rotations = r.angles("rotations", s.rotationText);
     return s;
 }
 
@@ -134,129 +85,130 @@ double Dim::toUnit(double v) const
     return std::clamp(u, 0.0, 1.0);
 }
 
-TuneExperiment loadTuneExperiment(const std::string& path)
-{
-    // A tune file is a few kB; 16 MiB leaves room for generated ones.
-    const std::string text = util::readFile(path, "a tune experiment file (JSON)", 16u << 20);
-    json j;
-    try {
-        j = json::parse(text);
-    } catch (const json::parse_error& err) {
-        throw InputError(fmt::format("{}: not valid JSON: {}", path, err.what()));
-    }
-    if (!j.is_object()) throw InputError(fmt::format("{}: expected a JSON object", path));
-    static const std::set<std::string> keys = {
-        "name",           "description", "method",  "params",     "reference", "luminaire_dir", "res",    "precision",
-        "size",           "extent",      "train",   "validation", "objective", "algorithm",     "metric", "global",
-        "global_maxeval", "maxeval",     "maxtime", "seed",       "scene",     "alpha",         "eye",    "albedo"};
-    for (auto it = j.begin(); it != j.end(); ++it)
-        if (!keys.count(it.key())) fail(path, it.key(), fmt::format("unknown key (known: {})", fmt::join(keys, ", ")));
+namespace {
 
-    TuneExperiment e;
-    e.path = path;
-    e.raw = j;
-    auto str = [&](const std::string& k) {
-        if (!j[k].is_string()) fail(path, k, fmt::format("expected a string, found {}", j[k].dump()));
-        return j[k].get<std::string>();
-    };
-    auto integer = [&](const std::string& k, long lo, long hi) {
-        if (!j[k].is_number_integer()) fail(path, k, fmt::format("expected an integer, found {}", j[k].dump()));
-        return util::checkRange(keyName(path, k), j[k].get<long>(), lo, hi);
-    };
-    auto number = [&](const std::string& k, double lo, double hi) {
-        if (!j[k].is_number()) fail(path, k, fmt::format("expected a number, found {}", j[k].dump()));
-        return util::checkRange(keyName(path, k), j[k].get<double>(), lo, hi);
-    };
-    e.name = j.contains("name") ? str("name") : fs::path(path).stem().string();
-    if (!j.contains("method")) fail(path, "method", "missing (a SPEC, e.g. \"cubature:triangulation=fan\")");
-    e.method = str("method");
-    e.sceneKeys = SceneKindKeys::read(j, path);
+// "method", "params" (the searched parameters: every tunable numeric one the
+// method does not set, unless listed) and "reference".
+void readSearch(const Reader& r, TuneExperiment& e)
+{
+    if (!r.has("method")) r.fail("method", "missing (a SPEC, e.g. \"cubature:triangulation=fan\")");
+    e.method = r.string("method");
     const SceneKind kind = e.sceneKeys.kind;
     methods::MethodSpec base;
     try {
         base = methods::parseSpec(e.method, kind);
     } catch (const InputError& err) {
-        fail(path, "method", err.what());
+        r.fail("method", err.what());
     }
     const auto& fam = methods::family(base.name, kind);
-    if (j.contains("params")) {
-        e.params = strings(path, "params", j["params"]);
+    auto numeric = [](const methods::Param& p) {
+        return p.kind == methods::Kind::Real || p.kind == methods::Kind::Int;
+    };
+    if (r.has("params")) {
+        e.params = r.strings("params");
         for (const auto& n : e.params) {
             auto it = std::find_if(fam.params.begin(), fam.params.end(), [&](auto& p) { return p.name == n; });
-            if (it == fam.params.end() || !(it->kind == methods::Kind::Real || it->kind == methods::Kind::Int))
-                fail(path, "params", fmt::format("'{}' is not a numeric parameter of method {}", n, base.name));
+            if (it == fam.params.end() || !numeric(*it))
+                r.fail("params", fmt::format("'{}' is not a numeric parameter of method {}", n, base.name));
             if (base.given.count(n))
-                fail(path, "params", fmt::format("'{}' is searched, so \"method\" must not set it", n));
+                r.fail("params", fmt::format("'{}' is searched, so \"method\" must not set it", n));
         }
     } else {
         for (const auto& p : fam.params)
-            if (p.tunable && (p.kind == methods::Kind::Real || p.kind == methods::Kind::Int) &&
-                !base.given.count(p.name))
-                e.params.push_back(p.name);
+            if (p.tunable && numeric(p) && !base.given.count(p.name)) e.params.push_back(p.name);
     }
-    if (e.params.empty())
-        fail(path, "params", fmt::format("method {} has no tunable parameter left to search", base.name));
-    if (j.contains("reference")) {
-        e.reference = str("reference");
+    if (e.params.empty()) r.fail("params", fmt::format("method {} has no tunable parameter left to search", base.name));
+    if (r.has("reference")) {
+        e.reference = r.string("reference");
         try {
             if (methods::parseSpec(e.reference, kind).name != "reference")
-                fail(path, "reference", "expected a reference SPEC");
+                r.fail("reference", "expected a reference SPEC");
         } catch (const InputError& err) {
-            fail(path, "reference", err.what());
+            r.fail("reference", err.what());
         }
     }
-    std::string lumDir = resolveDir(j.contains("luminaire_dir") ? str("luminaire_dir") : "luminaires");
-    if (j.contains("res")) e.res = static_cast<int>(integer("res", 1, 4096));
-    if (j.contains("precision")) {
-        e.precision = str("precision");
+}
+
+// The scenes: res, precision, size, extent and the train and validation sets.
+void readScenes(const Reader& r, TuneExperiment& e)
+{
+    std::string lumDir = util::resolveSourceDir(r.has("luminaire_dir") ? r.string("luminaire_dir") : "luminaires");
+    if (r.has("res")) e.res = static_cast<int>(r.integer("res", 1, 4096));
+    if (r.has("precision")) {
+        e.precision = r.string("precision");
         try {
             methods::parsePrecision(e.precision);
         } catch (const InputError& err) {
-            fail(path, "precision", err.what());
+            r.fail("precision", err.what());
         }
     }
-    if (j.contains("size")) {
-        auto s = lengths(path, "size", j["size"], 0);
-        if (s.size() != 2 || !(s[0] > 0) || !(s[1] > 0)) fail(path, "size", "expected [W, L] in metres, both > 0");
+    if (r.has("size")) {
+        auto s = r.numbers("size", 0, kMaxSceneLength, "m");
+        if (s.size() != 2 || !(s[0] > 0) || !(s[1] > 0)) r.fail("size", "expected [W, L] in metres, both > 0");
         e.width = s[0];
         e.length = s[1];
     }
-    if (j.contains("extent")) e.extent = number("extent", 1e-6, kMaxSceneLength);
+    if (r.has("extent")) e.extent = r.number("extent", 1e-6, kMaxSceneLength);
     for (const char* k : {"train", "validation"})
-        if (!j.contains(k)) fail(path, k, "missing (an object with luminaires, heights, rotations)");
-    e.train = sceneSet(path, "train", j["train"], lumDir);
-    e.validation = sceneSet(path, "validation", j["validation"], lumDir);
-    if (j.contains("metric")) {
-        e.metric = str("metric");
+        if (!r.has(k)) r.fail(k, "missing (an object with luminaires, heights, rotations)");
+    e.train = sceneSet(r, "train", lumDir);
+    e.validation = sceneSet(r, "validation", lumDir);
+}
+
+// The optimiser: metric, objective, the nlopt algorithms and their budgets.
+void readOptimiser(const Reader& r, TuneExperiment& e)
+{
+    if (r.has("metric")) {
+        e.metric = r.string("metric");
         const auto& ok = metrics::minimisableMetrics();
         if (std::find(ok.begin(), ok.end(), e.metric) == ok.end())
-            fail(path, "metric", fmt::format("expected one of {}, found '{}'", fmt::join(ok, ", "), e.metric));
+            r.fail("metric", fmt::format("expected one of {}, found '{}'", fmt::join(ok, ", "), e.metric));
     }
-    if (j.contains("objective")) {
-        e.objective = str("objective");
+    if (r.has("objective")) {
+        e.objective = r.string("objective");
         if (e.objective != "mean" && e.objective != "worst")
-            fail(path, "objective", fmt::format("expected mean or worst, found '{}'", e.objective));
+            r.fail("objective", fmt::format("expected mean or worst, found '{}'", e.objective));
     }
     auto checkAlgo = [&](const std::string& k, const std::string& name) {
         if (nlopt_algorithm_from_string(name.c_str()) < 0)
-            fail(path, k,
-                 fmt::format("unknown nlopt algorithm '{}' (e.g. LN_SBPLX, LN_NELDERMEAD, GN_DIRECT_L)", name));
+            r.fail(k, fmt::format("unknown nlopt algorithm '{}' (e.g. LN_SBPLX, LN_NELDERMEAD, GN_DIRECT_L)", name));
     };
-    if (j.contains("algorithm")) e.algorithm = str("algorithm");
+    if (r.has("algorithm")) e.algorithm = r.string("algorithm");
     checkAlgo("algorithm", e.algorithm);
     if (e.algorithm.rfind("LN_", 0) != 0 && e.algorithm.rfind("GN_", 0) != 0)
-        fail(path, "algorithm",
-             fmt::format("'{}' needs gradients; use a derivative-free LN_ or GN_ algorithm", e.algorithm));
-    if (j.contains("global")) {
-        e.global = str("global");
+        r.fail("algorithm",
+               fmt::format("'{}' needs gradients; use a derivative-free LN_ or GN_ algorithm", e.algorithm));
+    if (r.has("global")) {
+        e.global = r.string("global");
         checkAlgo("global", e.global);
         if (e.global.rfind("GN_", 0) != 0)
-            fail(path, "global", fmt::format("expected a GN_ algorithm, found '{}'", e.global));
+            r.fail("global", fmt::format("expected a GN_ algorithm, found '{}'", e.global));
     }
-    if (j.contains("global_maxeval")) e.globalMaxeval = static_cast<int>(integer("global_maxeval", 1, 1000000));
-    if (j.contains("maxeval")) e.maxeval = static_cast<int>(integer("maxeval", 1, 1000000));
-    if (j.contains("maxtime")) e.maxtime = number("maxtime", 0, 1e7);
-    if (j.contains("seed")) e.seed = static_cast<unsigned>(integer("seed", 0, 0xffffffffL));
+    if (r.has("global_maxeval")) e.globalMaxeval = static_cast<int>(r.integer("global_maxeval", 1, 1000000));
+    if (r.has("maxeval")) e.maxeval = static_cast<int>(r.integer("maxeval", 1, 1000000));
+    if (r.has("maxtime")) e.maxtime = r.number("maxtime", 0, 1e7);
+    if (r.has("seed")) e.seed = static_cast<unsigned>(r.integer("seed", 0, 0xffffffffL));
+}
+
+}  // namespace
+
+TuneExperiment loadTuneExperiment(const std::string& path)
+{
+    // A tune file is a few kB; 16 MiB leaves room for generated ones.
+    const json j = util::readJsonObject(path, "a tune experiment file (JSON)", 16u << 20);
+    Reader r{path, j};
+    r.onlyKnown({"name",      "description", "method",         "params",  "reference",  "luminaire_dir", "res",
+                 "precision", "size",        "extent",         "train",   "validation", "objective",     "algorithm",
+                 "metric",    "global",      "global_maxeval", "maxeval", "maxtime",    "seed",          "scene",
+                 "alpha",     "eye",         "albedo"});
+    TuneExperiment e;
+    e.path = path;
+    e.raw = j;
+    e.name = r.has("name") ? r.string("name") : fs::path(path).stem().string();
+    e.sceneKeys = SceneKindKeys::read(j, path);
+    readSearch(r, e);
+    readScenes(r, e);
+    readOptimiser(r, e);
     return e;
 }
 

@@ -404,7 +404,7 @@ TEST_F(Results, BadFilesAreInputErrorsNamingFileAndRecord)
     };
     expectError(file("missing.json"), "cannot open");
     std::ofstream(file("trunc.json")) << R"({"context": {}, "records": [)";
-    expectError(file("trunc.json"), "not a JSON document");
+    expectError(file("trunc.json"), "not valid JSON");
     std::ofstream(file("shape.json")) << R"({"records": []})";
     expectError(file("shape.json"), "\"context\"");
     json doc = {{"context", json::object()}, {"records", {cell("mc", 0.1, 1), cell("mc", 0.2, 1)}}};
