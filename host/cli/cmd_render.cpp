@@ -99,46 +99,98 @@ methods::Precision precisionFlag(const std::string& text)
     }
 }
 
-void addRenderCommand(CLI::App& app)
+namespace {
+
+struct RenderOpts {
+    std::string luminaire, method, rotation, size = "1x1", precision = "float", out, scene = "diffuse", eye;
+    double height = 0, extent = 5, alpha = Scene{}.alpha, albedo = Scene{}.albedo;
+    int res = 256, device = -1, reps = 5;
+    bool json = false, noCache = false;
+};
+
+void addRenderOptions(CLI::App* cmd, RenderOpts& o)
 {
-    struct Opts {
-        std::string luminaire, method, rotation, size = "1x1", precision = "float", out, scene = "diffuse", eye;
-        double height = 0, extent = 5, alpha = Scene{}.alpha, albedo = Scene{}.albedo;
-        int res = 256, device = -1, reps = 5;
-        bool json = false, noCache = false;
-    };
-    auto o = std::make_shared<Opts>();
-    auto* cmd = app.add_subcommand("render", "Render the normalized evaluation scene with one method to OpenEXR");
-    cmd->add_option("--luminaire", o->luminaire, "IES or LDT file (or analytic:cos<n>[:two])")->required();
+    cmd->add_option("--luminaire", o.luminaire, "IES or LDT file (or analytic:cos<n>[:two])")->required();
     std::string methodHelp = "Method SPEC name:key=value,..., e.g. mc:n=24; methods: " + methods::registry().names();
     for (SceneKind k : {SceneKind::Specular, SceneKind::Indirect})
         if (!methods::registry().names(k).empty())
             methodHelp += "; --scene " + sceneKindName(k) + ": " + methods::registry().names(k);
-    cmd->add_option("--method", o->method, methodHelp)->required();
-    cmd->add_option("--scene", o->scene,
+    cmd->add_option("--method", o.method, methodHelp)->required();
+    cmd->add_option("--scene", o.scene,
                     "What the image shows: diffuse (direct irradiance on the floor, lux), specular (luminance of a "
                     "glossy GGX floor towards --eye, cd/m^2), indirect (one-bounce irradiance from the walls and "
                     "ceiling of a 5 x 5 x 3 m room, lux)")
         ->capture_default_str();
-    cmd->add_option("--alpha", o->alpha, "Specular scene: GGX roughness alpha (0.01 .. 1)")->capture_default_str();
-    cmd->add_option("--eye", o->eye, "Specular scene: eye point X,Y,Z in metres (Z > 0; default 0,4,2)");
-    cmd->add_option("--albedo", o->albedo, "Indirect scene: albedo of walls and ceiling (0 .. 1)")
+    cmd->add_option("--alpha", o.alpha, "Specular scene: GGX roughness alpha (0.01 .. 1)")->capture_default_str();
+    cmd->add_option("--eye", o.eye, "Specular scene: eye point X,Y,Z in metres (Z > 0; default 0,4,2)");
+    cmd->add_option("--albedo", o.albedo, "Indirect scene: albedo of walls and ceiling (0 .. 1)")
         ->capture_default_str();
-    cmd->add_option("--height", o->height, "Height h of the light (m, 0 .. 1e4)")->required();
-    cmd->add_option("--rotation", o->rotation,
+    cmd->add_option("--height", o.height, "Height h of the light (m, 0 .. 1e4)")->required();
+    cmd->add_option("--rotation", o.rotation,
                     "Rotation R in radians (0 .. 2pi; pi/2 .. pi in the papers), e.g. 2.356 "
                     "or 3pi/4")
         ->required();
-    cmd->add_option("--size", o->size, "Light size WxL in metres (each > 0, <= 1e4)")->capture_default_str();
-    cmd->add_option("--res", o->res, "Image resolution N (N x N pixels, 1 .. 16384)")->capture_default_str();
-    cmd->add_option("--extent", o->extent, "Side S of the imaged square (m, > 0, <= 1e4)")->capture_default_str();
-    cmd->add_option("--precision", o->precision, "float or double")->capture_default_str();
-    cmd->add_option("--device", o->device, "OpenCL device index >= 0 (lumibench devices)");
-    cmd->add_option("--out", o->out, "Output .exr (channel Y, lux); the reference also writes FILE.err.exr")
-        ->required();
-    cmd->add_option("--reps", o->reps, "Timed runs after one warm-up (1 .. 1000)")->capture_default_str();
-    cmd->add_flag("--json", o->json, "Print one JSON object describing the result");
-    cmd->add_flag("--no-cache", o->noCache, "Do not read or write the reference cache ($LUMIBENCH_CACHE)");
+    cmd->add_option("--size", o.size, "Light size WxL in metres (each > 0, <= 1e4)")->capture_default_str();
+    cmd->add_option("--res", o.res, "Image resolution N (N x N pixels, 1 .. 16384)")->capture_default_str();
+    cmd->add_option("--extent", o.extent, "Side S of the imaged square (m, > 0, <= 1e4)")->capture_default_str();
+    cmd->add_option("--precision", o.precision, "float or double")->capture_default_str();
+    cmd->add_option("--device", o.device, "OpenCL device index >= 0 (lumibench devices)");
+    cmd->add_option("--out", o.out, "Output .exr (channel Y, lux); the reference also writes FILE.err.exr")->required();
+    cmd->add_option("--reps", o.reps, "Timed runs after one warm-up (1 .. 1000)")->capture_default_str();
+    cmd->add_flag("--json", o.json, "Print one JSON object describing the result");
+    cmd->add_flag("--no-cache", o.noCache, "Do not read or write the reference cache ($LUMIBENCH_CACHE)");
+}
+
+// The image and its side images (the reference's FILE.err.exr) as one
+// group: if any cannot be written, none is left behind. Returns the side
+// images' paths by name.
+nlohmann::json writeImages(const std::string& out, const methods::RenderResult& r)
+{
+    std::vector<std::pair<std::string, std::string>> files = {{out, encodeExr(r.image)}};
+    std::string stem = out;
+    if (stem.size() > 4 && stem.substr(stem.size() - 4) == ".exr") stem.resize(stem.size() - 4);
+    nlohmann::json extra = nlohmann::json::object();
+    for (auto& [name, img] : r.extraImages) {
+        std::string p = stem + "." + name + ".exr";
+        files.emplace_back(p, encodeExr(img));
+        extra[name] = p;
+    }
+    util::writeFilesAtomic(files);
+    return extra;
+}
+
+nlohmann::json renderJson(const RenderOpts& o, const methods::MethodSpec& spec, const Scene& scene,
+                          const ocl::Runtime& rt, methods::Precision prec, const methods::RenderResult& r,
+                          const nlohmann::json& extra)
+{
+    return {
+        {"method", spec.name},
+        {"spec", spec.canonical()},
+        {"params", spec.paramsJson()},
+        {"luminaire", o.luminaire},
+        {"scene", sceneJson(scene)},
+        {"device", rt.info().name},
+        {"driver", rt.info().driver},
+        {"platform", rt.info().platform},
+        {"precision", methods::precisionName(prec)},
+        {"time_ms",
+         {{"median", r.timing.median_ms}, {"min", r.timing.min_ms}, {"max", r.timing.max_ms}, {"reps", r.timing.reps}}},
+        {"build_s", r.buildSeconds},
+        {"nonfinite", r.nonfinite},
+        {"cached", r.cached},
+        {"stats", r.stats},
+        {"out", o.out},
+        {"extra_images", extra},
+    };
+}
+
+}  // namespace
+
+void addRenderCommand(CLI::App& app)
+{
+    auto o = std::make_shared<RenderOpts>();
+    auto* cmd = app.add_subcommand("render", "Render the normalized evaluation scene with one method to OpenEXR");
+    addRenderOptions(cmd, *o);
     cmd->callback([o, cmd] {
         if (o->method.empty()) throw InputError("--method: expected a SPEC such as mc:n=24, got an empty value");
         Scene scene = sceneFromFlags(o->height, o->rotation, o->size, o->extent, o->res);
@@ -155,45 +207,9 @@ void addRenderCommand(CLI::App& app)
         ropt.useCache = !o->noCache;
         ropt.progress = true;
         auto r = methods::render(rt, table, scene, spec, prec, ropt);
-
-        // The image and its side images (the reference's FILE.err.exr) as one
-        // group: if any cannot be written, none is left behind.
-        std::vector<std::pair<std::string, std::string>> files = {{o->out, encodeExr(r.image)}};
-        std::string stem = o->out;
-        if (stem.size() > 4 && stem.substr(stem.size() - 4) == ".exr") stem.resize(stem.size() - 4);
-        nlohmann::json extra = nlohmann::json::object();
-        for (auto& [name, img] : r.extraImages) {
-            std::string p = stem + "." + name + ".exr";
-            files.emplace_back(p, encodeExr(img));
-            extra[name] = p;
-        }
-        util::writeFilesAtomic(files);
+        nlohmann::json extra = writeImages(o->out, r);
         if (r.nonfinite > 0) std::cerr << fmt::format("lumibench: warning: {} non-finite pixels\n", r.nonfinite);
-        if (o->json) {
-            nlohmann::json j = {
-                {"method", spec.name},
-                {"spec", spec.canonical()},
-                {"params", spec.paramsJson()},
-                {"luminaire", o->luminaire},
-                {"scene", sceneJson(scene)},
-                {"device", rt.info().name},
-                {"driver", rt.info().driver},
-                {"platform", rt.info().platform},
-                {"precision", methods::precisionName(prec)},
-                {"time_ms",
-                 {{"median", r.timing.median_ms},
-                  {"min", r.timing.min_ms},
-                  {"max", r.timing.max_ms},
-                  {"reps", r.timing.reps}}},
-                {"build_s", r.buildSeconds},
-                {"nonfinite", r.nonfinite},
-                {"cached", r.cached},
-                {"stats", r.stats},
-                {"out", o->out},
-                {"extra_images", extra},
-            };
-            std::cout << j.dump() << std::endl;
-        }
+        if (o->json) std::cout << renderJson(*o, spec, scene, rt, prec, r, extra).dump() << std::endl;
     });
 }
 

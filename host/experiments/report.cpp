@@ -491,23 +491,44 @@ Table pairsTable(const results::Results& doc)
     return pairs;
 }
 
-}  // namespace
-
-void writeReport(const std::string& dir, const std::string& plotNote)
-{
-    const std::string path = (fs::path(dir) / "results.json").string();
-    results::Results doc = results::load(path);
-    results::dedupe(doc.records);  // files of older versions may hold two partners of one method
-    const std::string title = fmt::format("Experiment `{}`", str(doc.context, "experiment", "?"));
-    const Table info = runInfo(doc);
+// What report.md and report.html both show.
+struct ReportContent {
+    std::string title;
+    Table info;
     std::string summary;
-    const std::vector<std::string> cols = columns(doc, &summary);
+    std::vector<Table> tables;
+    fs::path plotDir;
+    std::vector<std::string> pngs;  // in plotDir
+    std::string plotsMissing;  // why there are none, where there are none
+};
 
+// DIR/plots/*.png: NMSE first, then grad_nmse, FLIP and the image grids, each by name.
+std::vector<std::string> plotFiles(const fs::path& pd)
+{
+    std::vector<std::string> pngs;
+    if (fs::is_directory(pd))
+        for (const auto& e : fs::directory_iterator(pd))
+            if (e.path().extension() == ".png") pngs.push_back(e.path().filename().string());
+    auto rank = [](const std::string& f) {
+        return f.rfind("nmse_", 0) == 0 ? 0 : f.rfind("grad_nmse_", 0) == 0 ? 1 : f.rfind("flip_", 0) == 0 ? 2 : 3;
+    };
+    std::sort(pngs.begin(), pngs.end(), [&](const std::string& a, const std::string& b) {
+        return std::make_pair(rank(a), a) < std::make_pair(rank(b), b);
+    });
+    return pngs;
+}
+
+ReportContent reportContent(const std::string& dir, const results::Results& doc, const std::string& plotNote)
+{
+    ReportContent c;
+    c.title = fmt::format("Experiment `{}`", str(doc.context, "experiment", "?"));
+    c.info = runInfo(doc);
+    const std::vector<std::string> cols = columns(doc, &c.summary);
     const std::string pooledNote =
         "Each cell is the error of the rotations' images stitched into one, as in the thesis: squared errors summed "
         "over all rotations' pixels, against the pooled means (`metrics::pooled`; docs/thesis-sct-vs-mci.md), not "
         "the mean of the rotations' values, which one nearly dark rotation can dominate. ";
-    std::vector<Table> tables = {
+    c.tables = {
         mainTable(doc, cols, "nmse", "NMSE per luminaire and height (rotations stitched)", pooledNote),
         mainTable(doc, cols, "grad_nmse", "grad_nmse per luminaire and height (rotations stitched)",
                   "NMSE of the neighbouring-pixel differences: ripples and bumps, not a smooth bias. " + pooledNote),
@@ -515,81 +536,88 @@ void writeReport(const std::string& dir, const std::string& plotNote)
                   "Mean HDR-FLIP (NVIDIA flip-evaluator), in [0, 1], over all rotations' pixels. "),
         timesTable(doc, cols)};
     if (std::any_of(doc.records.begin(), doc.records.end(), [](const auto& r) { return bool(r.equal_time_to); }))
-        tables.push_back(pairsTable(doc));
-
-    // Plots.
-    std::vector<std::string> pngs;
-    fs::path pd = fs::path(dir) / "plots";
-    if (fs::is_directory(pd))
-        for (const auto& e : fs::directory_iterator(pd))
-            if (e.path().extension() == ".png") pngs.push_back(e.path().filename().string());
-    // NMSE first, then grad_nmse, FLIP and the image grids, each by name
-    auto rank = [](const std::string& f) {
-        return f.rfind("nmse_", 0) == 0 ? 0 : f.rfind("grad_nmse_", 0) == 0 ? 1 : f.rfind("flip_", 0) == 0 ? 2 : 3;
-    };
-    std::sort(pngs.begin(), pngs.end(), [&](const std::string& a, const std::string& b) {
-        return std::make_pair(rank(a), a) < std::make_pair(rank(b), b);
-    });
-    std::string plotsMissing;
+        c.tables.push_back(pairsTable(doc));
+    c.plotDir = fs::path(dir) / "plots";
+    c.pngs = plotFiles(c.plotDir);
     if (!plotNote.empty())
-        plotsMissing = "Plots not made: " + plotNote + ".";
-    else if (pngs.empty())
-        plotsMissing = "No plots in `plots/` (run `lumibench report DIR`).";
+        c.plotsMissing = "Plots not made: " + plotNote + ".";
+    else if (c.pngs.empty())
+        c.plotsMissing = "No plots in `plots/` (run `lumibench report DIR`).";
+    return c;
+}
 
-    // report.md
-    {
-        std::ostringstream o;
-        o << "# " << title << "\n\n| | |\n|---|---|\n";
-        for (const auto& row : info.rows) o << "| " << row[0].text << " | " << row[1].text << " |\n";
-        o << '\n' << summary;
-        for (const auto& t : tables) o << mdTable(t);
-        o << "\n## Plots\n\n";
-        if (!plotsMissing.empty()) o << plotsMissing << "\n\n";
-        for (const auto& p : pngs) o << fmt::format("![{}](plots/{})\n\n", p, p);
-        util::writeFileAtomic((fs::path(dir) / "report.md").string(), o.str());
-    }
+std::string reportMarkdown(const ReportContent& c)
+{
+    std::ostringstream o;
+    o << "# " << c.title << "\n\n| | |\n|---|---|\n";
+    for (const auto& row : c.info.rows) o << "| " << row[0].text << " | " << row[1].text << " |\n";
+    o << '\n' << c.summary;
+    for (const auto& t : c.tables) o << mdTable(t);
+    o << "\n## Plots\n\n";
+    if (!c.plotsMissing.empty()) o << c.plotsMissing << "\n\n";
+    for (const auto& p : c.pngs) o << fmt::format("![{}](plots/{})\n\n", p, p);
+    return o.str();
+}
 
-    // report.html
-    {
-        size_t shown = 0, left = 0;
-        json viewer = viewerData(dir, doc.records, shown, left);
-        std::ostringstream o;
-        o << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>" << inlineHtml(title)
-          << "</title>\n<style>" << report_page::kCss << "</style></head>\n<body>\n<h1>" << inlineHtml(title)
-          << "</h1>\n<table class=\"info\">";
-        for (const auto& row : info.rows)
-            o << "<tr><th>" << htmlEscape(row[0].text) << "</th><td>" << htmlEscape(row[1].text) << "</td></tr>";
-        o << "</table>\n<p>" << inlineHtml(summary) << " Click a column head to sort.</p>\n";
-        o << "<nav>Sections: <a href=\"#viewer\">pictures</a>";
-        for (size_t i = 0; i < tables.size(); ++i)
-            o << fmt::format(" · <a href=\"#t{}\">{}</a>", i, htmlEscape(tables[i].title));
-        o << " · <a href=\"#plots\">plots</a></nav>\n";
-        o << "<section id=\"viewer\"><h2>Pictures</h2>\n";
-        if (shown == 0)
-            o << "<p>No saved pictures (the experiment's <code>save_images</code> is off, or <code>images/</code> is "
-                 "missing).</p>\n";
-        else
-            o << report_page::kViewerHtml;
-        if (left)
-            o << fmt::format("<p>{} more scenes with pictures are not inlined (the page holds at most {} MB of "
-                             "pictures); they are in <code>images/</code>.</p>\n",
-                             left, kMaxInlineBytes >> 20);
-        o << "</section>\n";
-        for (size_t i = 0; i < tables.size(); ++i)
-            o << fmt::format("<section id=\"t{}\">", i) << htmlTable(tables[i]) << "</section>\n";
-        o << "<section id=\"plots\"><h2>Plots</h2>\n";
-        if (!plotsMissing.empty()) o << "<p>" << inlineHtml(plotsMissing) << "</p>\n";
-        for (const auto& p : pngs)
-            o << "<figure><img alt=\"" << htmlEscape(p) << "\" src=\"" << dataUri(pd / p) << "\"><figcaption>"
-              << htmlEscape(p) << "</figcaption></figure>\n";
-        o << "</section>\n";
-        // JSON inside <script>: "</" would end the element; JSON allows "<\/".
-        std::string data = viewer.dump();
-        for (size_t pos = 0; (pos = data.find("</", pos)) != std::string::npos; pos += 3) data.replace(pos, 2, "<\\/");
-        o << "<script type=\"application/json\" id=\"lbdata\">" << data << "</script>\n<script>" << report_page::kScript
-          << "</script>\n</body></html>\n";
-        util::writeFileAtomic((fs::path(dir) / "report.html").string(), o.str());
-    }
+// The page's picture viewer section (its data goes in at the end of the page).
+std::string viewerSection(size_t shown, size_t left)
+{
+    std::ostringstream o;
+    o << "<section id=\"viewer\"><h2>Pictures</h2>\n";
+    if (shown == 0)
+        o << "<p>No saved pictures (the experiment's <code>save_images</code> is off, or <code>images/</code> is "
+             "missing).</p>\n";
+    else
+        o << report_page::kViewerHtml;
+    if (left)
+        o << fmt::format("<p>{} more scenes with pictures are not inlined (the page holds at most {} MB of "
+                         "pictures); they are in <code>images/</code>.</p>\n",
+                         left, kMaxInlineBytes >> 20);
+    o << "</section>\n";
+    return o.str();
+}
+
+std::string reportHtml(const ReportContent& c, const json& viewer, size_t shown, size_t left)
+{
+    std::ostringstream o;
+    o << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>" << inlineHtml(c.title)
+      << "</title>\n<style>" << report_page::kCss << "</style></head>\n<body>\n<h1>" << inlineHtml(c.title)
+      << "</h1>\n<table class=\"info\">";
+    for (const auto& row : c.info.rows)
+        o << "<tr><th>" << htmlEscape(row[0].text) << "</th><td>" << htmlEscape(row[1].text) << "</td></tr>";
+    o << "</table>\n<p>" << inlineHtml(c.summary) << " Click a column head to sort.</p>\n";
+    o << "<nav>Sections: <a href=\"#viewer\">pictures</a>";
+    for (size_t i = 0; i < c.tables.size(); ++i)
+        o << fmt::format(" · <a href=\"#t{}\">{}</a>", i, htmlEscape(c.tables[i].title));
+    o << " · <a href=\"#plots\">plots</a></nav>\n";
+    o << viewerSection(shown, left);
+    for (size_t i = 0; i < c.tables.size(); ++i)
+        o << fmt::format("<section id=\"t{}\">", i) << htmlTable(c.tables[i]) << "</section>\n";
+    o << "<section id=\"plots\"><h2>Plots</h2>\n";
+    if (!c.plotsMissing.empty()) o << "<p>" << inlineHtml(c.plotsMissing) << "</p>\n";
+    for (const auto& p : c.pngs)
+        o << "<figure><img alt=\"" << htmlEscape(p) << "\" src=\"" << dataUri(c.plotDir / p) << "\"><figcaption>"
+          << htmlEscape(p) << "</figcaption></figure>\n";
+    o << "</section>\n";
+    // JSON inside <script>: "</" would end the element; JSON allows "<\/".
+    std::string data = viewer.dump();
+    for (size_t pos = 0; (pos = data.find("</", pos)) != std::string::npos; pos += 3) data.replace(pos, 2, "<\\/");
+    o << "<script type=\"application/json\" id=\"lbdata\">" << data << "</script>\n<script>" << report_page::kScript
+      << "</script>\n</body></html>\n";
+    return o.str();
+}
+
+}  // namespace
+
+void writeReport(const std::string& dir, const std::string& plotNote)
+{
+    results::Results doc = results::load((fs::path(dir) / "results.json").string());
+    results::dedupe(doc.records);  // files of older versions may hold two partners of one method
+    const ReportContent c = reportContent(dir, doc, plotNote);
+    util::writeFileAtomic((fs::path(dir) / "report.md").string(), reportMarkdown(c));
+    size_t shown = 0, left = 0;
+    json viewer = viewerData(dir, doc.records, shown, left);
+    util::writeFileAtomic((fs::path(dir) / "report.html").string(), reportHtml(c, viewer, shown, left));
 }
 
 }  // namespace lb::experiments

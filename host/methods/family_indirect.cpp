@@ -348,6 +348,92 @@ void registerKmeans(Registry& r)
     r.add(f);
 }
 
+void checkAcrsm(const MethodSpec& s)
+{
+    checkRsm(s);
+    long levels = 0;
+    while ((1L << levels) < s.integer("rsm")) ++levels;
+    if (s.integer("warp_stop") >= levels)
+        throw InputError(
+            fmt::format("method acrsm: warp_stop={} must be below log2(rsm) = {}", s.integer("warp_stop"), levels));
+    if (s.integer("k") > 1024) throw InputError("method acrsm: k at most 1024");
+}
+
+// The importance pyramid over the RSM of side T: its buffer, the levels'
+// offsets in it, and the passes that build it (pyr_base, one pyr_down per
+// level); returns the number of levels.
+int setupPyramid(LaunchContext& c, int T)
+{
+    int levels = 0;
+    while ((1 << levels) < T) ++levels;
+    std::vector<cl_int> off(levels + 1);
+    int at = 0;
+    for (int m = 0; m <= levels; ++m) {
+        off[m] = at;
+        at += (T >> m) * (T >> m);
+    }
+    c.named["pyr"] = c.outputReals(at);
+    c.named["off"] = intBuffer(c, off);
+    c.bind(c.pass("pyr_base"), c.named["tex"], cl_int(T), c.named["pyr"]);
+    for (int m = 0; m < levels; ++m) {
+        // one kernel object per level: the arguments differ
+        cl::Kernel& pd =
+            c.passKernels.emplace(fmt::format("pyr_down{}", m), c.rt.kernel(c.family.file, "pyr_down", c.options))
+                .first->second;
+        c.bind(pd, c.named["pyr"], cl_int(off[m]), cl_int(T >> m), cl_int(off[m + 1]));
+    }
+    return levels;
+}
+
+void acrsmSetArgs(LaunchContext& c)
+{
+    const int T = rsmSide(c), K = clusterCount(c);
+    setupClusters(c);
+    const int levels = setupPyramid(c, T);
+    c.stats["levels"] = levels;
+    using Real = LaunchContext::Real;
+    const Real window{c.spec.num("window") * T};
+    // the frame (argument 5 of ac_evaluate, 9 of ac_seed) is set per launch
+    c.bind(c.pass("ac_evaluate"), cl_int(K), cl_int(T), c.named["state"], c.named["centres"], c.named["lights"],
+           cl_int(0), window, Real{c.spec.num("eps_m")}, Real{c.spec.num("eps_s")});
+    c.bind(c.pass("ac_seed"), c.named["tex"], cl_int(T), c.named["pyr"], c.named["off"], cl_int(levels),
+           static_cast<cl_int>(c.spec.integer("warp_stop")), cl_int(K), c.named["state"], c.named["centres"],
+           cl_int(0));
+    c.bind(c.pass("ac_map"), c.named["tex"], cl_int(T), c.named["centres"], c.named["state"], cl_int(K), window,
+           Real{c.spec.num("wx")}, Real{c.spec.num("wn")}, Real{c.spec.num("wb")}, c.named["label"]);
+}
+
+// One frame: the RSM, its pyramid, the clusters evaluated (merge, split)
+// from the last frame, seeded, and refined by the mapping and Lloyd's sums.
+std::vector<StageEvent> acrsmPasses(LaunchContext& c)
+{
+    const int T = rsmSide(c), K = clusterCount(c);
+    const int levels = c.stats["levels"].get<int>();
+    std::vector<StageEvent> ev;
+    ev.push_back({"rsm", launchRsm(c)});
+    ev.push_back({"cluster", c.rt.launch2D(c.pass("pyr_base"), T, T, 8, 8)});
+    for (int m = 0; m < levels; ++m) {
+        const int n = std::max(1, (T >> m) / 2);
+        ev.push_back(
+            {"cluster",
+             c.rt.launch2D(c.passKernels.at(fmt::format("pyr_down{}", m)), n, n, std::min(8, n), std::min(8, n))});
+    }
+    if (c.frame > 0) {
+        cl::Kernel& e = c.pass("ac_evaluate");
+        e.setArg(5, cl_int(c.frame));
+        ev.push_back({"cluster", c.rt.launch1D(e, 1, 1)});
+    }
+    cl::Kernel& sd = c.pass("ac_seed");
+    sd.setArg(9, cl_int(c.frame));
+    ev.push_back({"cluster", c.rt.launch1D(sd, K, 64)});
+    for (long i = 0; i < c.spec.integer("iters"); ++i) {
+        ev.push_back({"cluster", c.rt.launch2D(c.pass("ac_map"), T, T, 8, 8)});
+        lloydSums(c, ev);
+    }
+    ++c.frame;
+    return ev;
+}
+
 void registerAcrsm(Registry& r)
 {
     Family f;
@@ -366,78 +452,12 @@ void registerAcrsm(Registry& r)
     f.params.push_back(Param::real("eps_s", 0.15, 0.0, 1.0, Scale::Linear, "split threshold (seed Eq. 4.8: 0.1-0.2)"));
     f.params.push_back(Param::integer("settle", 8, 1, 1000, Scale::Linear,
                                       "frames of a static scene before render() reads the image (its steady state)"));
-    f.validate = [](const MethodSpec& s) {
-        checkRsm(s);
-        long levels = 0;
-        while ((1L << levels) < s.integer("rsm")) ++levels;
-        if (s.integer("warp_stop") >= levels)
-            throw InputError(
-                fmt::format("method acrsm: warp_stop={} must be below log2(rsm) = {}", s.integer("warp_stop"), levels));
-        if (s.integer("k") > 1024) throw InputError("method acrsm: k at most 1024");
-    };
+    f.validate = checkAcrsm;
     f.defines = rsmDefines;
     f.args = {"lights", "nlights", "clamp2"};
     f.settleFrames = [](const MethodSpec& s) { return static_cast<int>(s.integer("settle")); };
-    f.setArgs = [](LaunchContext& c) {
-        const int T = rsmSide(c), K = clusterCount(c);
-        setupClusters(c);
-        int levels = 0;
-        while ((1 << levels) < T) ++levels;
-        std::vector<cl_int> off(levels + 1);
-        int at = 0;
-        for (int m = 0; m <= levels; ++m) {
-            off[m] = at;
-            at += (T >> m) * (T >> m);
-        }
-        c.named["pyr"] = c.outputReals(at);
-        c.named["off"] = intBuffer(c, off);
-        c.stats["levels"] = levels;
-        c.bind(c.pass("pyr_base"), c.named["tex"], cl_int(T), c.named["pyr"]);
-        for (int m = 0; m < levels; ++m) {
-            // one kernel object per level: the arguments differ
-            cl::Kernel& pd =
-                c.passKernels.emplace(fmt::format("pyr_down{}", m), c.rt.kernel(c.family.file, "pyr_down", c.options))
-                    .first->second;
-            c.bind(pd, c.named["pyr"], cl_int(off[m]), cl_int(T >> m), cl_int(off[m + 1]));
-        }
-        using Real = LaunchContext::Real;
-        const Real window{c.spec.num("window") * T};
-        // the frame (argument 5 of ac_evaluate, 9 of ac_seed) is set per launch
-        c.bind(c.pass("ac_evaluate"), cl_int(K), cl_int(T), c.named["state"], c.named["centres"], c.named["lights"],
-               cl_int(0), window, Real{c.spec.num("eps_m")}, Real{c.spec.num("eps_s")});
-        c.bind(c.pass("ac_seed"), c.named["tex"], cl_int(T), c.named["pyr"], c.named["off"], cl_int(levels),
-               static_cast<cl_int>(c.spec.integer("warp_stop")), cl_int(K), c.named["state"], c.named["centres"],
-               cl_int(0));
-        c.bind(c.pass("ac_map"), c.named["tex"], cl_int(T), c.named["centres"], c.named["state"], cl_int(K), window,
-               Real{c.spec.num("wx")}, Real{c.spec.num("wn")}, Real{c.spec.num("wb")}, c.named["label"]);
-    };
-    f.prePasses = [](LaunchContext& c) {
-        const int T = rsmSide(c), K = clusterCount(c);
-        const int levels = c.stats["levels"].get<int>();
-        std::vector<StageEvent> ev;
-        ev.push_back({"rsm", launchRsm(c)});
-        ev.push_back({"cluster", c.rt.launch2D(c.pass("pyr_base"), T, T, 8, 8)});
-        for (int m = 0; m < levels; ++m) {
-            const int n = std::max(1, (T >> m) / 2);
-            ev.push_back(
-                {"cluster",
-                 c.rt.launch2D(c.passKernels.at(fmt::format("pyr_down{}", m)), n, n, std::min(8, n), std::min(8, n))});
-        }
-        if (c.frame > 0) {
-            cl::Kernel& e = c.pass("ac_evaluate");
-            e.setArg(5, cl_int(c.frame));
-            ev.push_back({"cluster", c.rt.launch1D(e, 1, 1)});
-        }
-        cl::Kernel& sd = c.pass("ac_seed");
-        sd.setArg(9, cl_int(c.frame));
-        ev.push_back({"cluster", c.rt.launch1D(sd, K, 64)});
-        for (long i = 0; i < c.spec.integer("iters"); ++i) {
-            ev.push_back({"cluster", c.rt.launch2D(c.pass("ac_map"), T, T, 8, 8)});
-            lloydSums(c, ev);
-        }
-        ++c.frame;
-        return ev;
-    };
+    f.setArgs = acrsmSetArgs;
+    f.prePasses = acrsmPasses;
     f.finish = finishRsm;
     f.benchSpecs = {"acrsm:k=16", "acrsm:k=256"};
     r.add(f);

@@ -13,108 +13,122 @@
 
 namespace lb::methods {
 
+namespace {
+
+// reference: adaptive cubature of the area form with an error estimate.
+Family specularReference()
+{
+    Family f;
+    f.name = "reference";
+    f.scenes = {SceneKind::Specular};
+    f.summary = "specular scene: converged area integral of I f_r cos / r^2 (adaptive cubature, first mesh "
+                "refined at the GGX lobe) with an error estimate";
+    f.file = "specular_reference.cl";
+    f.params = {
+        Param::real("tol", 1e-5, 1e-9, 1e-1, Scale::Log, "target relative error per pixel", false),
+        Param::integer("max_splits", 160, 0, 160, Scale::Linear,
+                       "adaptive cell splits per pixel at most (the store holds 640 cells)"),
+    };
+    f.bandRows = 8;
+    referenceIo(f);
+    return f;
+}
+
+// mc: light-sampled MC with a fixed point set, GGX VNDF sampling, their MIS.
+Family specularMc()
+{
+    Family f;
+    f.name = "mc";
+    f.scenes = {SceneKind::Specular};
+    f.summary = "specular scene: MC with N samples: the same N light points for every pixel (light), GGX "
+                "visible-normal sampling per pixel (vndf), or both with the balance heuristic (mis)";
+    f.file = "specular_mc.cl";
+    f.params = {
+        Param::integer("n", 24, 1, 1 << 20, Scale::Log, "samples (mis: N light points + N VNDF samples)", true),
+        Param::choice("sampling", "light", {"light", "vndf", "mis"},
+                      "light: fixed point set on the light; vndf: GGX visible normals, per pixel; mis: both"),
+        Param::choice("pattern", "poisson", {"poisson", "halton", "stratified", "random"}, "point set on the light"),
+        Param::integer("seed", 0, 0, 2147483647L, Scale::Linear, "seed of the point set and the VNDF hash"),
+        Param::choice("lookup", "lut", {"lut", "exact"},
+                      "intensity lookup: the trig-free table (photometry/lut.h), as ltc and the diffuse mc, or "
+                      "the exact bilinear one"),
+    };
+    f.lumBuffer = lookupBuffer;
+    f.defines = [](const MethodSpec& s) {
+        const std::string& m = s.str("sampling");
+        std::string d = m == "light" ? std::string() : (m == "vndf" ? "-DLB_SMC_SAMPLING=1" : "-DLB_SMC_SAMPLING=2");
+        if (s.str("lookup") == "lut") d += d.empty() ? "-DLB_LUT" : " -DLB_LUT";
+        return d;
+    };
+    f.args = {"st", "n", "seed"};
+    f.setArgs = [](LaunchContext& c) {
+        int n = static_cast<int>(c.spec.integer("n"));
+        auto st = samplePoints(c.spec.str("pattern"), n, static_cast<std::uint64_t>(c.spec.integer("seed")));
+        c.arg("st", c.realBuffer(st));
+        c.arg("n", cl_int(n));
+        c.arg("seed", cl_int(c.spec.integer("seed")));
+    };
+    f.benchSpecs = {"mc:n=8", "mc:n=32", "mc:n=8,sampling=vndf", "mc:n=8,sampling=mis"};
+    return f;
+}
+
+// ltc: energy-equivalent radiance times the LTC integral of the light.
+Family specularLtc()
+{
+    Family f;
+    f.name = "ltc";
+    f.scenes = {SceneKind::Specular};
+    f.summary = "specular scene: energy-equivalent radiance (paper Eq. 13-16) times the LTC integral of the "
+                "light (Heitz et al. 2016, the suite's fitted table)";
+    f.file = "specular_ltc.cl";
+    f.params = {
+        Param::choice("radiance", "cubature", {"cubature", "structured", "cp", "point"},
+                      "estimator of the diffuse integral and its G_Omega (paper Eq. 15-16)"),
+        Param::choice("triangulation", "fan", {"fan", "delaunay"},
+                      "cubature: fan around CP (paper 5.2) or Delaunay over CP + barycentre"),
+        Param::choice("g_omega", "estimate", {"estimate", "exact"},
+                      "G_Omega from the same estimator (paper Eq. 15) or exact (Lambert's polygon formula)"),
+        Param::real("plane_eps", 1e-3, 1e-6, 1.0, Scale::Log,
+                    "cubature: receivers closer than this (m) to the light's plane are moved to it (paper 5.3)"),
+        Param::real("horizon_eps", 0.0, 0.0, 0.5, Scale::Linear,
+                    "cubature: clip the light at n_x . (p - x) >= this (m) (thesis 5.2.4)"),
+        Param::choice("lookup", "lut", {"lut", "exact"},
+                      "intensity lookup: trig-free table (photometry/lut.h, as cubature's default) or the exact "
+                      "bilinear one"),
+    };
+    f.lumBuffer = lookupBuffer;
+    f.defines = [](const MethodSpec& s) {
+        std::string d;
+        const std::string& rad = s.str("radiance");
+        if (rad == "structured") d += " -DLB_LTC_RADIANCE=1";
+        if (rad == "cp") d += " -DLB_LTC_RADIANCE=2";
+        if (rad == "point") d += " -DLB_LTC_RADIANCE=3";
+        if (rad == "cubature" && s.str("triangulation") == "delaunay") d += " -DLB_CUB_TRI=1";
+        if (s.str("g_omega") == "exact") d += " -DLB_LTC_EXACT_G";
+        if (s.str("lookup") == "lut") d += " -DLB_LUT";
+        return d.empty() ? d : d.substr(1);
+    };
+    f.args = {"ltc", "plane_eps", "horizon_eps"};
+    f.setArgs = [](LaunchContext& c) {
+        std::vector<float> t = ltc::packed(ltc::defaultTable());
+        cl::Buffer b(c.rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, t.size() * sizeof(float), t.data());
+        c.buffers.push_back(b);
+        c.arg("ltc", b);
+        c.realArg("plane_eps", c.spec.num("plane_eps"));
+        c.realArg("horizon_eps", c.spec.num("horizon_eps"));
+    };
+    f.benchSpecs = {"ltc", "ltc:triangulation=delaunay", "ltc:radiance=point", "ltc:radiance=structured",
+                    "ltc:g_omega=exact"};
+    return f;
+}
+
+}  // namespace
+
 void registerSpecular(Registry& r)
 {
-    {
-        Family f;
-        f.name = "reference";
-        f.scenes = {SceneKind::Specular};
-        f.summary = "specular scene: converged area integral of I f_r cos / r^2 (adaptive cubature, first mesh "
-                    "refined at the GGX lobe) with an error estimate";
-        f.file = "specular_reference.cl";
-        f.params = {
-            Param::real("tol", 1e-5, 1e-9, 1e-1, Scale::Log, "target relative error per pixel", false),
-            Param::integer("max_splits", 160, 0, 160, Scale::Linear,
-                           "adaptive cell splits per pixel at most (the store holds 640 cells)"),
-        };
-        f.bandRows = 8;
-        referenceIo(f);
-        r.add(f);
-    }
-    {
-        Family f;
-        f.name = "mc";
-        f.scenes = {SceneKind::Specular};
-        f.summary = "specular scene: MC with N samples: the same N light points for every pixel (light), GGX "
-                    "visible-normal sampling per pixel (vndf), or both with the balance heuristic (mis)";
-        f.file = "specular_mc.cl";
-        f.params = {
-            Param::integer("n", 24, 1, 1 << 20, Scale::Log, "samples (mis: N light points + N VNDF samples)", true),
-            Param::choice("sampling", "light", {"light", "vndf", "mis"},
-                          "light: fixed point set on the light; vndf: GGX visible normals, per pixel; mis: both"),
-            Param::choice("pattern", "poisson", {"poisson", "halton", "stratified", "random"},
-                          "point set on the light"),
-            Param::integer("seed", 0, 0, 2147483647L, Scale::Linear, "seed of the point set and the VNDF hash"),
-            Param::choice("lookup", "lut", {"lut", "exact"},
-                          "intensity lookup: the trig-free table (photometry/lut.h), as ltc and the diffuse mc, or "
-                          "the exact bilinear one"),
-        };
-        f.lumBuffer = lookupBuffer;
-        f.defines = [](const MethodSpec& s) {
-            const std::string& m = s.str("sampling");
-            std::string d =
-                m == "light" ? std::string() : (m == "vndf" ? "-DLB_SMC_SAMPLING=1" : "-DLB_SMC_SAMPLING=2");
-            if (s.str("lookup") == "lut") d += d.empty() ? "-DLB_LUT" : " -DLB_LUT";
-            return d;
-        };
-        f.args = {"st", "n", "seed"};
-        f.setArgs = [](LaunchContext& c) {
-            int n = static_cast<int>(c.spec.integer("n"));
-            auto st = samplePoints(c.spec.str("pattern"), n, static_cast<std::uint64_t>(c.spec.integer("seed")));
-            c.arg("st", c.realBuffer(st));
-            c.arg("n", cl_int(n));
-            c.arg("seed", cl_int(c.spec.integer("seed")));
-        };
-        f.benchSpecs = {"mc:n=8", "mc:n=32", "mc:n=8,sampling=vndf", "mc:n=8,sampling=mis"};
-        r.add(f);
-    }
-    {
-        Family f;
-        f.name = "ltc";
-        f.scenes = {SceneKind::Specular};
-        f.summary = "specular scene: energy-equivalent radiance (paper Eq. 13-16) times the LTC integral of the "
-                    "light (Heitz et al. 2016, the suite's fitted table)";
-        f.file = "specular_ltc.cl";
-        f.params = {
-            Param::choice("radiance", "cubature", {"cubature", "structured", "cp", "point"},
-                          "estimator of the diffuse integral and its G_Omega (paper Eq. 15-16)"),
-            Param::choice("triangulation", "fan", {"fan", "delaunay"},
-                          "cubature: fan around CP (paper 5.2) or Delaunay over CP + barycentre"),
-            Param::choice("g_omega", "estimate", {"estimate", "exact"},
-                          "G_Omega from the same estimator (paper Eq. 15) or exact (Lambert's polygon formula)"),
-            Param::real("plane_eps", 1e-3, 1e-6, 1.0, Scale::Log,
-                        "cubature: receivers closer than this (m) to the light's plane are moved to it (paper 5.3)"),
-            Param::real("horizon_eps", 0.0, 0.0, 0.5, Scale::Linear,
-                        "cubature: clip the light at n_x . (p - x) >= this (m) (thesis 5.2.4)"),
-            Param::choice("lookup", "lut", {"lut", "exact"},
-                          "intensity lookup: trig-free table (photometry/lut.h, as cubature's default) or the exact "
-                          "bilinear one"),
-        };
-        f.lumBuffer = lookupBuffer;
-        f.defines = [](const MethodSpec& s) {
-            std::string d;
-            const std::string& rad = s.str("radiance");
-            if (rad == "structured") d += " -DLB_LTC_RADIANCE=1";
-            if (rad == "cp") d += " -DLB_LTC_RADIANCE=2";
-            if (rad == "point") d += " -DLB_LTC_RADIANCE=3";
-            if (rad == "cubature" && s.str("triangulation") == "delaunay") d += " -DLB_CUB_TRI=1";
-            if (s.str("g_omega") == "exact") d += " -DLB_LTC_EXACT_G";
-            if (s.str("lookup") == "lut") d += " -DLB_LUT";
-            return d.empty() ? d : d.substr(1);
-        };
-        f.args = {"ltc", "plane_eps", "horizon_eps"};
-        f.setArgs = [](LaunchContext& c) {
-            std::vector<float> t = ltc::packed(ltc::defaultTable());
-            cl::Buffer b(c.rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, t.size() * sizeof(float), t.data());
-            c.buffers.push_back(b);
-            c.arg("ltc", b);
-            c.realArg("plane_eps", c.spec.num("plane_eps"));
-            c.realArg("horizon_eps", c.spec.num("horizon_eps"));
-        };
-        f.benchSpecs = {"ltc", "ltc:triangulation=delaunay", "ltc:radiance=point", "ltc:radiance=structured",
-                        "ltc:g_omega=exact"};
-        r.add(f);
-    }
+    r.add(specularReference());
+    r.add(specularMc());
+    r.add(specularLtc());
 }
 
 }  // namespace lb::methods

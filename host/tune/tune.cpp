@@ -340,6 +340,9 @@ private:
         return out;
     }
 
+    json header() const;
+    json summary(const std::vector<double>& v, const std::string& algo, int evals);
+    std::string search(std::vector<double>& u, std::chrono::steady_clock::time_point t0);
     // One nlopt stage from u0; updates best_ and the trace.
     void stage(const std::string& algo, int maxeval, double maxtime, std::vector<double>& u);
 
@@ -404,13 +407,9 @@ void Tuner::stage(const std::string& algo, int maxeval, double maxtime, std::vec
     if (!bestU_.empty()) u = bestU_;
 }
 
-json Tuner::run()
+// What is tuned, on which scenes: the head of tune.json.
+json Tuner::header() const
 {
-    auto t0 = std::chrono::steady_clock::now();
-    nlopt::srand(e_.seed);
-    std::vector<double> defaults;
-    for (const auto& d : dims_) defaults.push_back(std::stod(base_.values.at(d.param.name)));
-
     json doc;
     doc["experiment"] = e_.path;
     doc["name"] = e_.name;
@@ -435,38 +434,41 @@ json Tuner::run()
         scenes[set == &train_ ? "train" : "validation"] = a;
     }
     doc["scenes"] = scenes;
+    return doc;
+}
 
-    auto summary = [&](const std::vector<double>& v, const std::string& algo, int evals) {
-        long nfT = 0, nfV = 0;
-        auto tr = errors(train_, v, &nfT);
-        auto va = errors(validation_, v, &nfV);
-        json s;
-        s["params"] = paramsJson(v);
-        std::vector<std::string> names;
-        for (const auto& d : dims_) names.push_back(d.param.name);
-        s["spec"] = specWith(e_.method, names, v, e_.sceneKeys.kind);
-        for (const auto& [set, x] :
-             {std::pair<std::string, const std::vector<double>*>{"train", &tr}, {"validation", &va}}) {
-            const std::string k = set + "_" + e_.metric;
-            s[k] = aggregate(*x);
-            s[k + "_per_scene"] = *x;
-            s[k + "_mean"] = std::accumulate(x->begin(), x->end(), 0.0) / double(x->size());
-            s[k + "_worst"] = *std::max_element(x->begin(), x->end());
-        }
-        s["nonfinite"] = nfT + nfV;
-        s["evaluations"] = evals;
-        s["algorithm"] = algo;
-        s["at_bound"] = atBound(v);
-        return s;
-    };
-    const std::string trainKey = "train_" + e_.metric, validationKey = "validation_" + e_.metric;
-    doc["default"] = summary(defaults, "none", 0);
-    if (!opt_.quiet)
-        fmt::print(stderr, "tune: default  train {} {:.6g}  validation {:.6g}\n", e_.metric,
-                   doc["default"][trainKey].get<double>(), doc["default"][validationKey].get<double>());
+// The errors of the parameter values v on both sets: per scene, aggregated,
+// mean and worst; the spec that renders them, the bounds they ended at.
+json Tuner::summary(const std::vector<double>& v, const std::string& algo, int evals)
+{
+    long nfT = 0, nfV = 0;
+    auto tr = errors(train_, v, &nfT);
+    auto va = errors(validation_, v, &nfV);
+    json s;
+    s["params"] = paramsJson(v);
+    std::vector<std::string> names;
+    for (const auto& d : dims_) names.push_back(d.param.name);
+    s["spec"] = specWith(e_.method, names, v, e_.sceneKeys.kind);
+    for (const auto& [set, x] :
+         {std::pair<std::string, const std::vector<double>*>{"train", &tr}, {"validation", &va}}) {
+        const std::string k = set + "_" + e_.metric;
+        s[k] = aggregate(*x);
+        s[k + "_per_scene"] = *x;
+        s[k + "_mean"] = std::accumulate(x->begin(), x->end(), 0.0) / double(x->size());
+        s[k + "_worst"] = *std::max_element(x->begin(), x->end());
+    }
+    s["nonfinite"] = nfT + nfV;
+    s["evaluations"] = evals;
+    s["algorithm"] = algo;
+    s["at_bound"] = atBound(v);
+    return s;
+}
 
-    std::vector<double> u;
-    for (size_t i = 0; i < dims_.size(); ++i) u.push_back(dims_[i].toUnit(defaults[i]));
+// The global stage (if any), then the local one from the best point so far;
+// returns the algorithms' name ("GLOBAL+LOCAL" or "LOCAL") and leaves the
+// best point in bestU_ (u where no evaluation improved on it).
+std::string Tuner::search(std::vector<double>& u, std::chrono::steady_clock::time_point t0)
+{
     std::string algo = e_.algorithm;
     double remaining = e_.maxtime;
     if (!e_.global.empty()) {
@@ -480,23 +482,43 @@ json Tuner::run()
     int left = std::max(1, e_.maxeval - evals_);
     // The local search starts from the best point so far (the defaults are its first evaluation).
     stage(e_.algorithm, left, remaining, u);
+    return algo;
+}
+
+json Tuner::run()
+{
+    auto t0 = std::chrono::steady_clock::now();
+    nlopt::srand(e_.seed);
+    std::vector<double> defaults;
+    for (const auto& d : dims_) defaults.push_back(std::stod(base_.values.at(d.param.name)));
+
+    json doc = header();
+    const std::string trainKey = "train_" + e_.metric, validationKey = "validation_" + e_.metric;
+    doc["default"] = summary(defaults, "none", 0);
+    if (!opt_.quiet)
+        fmt::print(stderr, "tune: default  train {} {:.6g}  validation {:.6g}\n", e_.metric,
+                   doc["default"][trainKey].get<double>(), doc["default"][validationKey].get<double>());
+
+    std::vector<double> u;
+    for (size_t i = 0; i < dims_.size(); ++i) u.push_back(dims_[i].toUnit(defaults[i]));
+    const std::string algo = search(u, t0);
     std::vector<double> best = values(bestU_.empty() ? u : bestU_);
     doc["tuned"] = summary(best, algo, evals_);
     doc["trace"] = trace_;
     doc["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     doc["improved_validation"] =
         doc["tuned"][validationKey].get<double>() < doc["default"][validationKey].get<double>();
-    if (!opt_.quiet)
+    if (!opt_.quiet) {
         for (const auto& b : doc["tuned"]["at_bound"])
             fmt::print(stderr,
                        "tune: warning: {} = {:.6g} ended within 1 % of the search range from its {} bound {:.6g}: "
                        "the optimum may lie beyond it (the ranges: tune.json, \"search\")\n",
                        b["param"].get<std::string>(), b["value"].get<double>(), b["bound"].get<std::string>(),
                        b["limit"].get<double>());
-    if (!opt_.quiet)
         fmt::print(stderr, "tune: tuned {}  train {} {:.6g}  validation {:.6g}  ({} evaluations, {:.1f} s)\n",
                    doc["tuned"]["params"].dump(), e_.metric, doc["tuned"][trainKey].get<double>(),
                    doc["tuned"][validationKey].get<double>(), evals_, doc["seconds"].get<double>());
+    }
     return doc;
 }
 
