@@ -29,7 +29,7 @@ TEST(Spec, DefaultsAndValues)
     EXPECT_EQ(s.str("pattern"), "halton");
     EXPECT_EQ(s.integer("seed"), 0);  // default filled in
     EXPECT_EQ(s.given.size(), 2u);
-    EXPECT_EQ(s.canonical(), "mc:lookup=lut,n=40,pattern=halton,seed=0,specialize=auto");
+    EXPECT_EQ(s.canonical(), "mc:extra=0,lookup=lut,n=40,pattern=halton,seed=0,specialize=auto");
     EXPECT_EQ(s.paramsJson()["n"], 40);
     EXPECT_EQ(parseSpec("reference").num("tol"), 1e-5);
     EXPECT_EQ(parseSpec("point:").name, "point");
@@ -45,7 +45,7 @@ TEST(Spec, ErrorsNameWhatIsValid)
     // Unknown key: the valid keys are listed.
     e = errorOf("mc:samples=3");
     EXPECT_NE(e.find("unknown parameter 'samples'"), std::string::npos) << e;
-    EXPECT_NE(e.find("n, pattern, seed"), std::string::npos) << e;
+    EXPECT_NE(e.find("n, extra, pattern, seed"), std::string::npos) << e;
     // cp has no skew (np and mrp do); its keys are listed
     e = errorOf("cp:skew=0.1");
     EXPECT_NE(e.find("unknown parameter 'skew'"), std::string::npos) << e;
