@@ -1,121 +1,148 @@
 // cubature_options.cpp -- see cubature_options.h.
 #include "methods/cubature_options.h"
 
+#include "math/kmath.h"
+#include "methods/straight.h"
 #include "util/error.h"
 
 #include <fmt/format.h>
 
-#include <array>
-#include <cmath>
+#include <algorithm>
 #include <sstream>
 
 namespace lb::methods {
-namespace {
 
-// Dynamic point names and their bits (kernels/common/cubature.h LB_CUB_*).
-struct DynName {
-    const char* name;
-    int bit;
-};
-constexpr DynName kDyn[] = {{"cp", 1}, {"np", 2}, {"mrp", 4}, {"barycentre", 8}, {"bary", 8}, {"barycenter", 8}};
-
-int choose(const std::string& key, const std::string& v, std::initializer_list<const char*> names)
+const std::vector<Param>& cubatureParams()
 {
-    int i = 0;
-    std::string all;
-    for (const char* n : names) {
-        if (v == n) return i;
-        all += (i ? " | " : "") + std::string(n);
-        ++i;
-    }
-    throw InputError(fmt::format("cubature: {}={} is not one of {}", key, v, all));
+    // Ranges from geometry (a tuner searches them): plane_eps up to 1 m, the
+    // side of the normalized scene's light (a larger shift moves the receiver
+    // farther than the light is wide); corner_inset the whole way from the
+    // corner (0) to the corner mean (1); blend_dist down to 0.4 m, 2/3 of the
+    // nearest light-centre distance of the published scenes (0.6 m at h =
+    // 0.1): below it every pixel is already pure grid MC; area_q from 0.1
+    // (the area rule only within a tenth of the light's size: its error there
+    // exceeds 100 %) to 10 (far field only); area_sin over the whole range of
+    // an elevation's sine.
+    static const std::vector<Param> params = {
+        Param::choice("triangulation", "fan", {"fan", "delaunay"},
+                      "fan around the first dynamic point (paper 5.2) or Delaunay by Lawson flips (thesis 5.2); "
+                      "fan accepts at most one dynamic point"),
+        Param::choice("weighting", "average", {"sample", "average", "dotout"},
+                      "per-sample weights: sample (paper Eq. 9), average (Eq. 10), dotout (by |n_L . d|)"),
+        Param::choice("normalize", "none", {"none", "formfactor"},
+                      "formfactor: cosine-weighted mean radiance times the exact Lambert irradiance of the clipped "
+                      "light (thesis Eq. 5.11)"),
+        Param::list("dynamic", "cp", {"cp", "np", "mrp", "barycentre", "none"},
+                    "dynamic points added to the clipped light's corners ('+'-joined; none = corners only)"),
+        Param::real("plane_eps", 1e-3, 1e-6, 1.0, Scale::Log,
+                    "receivers closer than this (m) to the light's plane are moved to this distance (paper 5.3)"),
+        Param::real("horizon_eps", 0.0, 0.0, 0.5, Scale::Linear,
+                    "clip the light at n_x . (p - x) >= this (m): the tilted horizon of thesis 5.2.4 (it used 0.1)"),
+        Param::real("corner_inset", 0.0, 0.0, 1.0, Scale::Linear,
+                    "the corner samples look the radiance up this fraction of the way towards the clipped light's "
+                    "corner mean (0 = at the corners; the triangles keep their weights)"),
+        Param::real("dyn_weight", 1.0, 0.0, 4.0, Scale::Linear,
+                    "scale of the dynamic samples' weights, all weights rescaled to the same sum (1 = the "
+                    "triangulation's weights)"),
+        Param::real(
+            "blend_dist", 1e6, 0.4, 1e6, Scale::Log,
+            "beyond this distance (m) from the light's centre the result blends linearly into a 3 x 3 grid "
+            "MC estimate, fully MC from 1.5x on (thesis 6.6; the default 1e6 = never: beyond every scene of the "
+            "suite, the h = 1000 far-field stability cases included)"),
+        lookupParam("lut", "intensity lookup: trig-free table (photometry/lut.h, as mc) or the exact bilinear one"),
+        specializeParam("auto: smallest kernel for the scene (methods/specialize.h: the straight-line fan, or "
+                        "Delaunay over cp+barycentre, of an unclipped rectangle; 1D table); none: the general one"),
+        lanesParam("pixels per work-item of the straight-line forms (float, lut): 8 = float8 code, "
+                   "auto = 8 on CPU devices (PoCL), 1 elsewhere"),
+        Param::choice("area", "none", {"none", "gauss2", "gauss3"},
+                      "blend in the area form of the integral (I cos / r^2 over the light, no 1/cos: finite in the "
+                      "light's plane) by the n x n Gauss-Legendre rule, n = 2 or 3, away from the light"),
+        Param::real("area_q", kDefaultAreaQ, 0.1, 10.0, Scale::Log,
+                    "with area: the cubature alone within area_q/2 light sizes (longer side) of the light, the area "
+                    "rule alone beyond area_q, smoothstep between"),
+        Param::real("area_sin", kDefaultAreaSin, 0.0, 1.0, Scale::Linear,
+                    "with area: the cubature alone where the light's farthest point is seen at an elevation "
+                    "sin(beta) >= area_sin above the light's plane, the area rule alone below area_sin/2 (0: never "
+                    "by elevation)"),
+    };
+    return params;
 }
 
-double nonNegative(const std::string& key, const std::string& v)
+namespace {
+
+// The kernel's bit of each of the `dynamic` parameter's points, in the order
+// of its choices (cubatureParams; "none" last, no bit).
+constexpr int kDynamicBits[] = {LB_CUB_CP, LB_CUB_NP, LB_CUB_MRP, LB_CUB_BARY};
+
+const Param& param(const std::string& key)
 {
-    size_t used = 0;
-    double d = 0;
-    try {
-        d = std::stod(v, &used);
-    } catch (const std::exception&) {
-        used = 0;
+    const auto& ps = cubatureParams();
+    auto it = std::find_if(ps.begin(), ps.end(), [&](const Param& p) { return p.name == key; });
+    if (it == ps.end()) {
+        std::string names;
+        for (const auto& p : ps) names += (names.empty() ? "" : ", ") + p.name;
+        throw InputError(fmt::format("method cubature: unknown parameter '{}'; valid: {}", key, names));
     }
-    if (used != v.size() || v.empty() || !std::isfinite(d) || d < 0)
-        throw InputError(fmt::format("cubature: {}={} is not a finite number >= 0", key, v));
-    return d;
+    return *it;
+}
+
+int choiceIndex(const Param& p, const std::string& canonical)
+{
+    return static_cast<int>(std::find(p.choices.begin(), p.choices.end(), canonical) - p.choices.begin());
 }
 
 }  // namespace
 
 int parseDynamicSet(const std::string& s)
 {
-    if (s == "none") return 0;
+    const Param& p = param("dynamic");
+    const std::string c = p.canonical("cubature", s);
+    if (c == "none") return 0;
     int mask = 0;
-    std::stringstream in(s);
+    std::stringstream in(c);
     std::string item;
     while (std::getline(in, item, '+')) {
-        int bit = 0;
-        for (const auto& d : kDyn)
-            if (item == d.name) bit = d.bit;
-        if (!bit)
-            throw InputError(fmt::format("cubature: dynamic={}: unknown point '{}' (expected cp, np, mrp, "
-                                         "barycentre joined by '+', or none)",
-                                         s, item));
-        mask |= bit;
+        if (item == "none")
+            throw InputError(fmt::format("method cubature: bad value '{}' for dynamic: none stands alone", s));
+        mask |= kDynamicBits[choiceIndex(p, item)];
     }
-    if (s.empty()) throw InputError("cubature: dynamic= is empty (use none for corners only)");
     return mask;
 }
 
 std::string dynamicSetName(int mask)
 {
+    const Param& p = param("dynamic");
     std::string out;
-    for (int i = 0; i < 4; ++i)
-        if (mask & kDyn[i].bit) out += (out.empty() ? "" : "+") + std::string(kDyn[i].name);
+    for (size_t i = 0; i < std::size(kDynamicBits); ++i)
+        if (mask & kDynamicBits[i]) out += (out.empty() ? "" : "+") + p.choices[i];
     return out.empty() ? "none" : out;
 }
 
+CubatureOptions::CubatureOptions() { *this = parse({}); }
+
 CubatureOptions CubatureOptions::parse(const std::map<std::string, std::string>& kv)
 {
-    CubatureOptions o;
-    for (const auto& [k, v] : kv) {
-        if (k == "triangulation")
-            o.triangulation = choose(k, v, {"fan", "delaunay"});
-        else if (k == "weighting")
-            o.weighting = choose(k, v, {"sample", "average", "dotout"});
-        else if (k == "normalize")
-            o.formfactor = choose(k, v, {"none", "formfactor"}) == 1;
-        else if (k == "dynamic")
-            o.dynamic = parseDynamicSet(v);
-        else if (k == "plane_eps")
-            o.planeEps = nonNegative(k, v);
-        else if (k == "horizon_eps")
-            o.horizonEps = nonNegative(k, v);
-        else if (k == "corner_inset")
-            o.cornerInset = nonNegative(k, v);
-        else if (k == "dyn_weight")
-            o.dynWeight = nonNegative(k, v);
-        else if (k == "blend_dist")
-            o.blendDist = nonNegative(k, v);
-        else if (k == "lookup")
-            o.lut = choose(k, v, {"lut", "exact"}) == 0;
-        else if (k == "specialize")
-            o.specialize = choose(k, v, {"auto", "none"}) == 0;
-        else if (k == "lanes")
-            o.lanes = std::array<int, 3>{0, 1, 8}[choose(k, v, {"auto", "1", "8"})];
-        else if (k == "area")
-            o.area = std::array<int, 3>{0, 2, 3}[choose(k, v, {"none", "gauss2", "gauss3"})];
-        else if (k == "area_q")
-            o.areaQ = nonNegative(k, v);
-        else if (k == "area_sin")
-            o.areaSin = nonNegative(k, v);
-        else
-            throw InputError(
-                fmt::format("cubature: unknown parameter '{}' (expected triangulation, weighting, "
-                            "normalize, dynamic, plane_eps, horizon_eps, corner_inset, dyn_weight, blend_dist, "
-                            "lookup, specialize, lanes, area, area_q, area_sin)",
-                            k));
-    }
+    std::map<std::string, std::string> v;  // canonical text of every key
+    for (const auto& p : cubatureParams()) v[p.name] = p.def;
+    for (const auto& [k, value] : kv) v[k] = param(k).canonical("cubature", value);
+    auto index = [&](const char* k) { return choiceIndex(param(k), v.at(k)); };
+    auto real = [&](const char* k) { return std::stod(v.at(k)); };
+    CubatureOptions o(NoDefaults{});
+    o.triangulation = index("triangulation");
+    o.weighting = index("weighting");
+    o.formfactor = v.at("normalize") == "formfactor";
+    o.dynamic = parseDynamicSet(v.at("dynamic"));
+    o.planeEps = real("plane_eps");
+    o.horizonEps = real("horizon_eps");
+    o.cornerInset = real("corner_inset");
+    o.dynWeight = real("dyn_weight");
+    o.blendDist = real("blend_dist");
+    o.lut = v.at("lookup") == "lut";
+    o.specialize = v.at("specialize") == "auto";
+    o.lanes = v.at("lanes");
+    o.area = v.at("area") == "none" ? 0 : v.at("area").back() - '0';  // gaussN
+    o.areaQ = real("area_q");
+    o.areaSin = real("area_sin");
     return o;
 }
 
@@ -123,27 +150,6 @@ std::string CubatureOptions::defines() const
 {
     return fmt::format("-DLB_CUB_TRI={} -DLB_CUB_WEIGHT={} -DLB_CUB_NORMALIZE={} -DLB_CUB_DYNAMIC={}{}", triangulation,
                        weighting, formfactor ? 1 : 0, dynamic, area ? fmt::format(" -DLB_CUB_AREA={}", area) : "");
-}
-
-std::map<std::string, std::string> CubatureOptions::describe() const
-{
-    const char* tri[] = {"fan", "delaunay"};
-    const char* wt[] = {"sample", "average", "dotout"};
-    return {{"triangulation", tri[triangulation]},
-            {"weighting", wt[weighting]},
-            {"normalize", formfactor ? "formfactor" : "none"},
-            {"dynamic", dynamicSetName(dynamic)},
-            {"plane_eps", fmt::format("{}", planeEps)},
-            {"horizon_eps", fmt::format("{}", horizonEps)},
-            {"corner_inset", fmt::format("{}", cornerInset)},
-            {"dyn_weight", fmt::format("{}", dynWeight)},
-            {"blend_dist", fmt::format("{}", blendDist)},
-            {"lookup", lut ? "lut" : "exact"},
-            {"specialize", specialize ? "auto" : "none"},
-            {"lanes", lanes == 0 ? "auto" : std::to_string(lanes)},
-            {"area", area == 0 ? "none" : "gauss" + std::to_string(area)},
-            {"area_q", fmt::format("{}", areaQ)},
-            {"area_sin", fmt::format("{}", areaSin)}};
 }
 
 }  // namespace lb::methods

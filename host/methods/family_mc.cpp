@@ -20,10 +20,8 @@ void registerMc(Registry& r)
                     false),
         Param::choice("pattern", "poisson", {"poisson", "halton", "stratified", "random"}, "point set"),
         Param::integer("seed", 0, 0, 4294967295L, Scale::Linear, "seed of the point set (halton: 0 = unshifted)"),
-        Param::choice("lookup", "lut", {"lut", "exact"},
-                      "intensity lookup: trig-free table (photometry/lut.h) or the exact bilinear one"),
-        Param::choice("specialize", "auto", {"auto", "none"},
-                      "auto: smallest kernel for the scene (methods/specialize.h); none: the general one"),
+        lookupParam("lut", "intensity lookup: trig-free table (photometry/lut.h) or the exact bilinear one"),
+        specializeParam("auto: smallest kernel for the scene (methods/specialize.h); none: the general one"),
     };
     f.defines = [](const MethodSpec&) { return std::string(); };
     f.sceneDefines = [](const MethodSpec& s, const Scene& scene, const photometry::Table& t) {

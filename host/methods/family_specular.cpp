@@ -49,9 +49,9 @@ Family specularMc()
                       "light: fixed point set on the light; vndf: GGX visible normals, per pixel; mis: both"),
         Param::choice("pattern", "poisson", {"poisson", "halton", "stratified", "random"}, "point set on the light"),
         Param::integer("seed", 0, 0, 2147483647L, Scale::Linear, "seed of the point set and the VNDF hash"),
-        Param::choice("lookup", "lut", {"lut", "exact"},
-                      "intensity lookup: the trig-free table (photometry/lut.h), as ltc and the diffuse mc, or "
-                      "the exact bilinear one"),
+        lookupParam("lut",
+                    "intensity lookup: the trig-free table (photometry/lut.h), as ltc and the diffuse mc, or "
+                    "the exact bilinear one"),
     };
     f.lumBuffer = lookupBuffer;
     f.defines = [](const MethodSpec& s) {
@@ -92,9 +92,9 @@ Family specularLtc()
                     "cubature: receivers closer than this (m) to the light's plane are moved to it (paper 5.3)"),
         Param::real("horizon_eps", 0.0, 0.0, 0.5, Scale::Linear,
                     "cubature: clip the light at n_x . (p - x) >= this (m) (thesis 5.2.4)"),
-        Param::choice("lookup", "lut", {"lut", "exact"},
-                      "intensity lookup: trig-free table (photometry/lut.h, as cubature's default) or the exact "
-                      "bilinear one"),
+        lookupParam("lut",
+                    "intensity lookup: trig-free table (photometry/lut.h, as cubature's default) or the exact "
+                    "bilinear one"),
     };
     f.lumBuffer = lookupBuffer;
     f.defines = [](const MethodSpec& s) {

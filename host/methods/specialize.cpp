@@ -1,6 +1,7 @@
 #include "methods/specialize.h"
 
 #include "math/kmath.h"
+#include "methods/straight.h"
 #include "photometry/lut.h"
 
 #include <algorithm>
@@ -120,8 +121,7 @@ namespace lb::methods {
 int cubatureLanes(const Specialization& s, const CubatureOptions& o, const std::string& deviceType, bool dbl)
 {
     if (!(s.rectFan || s.rectDel) || !s.lut || dbl) return 1;
-    if (o.lanes > 0) return o.lanes;
-    return deviceType == "CPU" ? 8 : 1;
+    return lanesFor(o.lanes, deviceType);
 }
 
 }  // namespace lb::methods

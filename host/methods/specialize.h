@@ -107,9 +107,8 @@ Specialization analyse(const Scene& scene, const photometry::Table& table, bool 
 // apply to cubature.cl). o.lut and o.specialize choose as for mc.
 Specialization analyseCubature(const Scene& scene, const photometry::Table& table, const CubatureOptions& o);
 
-// Pixels per work-item for the cubature: o.lanes (0 = 8 on a CPU device, 1
-// elsewhere) where a straight-line form (rectFan, rectDel) runs in float with
-// the LUT, else 1.
+// Pixels per work-item for the cubature: o.lanes (lanesFor, methods/straight.h)
+// where a straight-line form (rectFan, rectDel) runs in float with the LUT, else 1.
 int cubatureLanes(const Specialization& s, const CubatureOptions& o, const std::string& deviceType, bool dbl);
 
 // Whether the receiver normal is perpendicular to the light's u axis, exactly

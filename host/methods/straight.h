@@ -30,6 +30,15 @@ using StraightApplies = std::function<bool(const Scene&, const MethodSpec&)>;
 
 void addStraightLineOptions(Family& f, const std::string& define, StraightApplies applies);
 
+// The three parameters, each declared here once (choices, default); the
+// meaning is the family's. lookup's default differs between families.
+Param lookupParam(const std::string& def, const std::string& meaning);
+Param specializeParam(const std::string& meaning);
+Param lanesParam(const std::string& meaning);
+// Pixels per work-item for lanes=auto|1|8 where a lane form applies:
+// auto = 8 on CPU devices (ocl::DeviceInfo::type "CPU"), 1 elsewhere.
+int lanesFor(const std::string& lanes, const std::string& deviceType);
+
 // The `lum` buffer (Family::lumBuffer) of a family with the `lookup`
 // parameter: the trig-free table of photometry/lut.h for lookup=lut, else the
 // exact one. These families (and mc, the specular mc and ltc) use it.

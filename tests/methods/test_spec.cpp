@@ -2,8 +2,10 @@
 #include "methods/registry.h"
 #include "methods/samples.h"
 #include "methods/spec.h"
+#include "testutil.h"
 #include "util/error.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <string>
@@ -110,6 +112,88 @@ TEST(Samples, SetsAreDeterministicInRangeAndDistinctBySeed)
     };
     EXPECT_GT(mind(samplePoints("poisson", 64, 3)), 0.4 / 8);
     EXPECT_THROW(samplePoints("sobol", 4, 0), InputError);
+}
+
+// Values of a parameter that its table allows: each choice (alone, for a
+// list), or the bounds and the default of a number.
+std::vector<std::string> validValues(const Param& p)
+{
+    if (p.kind == Kind::Choice || p.kind == Kind::List) return p.choices;
+    if (p.kind == Kind::Int) return {fmt::format("{}", long(p.lo)), fmt::format("{}", long(p.hi)), p.def};
+    return {fmt::format("{}", p.lo), fmt::format("{}", p.hi), p.def};
+}
+
+// Every parameter of every family's table, each value it allows, through a
+// SPEC string and back: the parsed value is the table's canonical text, and
+// the canonical SPEC parses to the same values. A value the family's own
+// check refuses in combination with the defaults (e.g. a warp_stop past the
+// default RSM's levels) may throw, but never as a bad value, and every
+// parameter takes at least one of its values.
+TEST(Spec, EveryParameterRoundTripsThroughASpec)
+{
+    size_t checked = 0;
+    for (const auto& f : registry().all())
+        for (const auto& p : f.params) {
+            size_t accepted = 0;
+            for (const auto& v : validValues(p)) {
+                const std::string text = f.name + ":" + p.name + "=" + v;
+                MethodSpec s;
+                try {
+                    s = parseSpec(text, f.scenes.front());
+                } catch (const InputError& e) {
+                    EXPECT_EQ(std::string(e.what()).find("bad value"), std::string::npos) << text << ": " << e.what();
+                    continue;
+                }
+                ++accepted;
+                EXPECT_EQ(s.values.at(p.name), p.canonical(f.name, v)) << text;
+                EXPECT_EQ(parseSpec(s.canonical(), f.scenes.front()).values, s.values) << text;
+            }
+            EXPECT_GE(accepted, 1u) << f.name << " " << p.name;
+            ++checked;
+        }
+    EXPECT_GE(checked, 100u);  // every family's parameters (111 when written)
+}
+
+// A value outside each parameter's table: the error names the method, the
+// parameter, the value and what is allowed (Param::allowed).
+TEST(Spec, EveryParameterNamesItselfAndItsAllowedValuesOnABadValue)
+{
+    for (const auto& f : registry().all())
+        for (const auto& p : f.params) {
+            std::vector<std::string> bad = {"nonesuch"};
+            if (p.kind == Kind::Real || p.kind == Kind::Int)
+                bad.push_back(fmt::format("{}", p.hi + 1 + std::abs(p.hi)));
+            for (const auto& v : bad) {
+                const std::string text = f.name + ":" + p.name + "=" + v;
+                std::string e;
+                try {
+                    parseSpec(text, f.scenes.front());
+                } catch (const InputError& err) {
+                    e = err.what();
+                }
+                EXPECT_NE(e.find("method " + f.name), std::string::npos) << text << ": " << e;
+                EXPECT_NE(e.find("for " + p.name + ":"), std::string::npos) << text << ": " << e;
+                EXPECT_NE(e.find("'" + v + "'"), std::string::npos) << text << ": " << e;
+                EXPECT_NE(e.find(p.allowed()), std::string::npos) << text << ": " << e;
+            }
+        }
+}
+
+// At the command line: exit code 2 and the same message, for the first
+// parameter of each family (before any device is opened).
+TEST(Spec, BadParameterValueExitsWithCode2AtTheCli)
+{
+    for (const auto& f : registry().all()) {
+        if (f.params.empty()) continue;
+        const Param& p = f.params.front();
+        const std::string spec = f.name + ":" + p.name + "=nonesuch";
+        auto r = test::runCli(
+            "render --luminaire lambert --height 1 --rotation pi --res 4 --out /tmp/lb-never.exr --scene " +
+            sceneKindName(f.scenes.front()) + " --method " + spec);
+        EXPECT_EQ(r.code, 2) << spec << ": " << r.err;
+        EXPECT_NE(r.err.find("for " + p.name + ": expected " + p.allowed()), std::string::npos)
+            << spec << ": " << r.err;
+    }
 }
 
 }  // namespace
