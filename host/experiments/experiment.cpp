@@ -40,6 +40,7 @@ const std::set<std::string> kKeys = {"name",
                                      "extent",
                                      "reps",
                                      "equal_time_tolerance",
+                                     "equal_time_rounds",
                                      "save_images",
                                      "time_res",
                                      "scene",
@@ -163,6 +164,8 @@ void readSettings(const Reader& r, const Overrides& ov, Experiment& e)
     if (r.has("time_res")) e.timeRes = static_cast<int>(r.integer("time_res", 0, kMaxRes));
     if (ov.timeRes) e.timeRes = util::checkRange("--time-res", *ov.timeRes, 0, kMaxRes);
     if (r.has("equal_time_tolerance")) e.equalTimeTolerance = r.number("equal_time_tolerance", 0.001, 10);
+    if (r.has("equal_time_rounds"))
+        e.equalTimeRounds = static_cast<int>(r.integer("equal_time_rounds", kMinExperimentReps, ocl::kMaxReps));
     if (r.has("save_images")) e.saveImages = r.boolean("save_images");
 }
 

@@ -53,6 +53,10 @@ struct Experiment {
     int reps = 5;
     int timeRes = 512;  // methods are timed at time_res^2 pixels (DESIGN 6); 0 = at the image's res
     double equalTimeTolerance = 0.10;
+    // Alternating rounds (method, MC candidates) per equal-time pairing; the
+    // ratio is the median of the rounds' ratios. More than `reps`: the pairing
+    // decides the verdict, and a round is a few launches.
+    int equalTimeRounds = 11;
     bool saveImages = false;
     SceneKindKeys sceneKeys;  // scene, alpha, eye, albedo
     SceneKind kind() const { return sceneKeys.kind; }

@@ -273,7 +273,7 @@ struct EqualTimeSearch {
     {
         std::vector<std::function<cl::Event()>> launches = {[&] { return pm.launch(0, ts.res); }};
         for (methods::Prepared* p : mcs) launches.push_back([p, this] { return p->launch(0, ts.res); });
-        return sr.rt.timeInterleaved(launches, std::max(1, sr.e.reps), 1);
+        return sr.rt.timeInterleaved(launches, sr.e.equalTimeRounds, 1);
     }
     // The median of the rounds' ratios of MC k (1-based in tt) over the method.
     static double medianRatio(const std::vector<ocl::Timing>& tt, size_t k)

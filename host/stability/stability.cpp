@@ -128,6 +128,24 @@ const std::vector<Case>& catalogue()
              kPi / 2, "diffuse", 0.1, {0, 0, 3}, Expect::Finite, false, true);
         spec("spec_behind", "specular: up-light facing down, the receiver behind its emission: exactly 0", 1, kPi,
              "stab:upward", 0.25, {0, 4, 2}, Expect::Zero, true);
+        // The indirect scene (DESIGN 9): the room's extremes. The light's
+        // corners must lie strictly inside the room (Scene::validate).
+        auto room = [&](const char* name, const char* what, double h, double R, double w, double l, const char* lum,
+                        double albedo, Expect e = Expect::Finite, bool quick = false) {
+            add(name, what, h, R, w, l, lum, e, quick);
+            v.back().kind = SceneKind::Indirect;
+            v.back().albedo = albedo;
+        };
+        room("ind_ceiling", "indirect: up-light 1 mm below the ceiling (a stiff bounce source: E_dir ~ 1/r^2 there)",
+             2.499, kPi, 1, 1, "updown", 0.5, Expect::Finite, true);
+        room("ind_wall_gap", "indirect: 4.98 m x 0.5 m light, its ends 1 cm from two walls, h = 1.1", 1.1, kPi, 4.98,
+             0.5, "diffuse", 0.5);
+        room("ind_floor_graze", "indirect: vertical light 1 mm above the floor (h = 1e-3, R = pi/2)", 1e-3, kPi / 2, 1,
+             1, "lambert", 0.5);
+        room("ind_black", "indirect: albedo 0, nothing bounces: exactly 0", 1.1, 3 * kPi / 4, 1, 1, "diffuse", 0.0,
+             Expect::Zero, true);
+        room("ind_outside", "indirect: light through the ceiling (h = 2.9, R = pi/2): a clear InputError", 2.9, kPi / 2,
+             1, 1, "lambert", 0.5, Expect::Rejected, true);
         return v;
     }();
     return cases;
