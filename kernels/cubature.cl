@@ -14,6 +14,9 @@
  *                     decides it per scene)
  *   LB_CUB_RECT_DEL   nothing clipped, Delaunay over corners + CP + barycentre: the
  *                     straight-line lb_cub_rect_del
+ *   LB_CUB_RECT_DELALL nothing clipped, receiver normal perpendicular to u, Delaunay over
+ *                     corners + CP + NP + MRP + barycentre: the straight-line
+ *                     lb_cub_rect_delall
  *   LB_CUB_RECT_CLIP  with LB_CUB_RECT_FAN or _DEL: the horizon cuts the light, along
  *                     its u edges (receiver normal perpendicular to u, as in every
  *                     normalized scene): the forms run on the rectangle it leaves
@@ -33,7 +36,7 @@
  * LB_CUB_AREA = n (2 or 3) the n x n Gauss rule of the area form is blended in
  * away from the light and towards its plane (lb_area_weight).
  *
- * @variants: "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL" | "-DLB_CUB_RECT_FAN -DLB_CUB_BLEND" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_CUB_BLEND -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_NORMALIZE=1" | "" | "-DLB_CUB_TRI=1" | "-DLB_CUB_TRI=1 -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=15" | "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_DYNAMIC=0" | "-DLB_LUT" | "-DLB_LUT -DLB_CUB_RECT_FAN" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_RECT_FAN -DLB_CUB_RECT_CLIP -DLB_CUB_BLEND" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_CUB_RECT_CLIP -DLB_LANES=8" | "-DLB_CUB_AREA=2" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_CUB_RECT_CLIP -DLB_CUB_AREA=3 -DLB_LANES=8" | "-DLB_CUB_RECT_DEL -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_AREA=3"
+ * @variants: "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL" | "-DLB_CUB_RECT_FAN -DLB_CUB_BLEND" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_CUB_BLEND -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_NORMALIZE=1" | "" | "-DLB_CUB_TRI=1" | "-DLB_CUB_TRI=1 -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=15" | "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_DYNAMIC=0" | "-DLB_LUT" | "-DLB_LUT -DLB_CUB_RECT_FAN" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_RECT_FAN -DLB_CUB_RECT_CLIP -DLB_CUB_BLEND" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_CUB_RECT_CLIP -DLB_LANES=8" | "-DLB_CUB_AREA=2" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_CUB_RECT_CLIP -DLB_CUB_AREA=3 -DLB_LANES=8" | "-DLB_CUB_RECT_DEL -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_AREA=3" | "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=15 -DLB_CUB_RECT_DELALL" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=15 -DLB_CUB_RECT_DELALL -DLB_CUB_BLEND -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_NORMALIZE=1"
  */
 #include "common/lbmath.h"
 
@@ -59,7 +62,11 @@
  * barycentre; (e, triangles, flips) of one pixel or eight. */
 /* On the rectangle [ou, ou + W] x [v0c, v0c + lc] at height hc: the light, or
  * with LB_CUB_RECT_CLIP what the horizon leaves of it (lb_cub_rect_clip). */
-#if defined(LB_CUB_RECT_DEL)
+#if defined(LB_CUB_RECT_DELALL)
+#define LB_CUB_RECT_CALL(s, nt, nf)                                                                             \
+    lb_cub_rect_delall##s(lum, ou, v0c, hc, P[LB_P_W], lc, R(1) / (P[LB_P_W] * P[LB_P_L]), au, av, an,              \
+                          LB_CUB_WEIGHT, LB_CUB_NORMALIZE, corner_inset, dyn_weight, want_stats, &nt, &nf)
+#elif defined(LB_CUB_RECT_DEL)
 #define LB_CUB_RECT_CALL(s, nt, nf)                                                                             \
     lb_cub_rect_del##s(lum, ou, v0c, hc, P[LB_P_W], lc, R(1) / (P[LB_P_W] * P[LB_P_L]), au, av, an, LB_CUB_WEIGHT,          \
                        LB_CUB_NORMALIZE, corner_inset, dyn_weight, &nt, &nf)

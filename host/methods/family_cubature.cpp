@@ -101,7 +101,7 @@ Family cubatureFamily()
         c.realArg("area_q", o.areaQ);
         c.realArg("area_sin", o.areaSin);
     };
-    f.straightDefines = {"-DLB_CUB_RECT_FAN", "-DLB_CUB_RECT_DEL"};
+    f.straightDefines = {"-DLB_CUB_RECT_FAN", "-DLB_CUB_RECT_DEL", "-DLB_CUB_RECT_DELALL"};
     f.benchSpecs = {"cubature:lanes=1", "cubature:specialize=none,lookup=exact",
                     "cubature:triangulation=delaunay,dynamic=cp+barycentre",
                     "cubature:triangulation=delaunay,dynamic=cp+np+mrp+barycentre",

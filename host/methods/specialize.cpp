@@ -18,8 +18,9 @@ std::string Specialization::defines() const
     if (noBack) d += " -DLB_NO_BACK";
     if (rectFan) d += " -DLB_CUB_RECT_FAN";
     if (rectDel) d += " -DLB_CUB_RECT_DEL";
-    if ((rectFan || rectDel) && rectClip) d += " -DLB_CUB_RECT_CLIP";
-    if ((rectFan || rectDel) && blend) d += " -DLB_CUB_BLEND";
+    if (rectDelAll) d += " -DLB_CUB_RECT_DELALL";
+    if ((rectFan || rectDel || rectDelAll) && rectClip) d += " -DLB_CUB_RECT_CLIP";
+    if ((rectFan || rectDel || rectDelAll) && blend) d += " -DLB_CUB_BLEND";
     return d;
 }
 
@@ -31,7 +32,8 @@ nlohmann::json Specialization::json() const
             {"no_back", noBack},
             {"rect_fan", rectFan},
             {"rect_del", rectDel},
-            {"rect_clip", (rectFan || rectDel) && rectClip},
+            {"rect_del_all", rectDelAll},
+            {"rect_clip", (rectFan || rectDel || rectDelAll) && rectClip},
             {"blend", blend}};
 }
 
@@ -98,6 +100,11 @@ Specialization analyseCubature(const Scene& scene, const photometry::Table& tabl
     bool clipAlongU = !unclipped && horizonAlongU(scene) && (fanCp || delCpBary) && o.dynamic != 0 && !o.formfactor;
     s.rectFan = fanCp && (unclipped || clipAlongU);
     s.rectDel = delCpBary && (unclipped || clipAlongU);
+    // Delaunay over corners + CP + NP + MRP + barycentre: the three dynamic
+    // points on one line of constant u needs the receiver normal
+    // perpendicular to u (exactly, as the clip along u does).
+    bool delAll = o.triangulation == 1 && o.dynamic == (1 | 2 | 4 | 8) && horizonAlongU(scene);
+    s.rectDelAll = delAll && unclipped;
     s.rectClip = clipAlongU;
     s.blend = !noBlend;
     return s;
@@ -120,7 +127,7 @@ namespace lb::methods {
 
 int cubatureLanes(const Specialization& s, const CubatureOptions& o, const std::string& deviceType, bool dbl)
 {
-    if (!(s.rectFan || s.rectDel) || !s.lut || dbl) return 1;
+    if (!(s.rectFan || s.rectDel || s.rectDelAll) || !s.lut || dbl) return 1;
     return lanesFor(o.lanes, deviceType);
 }
 

@@ -72,6 +72,13 @@
 //              dynamic=cp+barycentre: LB_CUB_RECT_DEL, lb_cub_rect_del of
 //              common/cubature_lanes.inc (the two edges that can flip decided
 //              by the same in-circle test, no loops).
+//   rectDelAll (cubature) triangulation=delaunay with dynamic=cp+np+mrp+
+//              barycentre where nothing is clipped and the receiver normal is
+//              perpendicular to the light's u axis (horizonAlongU: then NP,
+//              MRP and CP lie on one line of constant u): LB_CUB_RECT_DELALL,
+//              lb_cub_rect_delall of common/cubature_lanes.inc (two ladders
+//              of two decisions each and the barycentre's cavity; the
+//              structure and its brute-force checks are described there).
 #pragma once
 
 #include "methods/cubature_options.h"
@@ -92,8 +99,9 @@ struct Specialization {
     bool noBack = false;  // LB_NO_BACK
     bool rectFan = false;  // LB_CUB_RECT_FAN (cubature only)
     bool rectDel = false;  // LB_CUB_RECT_DEL (cubature only)
+    bool rectDelAll = false;  // LB_CUB_RECT_DELALL (cubature only)
     bool rectClip = false;  // LB_CUB_RECT_CLIP: with rectFan / rectDel, the horizon cuts along u
-    bool blend = false;  // LB_CUB_BLEND: some pixel blends (with rectFan / rectDel)
+    bool blend = false;  // LB_CUB_BLEND: some pixel blends (with a straight-line form)
 
     std::string defines() const;  // " -DLB_LUT ..." (leading space when not empty)
     nlohmann::json json() const;
@@ -108,7 +116,7 @@ Specialization analyse(const Scene& scene, const photometry::Table& table, bool 
 Specialization analyseCubature(const Scene& scene, const photometry::Table& table, const CubatureOptions& o);
 
 // Pixels per work-item for the cubature: o.lanes (lanesFor, methods/straight.h)
-// where a straight-line form (rectFan, rectDel) runs in float with the LUT, else 1.
+// where a straight-line form (rectFan, rectDel, rectDelAll) runs in float with the LUT, else 1.
 int cubatureLanes(const Specialization& s, const CubatureOptions& o, const std::string& deviceType, bool dbl);
 
 // Whether the receiver normal is perpendicular to the light's u axis, exactly

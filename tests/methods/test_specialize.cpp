@@ -451,6 +451,25 @@ TEST(Specialize, StraightLineFormsEqualGeneral)
     std::cout << "straight-line forms against the general kernels: float " << worst << ", double " << worstD << "\n";
 }
 
+// The Delaunay forms' scenes (45 x 45 pixels, odd: a column on u = 0): R = pi
+// puts pixels on the light's diagonals and centre, a 2 x 0.5 m light makes
+// unequal quadrants, and a 1.5 m extent (pixels every 1/30 m) puts many under
+// the light, on its diagonals and edges.
+std::vector<Scene> delaunayScenes()
+{
+    Scene wide = scene(0.3, 3 * M_PI / 4, 45);
+    wide.width = 2;
+    wide.length = 0.5;
+    Scene flat = scene(0.2, M_PI, 45);
+    flat.extent = 1.5;
+    return {scene(1.0, 3 * M_PI / 4, 45),
+            scene(0.1, M_PI / 2, 45),
+            scene(0.05, M_PI, 45),
+            scene(2.5, 5 * M_PI / 8, 45),
+            wide,
+            flat};
+}
+
 // The straight-line Delaunay over corners + CP + barycentre against the
 // general kernel (Lawson flips over the triangulation structure), with the
 // bounds of the rectangle fan above: double 1e-12; float 1e-6 of the double
@@ -464,17 +483,7 @@ TEST(Specialize, CubatureRectDelaunayEqualsGeneral)
 {
     LB_REQUIRE_RUNTIME(rt);
     auto asym = asymmetric();
-    Scene wide = scene(0.3, 3 * M_PI / 4, 45);
-    wide.width = 2;
-    wide.length = 0.5;
-    Scene flat = scene(0.2, M_PI, 45);
-    flat.extent = 1.5;  // pixels every 1/30 m: many under the light, on its diagonals
-    std::vector<Scene> scenes = {scene(1.0, 3 * M_PI / 4, 45),
-                                 scene(0.1, M_PI / 2, 45),
-                                 scene(0.05, M_PI, 45),
-                                 scene(2.5, 5 * M_PI / 8, 45),
-                                 wide,
-                                 flat};
+    std::vector<Scene> scenes = delaunayScenes();
     const std::string d = "cubature:triangulation=delaunay,dynamic=cp+barycentre";
     const std::vector<std::string> specs = {d,
                                             d + ",weighting=sample",
@@ -505,6 +514,82 @@ TEST(Specialize, CubatureRectDelaunayEqualsGeneral)
         }
     std::cout << "Delaunay cp + barycentre, straight-line against the general kernel: float " << worst
               << " (general float kernel against its double result: " << worstGeneral << "), double " << worstD << "\n";
+}
+
+// The straight-line Delaunay over corners + CP + NP + MRP + barycentre
+// (rule rectDelAll) against the general kernel, with the bounds of the forms
+// above: double 1e-12; float 1e-6 of the double general kernel or twice the
+// general float kernel's own worst error on the scene (formfactor 1e-4). The
+// scenes put pixels on the light's diagonals and centre (R = pi, odd
+// resolution), on its edges and corners (CP on the hull, NP clamped into a
+// corner), on the u = 0 line (odd resolution: the barycentre on the line of
+// CP, MRP and NP), and a 2 x 0.5 m light. Triangle counts equal in every
+// precision; flips: the general code's count depends on its sweep order
+// (common/cubature_lanes.inc), so the form reports the number of edges its
+// final triangulation does not share with the general code's starting one,
+// which is the general count up to the sweep's intermediate edges.
+TEST(Specialize, CubatureRectDelaunayAllEqualsGeneral)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    auto asym = asymmetric();
+    std::vector<Scene> scenes = delaunayScenes();
+    const std::string d = "cubature:triangulation=delaunay,dynamic=cp+np+mrp+barycentre";
+    const std::vector<std::string> specs = {d,
+                                            d + ",weighting=sample",
+                                            d + ",weighting=dotout",
+                                            d + ",corner_inset=0.3,dyn_weight=2",
+                                            d + ",plane_eps=0.05",
+                                            d + ",normalize=formfactor",
+                                            d + ",blend_dist=1.5",
+                                            d + ",area=gauss2"};
+    for (const auto& s : scenes) {
+        auto a = analyseCubature(s, asym, CubatureOptions::parse(parseSpec(d).values));
+        EXPECT_TRUE(a.rectDelAll) << s.describe();
+        EXPECT_FALSE(a.rectFan || a.rectDel) << s.describe();
+    }
+    // only that method, only where nothing is clipped, not with specialize=none
+    auto delAll = [&](const Scene& s, const std::string& spec) {
+        return analyseCubature(s, asym, CubatureOptions::parse(parseSpec(spec).values)).rectDelAll;
+    };
+    EXPECT_FALSE(delAll(scenes[0], d + ",specialize=none"));
+    EXPECT_FALSE(delAll(scenes[0], "cubature:triangulation=delaunay,dynamic=cp+np+barycentre"));
+    EXPECT_FALSE(delAll(scene(-0.2, 5 * M_PI / 8, 45), d));
+    Precision ref = rt->fp64() ? Precision::Double : Precision::Float;
+    double rel = rt->fp64() ? 1e-6 : 2e-5;
+    double worst = 0, worstD = 0, worstGeneral = 0, flipRatio = 1;
+    RenderOptions opt;
+    opt.reps = 1;
+    // worst relative difference; triangle counts equal, flips close
+    auto diff = [&](const Scene& s, const std::string& spec, Precision p, const std::string& lanes, Precision pr,
+                    double bound) {
+        auto gen = render(*rt, asym, s, parseSpec(spec + ",specialize=none"), pr, opt);
+        auto sp = render(*rt, asym, s, parseSpec(spec + ",lanes=" + lanes), p, opt);
+        EXPECT_NE(sp.stats.value("defines", std::string()).find("-DLB_CUB_RECT_DELALL"), std::string::npos);
+        double w = worstRelDiff(gen.image.px, sp.image.px, bound, spec + " lanes=" + lanes + " " + s.describe());
+        if (p != pr) gen = render(*rt, asym, s, parseSpec(spec + ",specialize=none"), p, opt);
+        EXPECT_EQ(gen.stats["triangles_per_pixel"], sp.stats["triangles_per_pixel"]) << spec << " " << s.describe();
+        double gf = gen.stats["flips_per_pixel"], sf = sp.stats["flips_per_pixel"];
+        // (on the host the form's count is never above the general code's,
+        // RectDelaunayAllEqualsGeneral; a kernel's rounding decides a few
+        // exactly cocircular quadrilaterals of these symmetric scenes
+        // otherwise)
+        EXPECT_NEAR(sf, gf, 0.05 * gf) << spec << " " << s.describe();
+        if (gf > 0) flipRatio = std::min(flipRatio, std::min(sf / gf, gf / sf));
+        return w;
+    };
+    for (const auto& s : scenes)
+        for (const auto& spec : specs) {
+            bool ff = spec.find("formfactor") != std::string::npos;
+            double g = rt->fp64() ? generalFloatError(*rt, asym, s, spec) : 0;
+            worstGeneral = std::max(worstGeneral, g);
+            for (const char* lanes : {"1", "8"})
+                worst = std::max(worst, diff(s, spec, Precision::Float, lanes, ref, std::max(ff ? 1e-4 : rel, 2 * g)));
+            if (rt->fp64()) worstD = std::max(worstD, diff(s, spec, Precision::Double, "1", Precision::Double, 1e-12));
+            if (HasFailure()) return;
+        }
+    std::cout << "Delaunay cp + np + mrp + barycentre, straight-line against the general kernel: float " << worst
+              << " (general float kernel against its double result: " << worstGeneral << "), double " << worstD
+              << "; flips per pixel within a factor " << flipRatio << " of the general kernel's\n";
 }
 
 }  // namespace
