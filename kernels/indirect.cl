@@ -25,11 +25,9 @@
  *   render         E_ind at each floor pixel from the virtual lights
  *                  (lb_val_irradiance: VPLs with the 1/r^2 clamp, VALs with
  *                  the point-to-disk form factor).
- * Texel layout (8 reals): position (3), normal (3), flux (lm), area (m^2).
- * Centre layout (8): position (3), normal (3), radiosity B = flux / area, 0.
- * Light layout (8): position (3), normal (3), flux, area (0: a VPL).
- * acrsm state (8 per cluster): u, v (texel coordinates), flag (0 active,
- * 1 to reseed, 2 seeded by a split, 3 merged), Halton generation, 4 unused.
+ * Texels, centres and lights: LB_IND_TEX reals each, laid out as
+ * common/indirect.h says (LB_IND_POS, _NRM, _FLUX, _AREA); acrsm's state of a
+ * cluster: IND_S_* below, LB_IND_TEX reals too (4 unused).
  * The room is convex and empty: no visibility anywhere (common/indirect.h).
  * @variants: "-DLB_RSM_DIRECT=0" | "-DLB_RSM_DIRECT=1" | "-DLB_RSM_DIRECT=2"
  */
@@ -41,10 +39,32 @@
 #define LB_RSM_DIRECT 1
 #endif
 
-#define IND_TEX 8
+/* acrsm's state of a cluster (LB_LB_IND_TEX reals; the layout at the top). */
+#define IND_S_U 0    /* texel coordinates of the centre */
+#define IND_S_V 1
+#define IND_S_FLAG 2 /* 0 active, 1 to reseed, 2 seeded by a split, 3 merged */
+#define IND_S_GEN 3  /* Halton generation */
+/* A cluster's sums over a texel row (km_partial) and over the map (km_reduce):
+ * area-weighted position (3), flux-weighted position (3), area-weighted
+ * normal (3), flux, area, area-weighted texel coordinates (2), and the
+ * largest squared distance of a member from the old centre (a maximum). */
 #define IND_PART 16
+#define IND_PS_APOS 0
+#define IND_PS_FPOS 3
+#define IND_PS_ANRM 6
+#define IND_PS_FLUX 9
+#define IND_PS_AREA 10
+#define IND_PS_U 11
+#define IND_PS_V 12
+#define IND_PS_R2 13
 /* b_max of the seed's Eq. 4.4: the room's diagonal. */
 #define IND_BMAX sqrt(R(4) * R(LB_ROOM_HALF) * R(LB_ROOM_HALF) * R(2) + R(LB_ROOM_HEIGHT) * R(LB_ROOM_HEIGHT))
+
+/* A texel's radiosity: its flux over its area (0 for a texel off the room). */
+LB_FN real ind_radiosity(__global const real* t)
+{
+    return t[LB_IND_AREA] > R(0) ? t[LB_IND_FLUX] / t[LB_IND_AREA] : R(0);
+}
 
 /* Direct irradiance at the wall point p with normal n. visibility: none (the
  * light is inside the convex room). */
@@ -89,14 +109,14 @@ __kernel void rsm(__global const real* P, __global const float* lum, __global re
         else
             k = lb_net_point(X, cy, &p, &n);
     }
-    __global real* t = tex + IND_TEX * (j * T + i);
+    __global real* t = tex + LB_IND_TEX * (j * T + i);
     real flux = R(0);
     if (k >= 0 && area > R(0))
         flux = P[LB_P_ALBEDO] * area * ind_direct(lum, lb_scene_light(P), p, n, rel_tol, max_splits, plane_eps);
-    t[0] = p.x; t[1] = p.y; t[2] = p.z;
-    t[3] = n.x; t[4] = n.y; t[5] = n.z;
-    t[6] = flux;
-    t[7] = k >= 0 ? area : R(0);
+    t[LB_IND_POS] = p.x; t[LB_IND_POS + 1] = p.y; t[LB_IND_POS + 2] = p.z;
+    t[LB_IND_NRM] = n.x; t[LB_IND_NRM + 1] = n.y; t[LB_IND_NRM + 2] = n.z;
+    t[LB_IND_FLUX] = flux;
+    t[LB_IND_AREA] = k >= 0 ? area : R(0);
 }
 
 __kernel void row_sums(__global const real* tex, int T, __global real* rowsum)
@@ -106,7 +126,7 @@ __kernel void row_sums(__global const real* tex, int T, __global real* rowsum)
         return;
     real s = R(0);
     for (int i = 0; i < T; ++i)
-        s += tex[IND_TEX * (j * T + i) + 6];
+        s += tex[LB_IND_TEX * (j * T + i) + LB_IND_FLUX];
     rowsum[j] = s;
 }
 
@@ -131,7 +151,7 @@ __kernel void sample(__global const real* tex, int T, __global const real* rowsu
     }
     int i = 0, last = -1;
     for (; i < T; ++i) {
-        real f = tex[IND_TEX * (j * T + i) + 6];
+        real f = tex[LB_IND_TEX * (j * T + i) + LB_IND_FLUX];
         if (f > R(0))
             last = i;
         if (f > R(0) && acc + f > target)
@@ -141,12 +161,14 @@ __kernel void sample(__global const real* tex, int T, __global const real* rowsu
     if (i >= T)
         i = last >= 0 ? last : 0; /* rounding at the row's end: its last lit texel */
     int idx = j * T + i;
-    __global const real* t = tex + IND_TEX * idx;
-    __global real* l = lights + IND_TEX * k;
-    for (int f = 0; f < 6; ++f)
-        l[f] = t[f];
-    l[6] = total / (real)N;
-    l[7] = R(0);
+    __global const real* t = tex + LB_IND_TEX * idx;
+    __global real* l = lights + LB_IND_TEX * k;
+    for (int f = 0; f < 3; ++f) {
+        l[LB_IND_POS + f] = t[LB_IND_POS + f];
+        l[LB_IND_NRM + f] = t[LB_IND_NRM + f];
+    }
+    l[LB_IND_FLUX] = total / (real)N;
+    l[LB_IND_AREA] = R(0);
     pick[k] = idx;
 }
 
@@ -156,43 +178,48 @@ __kernel void centres_from(__global const real* tex, __global const int* pick, i
     int k = get_global_id(0);
     if (k >= K)
         return;
-    __global const real* t = tex + IND_TEX * pick[k];
-    __global real* c = centres + IND_TEX * k;
-    for (int f = 0; f < 6; ++f)
-        c[f] = t[f];
-    c[6] = t[7] > R(0) ? t[6] / t[7] : R(0);
-    c[7] = R(0);
+    __global const real* t = tex + LB_IND_TEX * pick[k];
+    __global real* c = centres + LB_IND_TEX * k;
+    for (int f = 0; f < 3; ++f) {
+        c[LB_IND_POS + f] = t[LB_IND_POS + f];
+        c[LB_IND_NRM + f] = t[LB_IND_NRM + f];
+    }
+    c[LB_IND_FLUX] = ind_radiosity(t);
+    c[LB_IND_AREA] = R(0);
 }
 
 /* The seed's distance (Eq. 4.4): normalized Euclidean distance, 1 - |n_c . n|
  * and, for its importance, the relative difference of radiosity. */
 LB_FN real ind_metric(__global const real* c, __global const real* t, real wx, real wn, real wb)
 {
-    real dx = c[0] - t[0], dy = c[1] - t[1], dz = c[2] - t[2];
-    real b = t[7] > R(0) ? t[6] / t[7] : R(0);
-    real bs = c[6] + b;
+    real dx = c[LB_IND_POS] - t[LB_IND_POS], dy = c[LB_IND_POS + 1] - t[LB_IND_POS + 1],
+         dz = c[LB_IND_POS + 2] - t[LB_IND_POS + 2];
+    real b = ind_radiosity(t);
+    real bs = c[LB_IND_FLUX] + b;
     return wx * sqrt(dx * dx + dy * dy + dz * dz) / IND_BMAX +
-           wn * (R(1) - fabs(c[3] * t[3] + c[4] * t[4] + c[5] * t[5])) + wb * (bs > R(0) ? fabs(c[6] - b) / bs : R(0));
+           wn * (R(1) - fabs(c[LB_IND_NRM] * t[LB_IND_NRM] + c[LB_IND_NRM + 1] * t[LB_IND_NRM + 1] +
+                         c[LB_IND_NRM + 2] * t[LB_IND_NRM + 2])) +
+           wb * (bs > R(0) ? fabs(c[LB_IND_FLUX] - b) / bs : R(0));
 }
 
 /* The centre nearest (Eq. 4.4) to texel (i, j) of the T x T map, -1 when
  * the texel is unlit or no centre qualifies. With a state (acrsm) only the
- * active centres (state[2] == 0) whose window of `window` texels (side)
+ * active centres (flag 0) whose window of `window` texels (side)
  * holds the texel qualify (Eq. 4.5); kmeans passes none: every centre. */
 LB_FN int ind_nearest(__global const real* tex, int T, int i, int j, __global const real* centres,
                       __global const real* state, int K, real window, real wx, real wn, real wb)
 {
-    __global const real* t = tex + IND_TEX * (j * T + i);
+    __global const real* t = tex + LB_IND_TEX * (j * T + i);
     int best = -1;
-    if (t[6] > R(0)) {
+    if (t[LB_IND_FLUX] > R(0)) {
         real bm = R(0), hw = R(0.5) * window, x = (real)i + R(0.5), y = (real)j + R(0.5);
         for (int k = 0; k < K; ++k) {
             if (state) {
-                __global const real* s = state + IND_TEX * k;
-                if (s[2] != R(0) || fabs(x - s[0]) > hw || fabs(y - s[1]) > hw)
+                __global const real* s = state + LB_IND_TEX * k;
+                if (s[IND_S_FLAG] != R(0) || fabs(x - s[IND_S_U]) > hw || fabs(y - s[IND_S_V]) > hw)
                     continue;
             }
-            real m = ind_metric(centres + IND_TEX * k, t, wx, wn, wb);
+            real m = ind_metric(centres + LB_IND_TEX * k, t, wx, wn, wb);
             if (best < 0 || m < bm) {
                 bm = m;
                 best = k;
@@ -221,24 +248,25 @@ __kernel void km_partial(__global const real* tex, int T, __global const int* la
     real s[IND_PART];
     for (int f = 0; f < IND_PART; ++f)
         s[f] = R(0);
-    __global const real* c = centres + IND_TEX * k;
+    __global const real* c = centres + LB_IND_TEX * k;
     for (int i = 0; i < T; ++i) {
         int idx = j * T + i;
         if (label[idx] != k)
             continue;
-        __global const real* t = tex + IND_TEX * idx;
-        real a = t[7], phi = t[6];
+        __global const real* t = tex + LB_IND_TEX * idx;
+        real a = t[LB_IND_AREA], phi = t[LB_IND_FLUX];
         for (int f = 0; f < 3; ++f) {
-            s[f] += a * t[f];
-            s[3 + f] += phi * t[f];
-            s[6 + f] += a * t[3 + f];
+            s[IND_PS_APOS + f] += a * t[LB_IND_POS + f];
+            s[IND_PS_FPOS + f] += phi * t[LB_IND_POS + f];
+            s[IND_PS_ANRM + f] += a * t[LB_IND_NRM + f];
         }
-        s[9] += phi;
-        s[10] += a;
-        s[11] += a * ((real)i + R(0.5));
-        s[12] += a * ((real)j + R(0.5));
-        real dx = t[0] - c[0], dy = t[1] - c[1], dz = t[2] - c[2];
-        s[13] = fmax(s[13], dx * dx + dy * dy + dz * dz);
+        s[IND_PS_FLUX] += phi;
+        s[IND_PS_AREA] += a;
+        s[IND_PS_U] += a * ((real)i + R(0.5));
+        s[IND_PS_V] += a * ((real)j + R(0.5));
+        real dx = t[LB_IND_POS] - c[LB_IND_POS], dy = t[LB_IND_POS + 1] - c[LB_IND_POS + 1],
+             dz = t[LB_IND_POS + 2] - c[LB_IND_POS + 2];
+        s[IND_PS_R2] = fmax(s[IND_PS_R2], dx * dx + dy * dy + dz * dz);
     }
     __global real* p = partial + IND_PART * (k * T + j);
     for (int f = 0; f < IND_PART; ++f)
@@ -262,34 +290,35 @@ __kernel void km_reduce(__global const real* partial, int T, int K, __global rea
         s[f] = R(0);
     for (int j = 0; j < T; ++j) {
         __global const real* p = partial + IND_PART * (k * T + j);
-        for (int f = 0; f < 13; ++f)
+        for (int f = 0; f < IND_PS_R2; ++f)
             s[f] += p[f];
-        s[13] = fmax(s[13], p[13]);
+        s[IND_PS_R2] = fmax(s[IND_PS_R2], p[IND_PS_R2]);
     }
-    __global real* c = centres + IND_TEX * k;
-    __global real* l = lights + IND_TEX * k;
-    if (!(s[10] > R(0))) {
-        for (int f = 0; f < IND_TEX; ++f)
+    __global real* c = centres + LB_IND_TEX * k;
+    __global real* l = lights + LB_IND_TEX * k;
+    if (!(s[IND_PS_AREA] > R(0))) {
+        for (int f = 0; f < LB_IND_TEX; ++f)
             l[f] = R(0);
-        l[5] = R(-1); /* a valid normal for a light of no flux */
+        l[LB_IND_NRM + 2] = R(-1); /* a valid normal for a light of no flux */
         if (stateful)
-            state[IND_TEX * k + 2] = R(1);
+            state[LB_IND_TEX * k + IND_S_FLAG] = R(1);
         return;
     }
-    real a = s[10], phi = s[9];
-    real nl = sqrt(s[6] * s[6] + s[7] * s[7] + s[8] * s[8]);
+    real a = s[IND_PS_AREA], phi = s[IND_PS_FLUX];
+    real nl = sqrt(s[IND_PS_ANRM] * s[IND_PS_ANRM] + s[IND_PS_ANRM + 1] * s[IND_PS_ANRM + 1] +
+                   s[IND_PS_ANRM + 2] * s[IND_PS_ANRM + 2]);
     for (int f = 0; f < 3; ++f) {
-        c[f] = s[f] / a;
-        c[3 + f] = nl > R(0) ? s[6 + f] / nl : R(0);
-        l[f] = phi > R(0) ? s[3 + f] / phi : c[f];
-        l[3 + f] = c[3 + f];
+        c[LB_IND_POS + f] = s[IND_PS_APOS + f] / a;
+        c[LB_IND_NRM + f] = nl > R(0) ? s[IND_PS_ANRM + f] / nl : R(0);
+        l[LB_IND_POS + f] = phi > R(0) ? s[IND_PS_FPOS + f] / phi : c[LB_IND_POS + f];
+        l[LB_IND_NRM + f] = c[LB_IND_NRM + f];
     }
-    c[6] = phi / a;
-    l[6] = phi;
-    l[7] = area_mode == 0 ? a : LB_PI * s[13];
+    c[LB_IND_FLUX] = phi / a;
+    l[LB_IND_FLUX] = phi;
+    l[LB_IND_AREA] = area_mode == 0 ? a : LB_PI * s[IND_PS_R2];
     if (stateful) {
-        state[IND_TEX * k + 0] = s[11] / a;
-        state[IND_TEX * k + 1] = s[12] / a;
+        state[LB_IND_TEX * k + IND_S_U] = s[IND_PS_U] / a;
+        state[LB_IND_TEX * k + IND_S_V] = s[IND_PS_V] / a;
     }
 }
 
@@ -302,7 +331,7 @@ __kernel void pyr_base(__global const real* tex, int T, __global real* pyr)
     int i = get_global_id(0), j = get_global_id(1);
     if (i >= T || j >= T)
         return;
-    pyr[j * T + i] = tex[IND_TEX * (j * T + i) + 6];
+    pyr[j * T + i] = tex[LB_IND_TEX * (j * T + i) + LB_IND_FLUX];
 }
 
 __kernel void pyr_down(__global real* pyr, int src_off, int src_n, int dst_off)
@@ -399,27 +428,29 @@ __kernel void ac_seed(__global const real* tex, int T, __global const real* pyr,
     int k = get_global_id(0);
     if (k >= K)
         return;
-    __global real* s = state + IND_TEX * k;
-    __global real* c = centres + IND_TEX * k;
-    int flag = frame == 0 ? 1 : (int)s[2];
+    __global real* s = state + LB_IND_TEX * k;
+    __global real* c = centres + LB_IND_TEX * k;
+    int flag = frame == 0 ? 1 : (int)s[IND_S_FLAG];
     if (frame == 0)
-        s[3] = R(0);
+        s[IND_S_GEN] = R(0);
     if (flag == 1) {
-        uint gen = (uint)s[3];
+        uint gen = (uint)s[IND_S_GEN];
         uint idx = (uint)k + (uint)K * gen + 1u;
         real2 q = R2(ind_radical_inverse(2, idx), ind_radical_inverse(3, idx));
         real2 uv = ind_warp(pyr, off, levels, stop, q);
-        s[0] = uv.x;
-        s[1] = uv.y;
-        s[3] = (real)(gen + 1u);
+        s[IND_S_U] = uv.x;
+        s[IND_S_V] = uv.y;
+        s[IND_S_GEN] = (real)(gen + 1u);
     }
-    int i = clamp((int)floor(s[0]), 0, T - 1), j = clamp((int)floor(s[1]), 0, T - 1);
-    __global const real* t = tex + IND_TEX * (j * T + i);
+    int i = clamp((int)floor(s[IND_S_U]), 0, T - 1), j = clamp((int)floor(s[IND_S_V]), 0, T - 1);
+    __global const real* t = tex + LB_IND_TEX * (j * T + i);
     if (flag == 1 || flag == 2)
-        for (int f = 0; f < 6; ++f)
-            c[f] = t[f];
-    c[6] = t[7] > R(0) ? t[6] / t[7] : R(0);
-    s[2] = R(0);
+        for (int f = 0; f < 3; ++f) {
+            c[LB_IND_POS + f] = t[LB_IND_POS + f];
+            c[LB_IND_NRM + f] = t[LB_IND_NRM + f];
+        }
+    c[LB_IND_FLUX] = ind_radiosity(t);
+    s[IND_S_FLAG] = R(0);
 }
 
 /* Each lit texel to the nearest active centre (Eq. 4.4) among those whose
@@ -435,6 +466,12 @@ __kernel void ac_map(__global const real* tex, int T, __global const real* centr
 
 #define IND_AC_MAXK 1024
 
+/* Cluster k's delta (Eq. 4.6): (A / A_max)(B / B_max), its light's area and its centre's radiosity. */
+LB_FN real ind_delta(__global const real* lights, __global const real* centres, int k, real amax, real bmax)
+{
+    return lights[LB_IND_TEX * k + LB_IND_AREA] / amax * centres[LB_IND_TEX * k + LB_IND_FLUX] / bmax;
+}
+
 /* Evaluation (seed 4.8, Eq. 4.6-4.8; one work-item): of a pseudo-random third
  * of the clusters (changing per frame), those whose delta = (A / A_max)(B /
  * B_max) falls below their neighbourhood's self-weighted mean by more than
@@ -449,8 +486,8 @@ __kernel void ac_evaluate(int K, int T, __global real* state, __global const rea
         return;
     real amax = R(0), bmax = R(0);
     for (int k = 0; k < K; ++k) {
-        amax = fmax(amax, lights[IND_TEX * k + 7]);
-        bmax = fmax(bmax, centres[IND_TEX * k + 6]);
+        amax = fmax(amax, lights[LB_IND_TEX * k + LB_IND_AREA]);
+        bmax = fmax(bmax, centres[LB_IND_TEX * k + LB_IND_FLUX]);
     }
     if (!(amax > R(0)) || !(bmax > R(0)))
         return;
@@ -458,12 +495,13 @@ __kernel void ac_evaluate(int K, int T, __global real* state, __global const rea
     real dbar[IND_AC_MAXK];
     for (int k = 0; k < K; ++k) {
         real num = R(0), den = R(0);
-        __global const real* sk = state + IND_TEX * k;
+        __global const real* sk = state + LB_IND_TEX * k;
         for (int j = 0; j < K; ++j) {
-            __global const real* sj = state + IND_TEX * j;
-            if (j == k || sj[2] != R(0) || fabs(sj[0] - sk[0]) > window || fabs(sj[1] - sk[1]) > window)
+            __global const real* sj = state + LB_IND_TEX * j;
+            if (j == k || sj[IND_S_FLAG] != R(0) || fabs(sj[IND_S_U] - sk[IND_S_U]) > window ||
+                fabs(sj[IND_S_V] - sk[IND_S_V]) > window)
                 continue;
-            real d = lights[IND_TEX * j + 7] / amax * centres[IND_TEX * j + 6] / bmax;
+            real d = ind_delta(lights, centres, j, amax, bmax);
             num += d * d;
             den += d;
         }
@@ -472,32 +510,32 @@ __kernel void ac_evaluate(int K, int T, __global real* state, __global const rea
     int freed[IND_AC_MAXK];
     int nf = 0;
     for (int k = 0; k < K; ++k) {
-        __global real* s = state + IND_TEX * k;
-        if (s[2] != R(0) || dbar[k] < R(0) || ind_hash((uint)frame * 7919u + (uint)k) % 3u != 0u)
+        __global real* s = state + LB_IND_TEX * k;
+        if (s[IND_S_FLAG] != R(0) || dbar[k] < R(0) || ind_hash((uint)frame * 7919u + (uint)k) % 3u != 0u)
             continue;
-        real d = lights[IND_TEX * k + 7] / amax * centres[IND_TEX * k + 6] / bmax;
+        real d = ind_delta(lights, centres, k, amax, bmax);
         if (d - dbar[k] < -eps_m) {
-            s[2] = R(3);
+            s[IND_S_FLAG] = R(3);
             freed[nf++] = k;
         }
     }
     for (int k = 0; k < K && nf > 0; ++k) {
-        __global real* s = state + IND_TEX * k;
-        if (s[2] != R(0) || dbar[k] < R(0) || ind_hash((uint)frame * 7919u + (uint)k) % 3u != 0u)
+        __global real* s = state + LB_IND_TEX * k;
+        if (s[IND_S_FLAG] != R(0) || dbar[k] < R(0) || ind_hash((uint)frame * 7919u + (uint)k) % 3u != 0u)
             continue;
-        real d = lights[IND_TEX * k + 7] / amax * centres[IND_TEX * k + 6] / bmax;
+        real d = ind_delta(lights, centres, k, amax, bmax);
         if (d - dbar[k] > eps_s) {
             int f = freed[--nf];
-            real r = sqrt(lights[IND_TEX * k + 7] / LB_PI) / texel;
+            real r = sqrt(lights[LB_IND_TEX * k + LB_IND_AREA] / LB_PI) / texel;
             uint h = (uint)frame * 104729u + (uint)k * 31u;
-            __global real* sf = state + IND_TEX * f;
-            sf[0] = clamp(s[0] + r * (ind_unit(h) - R(0.5)), R(0), (real)T - R(0.001));
-            sf[1] = clamp(s[1] + r * (ind_unit(h + 1u) - R(0.5)), R(0), (real)T - R(0.001));
-            sf[2] = R(2);
+            __global real* sf = state + LB_IND_TEX * f;
+            sf[IND_S_U] = clamp(s[IND_S_U] + r * (ind_unit(h) - R(0.5)), R(0), (real)T - R(0.001));
+            sf[IND_S_V] = clamp(s[IND_S_V] + r * (ind_unit(h + 1u) - R(0.5)), R(0), (real)T - R(0.001));
+            sf[IND_S_FLAG] = R(2);
         }
     }
     for (int i = 0; i < nf; ++i)
-        state[IND_TEX * freed[i] + 2] = R(1);
+        state[LB_IND_TEX * freed[i] + IND_S_FLAG] = R(1);
 }
 
 /* ---- evaluation: E_ind at each floor pixel from n virtual lights ---- */
@@ -511,8 +549,10 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     real3 nx = lb_p3(P, LB_P_NX);
     real e = R(0);
     for (int k = 0; k < nlights; ++k) {
-        __global const real* l = lights + IND_TEX * k;
-        e += lb_val_irradiance(x, nx, R3(l[0], l[1], l[2]), R3(l[3], l[4], l[5]), l[6], l[7], clamp2);
+        __global const real* l = lights + LB_IND_TEX * k;
+        e += lb_val_irradiance(x, nx, R3(l[LB_IND_POS], l[LB_IND_POS + 1], l[LB_IND_POS + 2]),
+                               R3(l[LB_IND_NRM], l[LB_IND_NRM + 1], l[LB_IND_NRM + 2]), l[LB_IND_FLUX], l[LB_IND_AREA],
+                               clamp2);
     }
     out[row * res + col] = e;
 }

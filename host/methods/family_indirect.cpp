@@ -15,7 +15,7 @@ namespace lb::methods {
 
 namespace {
 
-constexpr int kTex = 8;  // reals per texel / centre / light (kernels/indirect.cl)
+constexpr int kTex = LB_IND_TEX;  // reals per texel / centre / light (kernels/common/indirect.h)
 constexpr int kPart = 16;  // reals per cluster partial sum
 
 // ---- reference ----
@@ -179,14 +179,14 @@ void finishRsm(LaunchContext& c)
     const int T = rsmSide(c);
     auto tex = c.readReals(c.named.at("tex"), static_cast<size_t>(kTex) * T * T);
     double flux = 0;
-    for (int i = 0; i < T * T; ++i) flux += tex[kTex * i + 6];
+    for (int i = 0; i < T * T; ++i) flux += tex[kTex * i + LB_IND_FLUX];
     c.stats["rsm_flux_lm"] = flux;
     if (c.named.count("label")) {
         std::vector<cl_int> label(static_cast<size_t>(T) * T);
         c.rt.queue().enqueueReadBuffer(c.named.at("label"), CL_TRUE, 0, label.size() * sizeof(cl_int), label.data());
         double lost = 0;
         for (int i = 0; i < T * T; ++i)
-            if (label[i] < 0) lost += tex[kTex * i + 6];
+            if (label[i] < 0) lost += tex[kTex * i + LB_IND_FLUX];
         c.stats["unmapped_flux_fraction"] = flux > 0 ? lost / flux : 0.0;
     }
     if (c.named.count("lights")) {
@@ -195,8 +195,8 @@ void finishRsm(LaunchContext& c)
         double lf = 0;
         int active = 0;
         for (int i = 0; i < n; ++i) {
-            lf += l[kTex * i + 6];
-            if (l[kTex * i + 6] > 0) ++active;
+            lf += l[kTex * i + LB_IND_FLUX];
+            if (l[kTex * i + LB_IND_FLUX] > 0) ++active;
         }
         c.stats["lights_flux_lm"] = lf;
         c.stats["lights_active"] = active;

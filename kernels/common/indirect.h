@@ -92,6 +92,17 @@ LB_FN real lb_net_area(real X0, real X1, real Y0, real Y1)
     return band_y + band_x - ceil;
 }
 
+/* ---- The records of the RSM methods (kernels/indirect.cl; the host reads
+ * them too): an RSM texel, a cluster centre and a virtual light are
+ * LB_IND_TEX reals each: position (3), normal (3), then flux (lm: a texel's
+ * reflected flux, a light's) or a centre's radiosity B = flux / area, then
+ * area (m^2: a texel's, a light's, 0 for a VPL; 0 for a centre). */
+#define LB_IND_TEX 8
+#define LB_IND_POS 0
+#define LB_IND_NRM 3
+#define LB_IND_FLUX 6
+#define LB_IND_AREA 7
+
 /* ---- Virtual lights. Irradiance at x (normal nx) from a virtual area light
  * (VAL) of reflected flux phi, centre c, normal nc and area a: the seed's
  * point-to-disk form factor (Eq. 3.9 / 5.5, its Fig. 3.11),
