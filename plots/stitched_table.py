@@ -12,7 +12,9 @@ its time with the mean N over the rotations in parentheses. Below the table:
 in how many single scenes and stitched rows each method beats its equal-time
 MCI, and how many equal-time pairs missed the tolerance. Standard library only.
 
-Usage: python3 plots/stitched_table.py DIR/results.json[.xz]|DIR/results.csv|DIR [--methods A,B,...]
+Usage: python3 plots/stitched_table.py RESULTS [RESULTS ...] [--methods A,B,...]
+(RESULTS: DIR/results.json[.xz], DIR/results.csv or DIR; a later file's records replace an
+earlier one's of the same scene, role and spec.)
 
 (The quantity is lumibench's own pooled NMSE, metrics::pooled in
 host/metrics/metrics.h, which weights each rotation by its pixels; for equal
@@ -34,13 +36,21 @@ def fmt(x):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("results")
+    ap.add_argument("results", nargs="+",
+                    help="results files (.json, .json.xz); a later file's records replace an earlier one's of the "
+                         "same scene, role and spec (e.g. one variant re-run on its own)")
     ap.add_argument("--methods", help="comma-separated method labels to show (default: all, in file order)")
     a = ap.parse_args()
-    try:
-        recs = load_records(a.results)
-    except (OSError, ValueError, lzma.LZMAError) as e:
-        sys.exit(f"{a.results}: {e}")
+    by_key = {}
+    for path in a.results:
+        try:
+            for r in load_records(path):
+                key = (r.get("scene"), r.get("role"), r.get("equal_time_label") or r.get("spec"))
+                by_key.pop(key, None)  # re-inserted last: the later file's order
+                by_key[key] = r
+        except (OSError, ValueError, lzma.LZMAError) as e:
+            sys.exit(f"{path}: {e}")
+    recs = list(by_key.values())
     methods, eq_labels = [], []
     groups = collections.defaultdict(list)   # (lum, h, column) -> records
     for r in recs:

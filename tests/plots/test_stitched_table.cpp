@@ -53,6 +53,15 @@ TEST(Plots, StitchedTable)
     EXPECT_NE(out.find("pairs outside the tolerance: 1 (50 % within)"), std::string::npos) << out;
     // stitched: cubature 0.625 against MCI 2 in the one (luminaire, height) row
     EXPECT_NE(out.find("in 2 of 2 scenes and 1 of 1 stitched rows"), std::string::npos) << out;
+    // A later file's record replaces the earlier one of the same scene, role
+    // and spec: cubature re-run on scene 1 with NMSE 4 now loses there.
+    nlohmann::json later = nlohmann::json::array({rec("method", "cubature", 1.0, 4.0, 2.0, 1.0)});
+    std::ofstream(dir / "later.json") << nlohmann::json{{"records", later}}.dump();
+    out = test::shellOutput("python3 " + script + " " + (dir / "results.json").string() + " " +
+                                (dir / "later.json").string() + " 2>&1",
+                            &code);
+    EXPECT_EQ(code, 0) << out;
+    EXPECT_NE(out.find("beats its equal-time MCI in 1 of 2 scenes"), std::string::npos) << out;
     std::ofstream(dir / "bad.json") << "{\"x\": 1}";
     test::shellOutput("python3 " + script + " " + (dir / "bad.json").string() + " 2>&1", &code);
     EXPECT_NE(code, 0);
