@@ -40,112 +40,138 @@ std::string expectName(Expect e)
     return "?";
 }
 
+// One case of the catalogue (DESIGN 2 geometry, a luminaire of luminaire()).
+void add(std::vector<Case>& v, const char* name, const char* what, double h, double R, double W, double L,
+         const char* lum, Expect e = Expect::Finite, bool quick = false, bool oddRes = false)
+{
+    Case c;
+    c.name = name;
+    c.what = what;
+    c.height = h;
+    c.rotation = R;
+    c.width = W;
+    c.length = L;
+    c.luminaire = lum;
+    c.expect = e;
+    c.quick = quick;
+    c.oddRes = oddRes;
+    v.push_back(c);
+}
+
+// The geometric extremes of the diffuse scene: touching, grazing, the
+// light's own plane, the far field, extreme sizes.
+void addGeometryCases(std::vector<Case>& v)
+{
+    // Light touching the receiver: lower edge on the ground (h = 0, R = pi/2).
+    add(v, "touching", "light standing on the receiver: h = 0, R = pi/2", 0, kPi / 2, 1, 1, "lambert", Expect::Finite,
+        true);
+    add(v, "touching_diffuse", "as touching, PERLUCE-like emission at and beyond gamma 90", 0, kPi / 2, 1, 1,
+        "diffuse");
+    // Grazing: the lower edge 10 um above the ground, tilted just past vertical.
+    add(v, "grazing", "grazing: h = 1e-5, R = pi/2 + 1e-4", 1e-5, kPi / 2 + 1e-4, 1, 1, "lambert", Expect::Finite,
+        true);
+    add(v, "grazing_diffuse", "grazing with emission at gamma 90 (diffuse)", 1e-5, kPi / 2 + 1e-4, 1, 1, "diffuse");
+    // Receiver points in the light's plane (y = 0 at R = pi/2; odd
+    // resolution puts a pixel row exactly there) with emission at gamma =
+    // 90: the solid-angle form has L_e = I / (A cos) = I / 0 there while
+    // Omega_L = 0 (thesis 6.6's "contradiction"); the area form is regular.
+    add(v, "plane_diffuse", "receiver row in the light plane, gamma-90 emission (PERLUCE)", 0.5, kPi / 2, 1, 1,
+        "diffuse", Expect::Finite, true, true);
+    add(v, "plane_sideways", "receiver row in the light plane, asymmetric emission (INTRO)", 0.5, kPi / 2, 1, 1,
+        "sideways", Expect::Finite, false, true);
+    // Far field: every method must meet the point light (bound: pointBound()).
+    add(v, "far", "far field h = 1000 (tiny solid angles, thesis Fig. 5.9)", 1000, kPi, 1, 1, "lambert",
+        Expect::PointLimit, true);
+    add(v, "far_sideways", "far field h = 1000, tilted, asymmetric luminaire", 1000, 3 * kPi / 4, 1, 1, "sideways",
+        Expect::PointLimit);
+    // Sizes.
+    add(v, "tiny", "1 mm x 1 mm light at h = 1 (point limit)", 1, 3 * kPi / 4, 1e-3, 1e-3, "lambert",
+        Expect::PointLimit, true);
+    add(v, "thin", "long thin light 40 m x 0.02 m at h = 1", 1, 3 * kPi / 4, 40, 0.02, "linear");
+    add(v, "huge_ceiling", "100 m x 100 m horizontal light (R = pi, centre at 50.1 m)", 0.1, kPi, 100, 100, "lambert");
+    add(v, "huge_tilted", "100 m x 100 m light at R = 5pi/8, lower edge 3.9 m up", 0.1, 5 * kPi / 8, 100, 100,
+        "downlight");
+}
+
+// Luminaires that light nothing, extreme beams, the stress luminaires, and
+// degenerate polygons.
+void addLuminaireCases(std::vector<Case>& v)
+{
+    // Nothing reaches the receiver: the image must be exactly zero.
+    add(v, "zero_upward", "up-light facing down: emits only at gamma > 90", 1, kPi, 1, 1, "stab:upward", Expect::Zero,
+        true);
+    add(v, "zero_spot", "vertical spot (nothing at gamma >= 60) above the image", 5, kPi / 2, 1, 1, "spot",
+        Expect::Zero);
+    // Extremely narrow spot: sigma 0.5 degrees.
+    add(v, "pencil", "extremely narrow spot (Gaussian sigma 0.5 deg, measured to 10 deg)", 1, kPi, 1, 1, "stab:pencil",
+        Expect::Finite, true);
+    // The suite's stress luminaires (luminaires/, docs/robust.md): a fan of
+    // light in the light's own plane seen from that plane, a sub-degree
+    // beam, a quadrant-only distribution tilted, a direct/indirect light
+    // tilted so that its up-light grazes the receiver.
+    add(v, "stress_grazing", "wall washer (peak at gamma 90) seen from the light's plane, h = 0.1, R = pi/2", 0.1,
+        kPi / 2, 1, 1, "grazing", Expect::Finite, false, true);
+    add(v, "stress_pencil", "pencil beam (sigma 0.4 deg) at h = 1.1", 1.1, kPi, 1, 1, "pencil");
+    add(v, "stress_quadrant", "quadrant-asymmetric emission, h = 0.1, R = 3pi/4", 0.1, 3 * kPi / 4, 1, 1, "quadrant");
+    add(v, "stress_updown", "direct/indirect light tilted, h = 0.1, R = 5pi/8", 0.1, 5 * kPi / 8, 1, 1, "updown");
+    // Degenerate polygons: a clear InputError, never NaN.
+    add(v, "coincident", "all four corners coincide (0 x 0)", 1, kPi, 0, 0, "lambert", Expect::Rejected, true);
+    add(v, "collinear", "corners collinear (0 x 1)", 1, kPi, 0, 1, "lambert", Expect::Rejected, true);
+    add(v, "collinear_float", "corners collinear in float (1e-9 x 1)", 1, kPi, 1e-9, 1, "lambert", Expect::Rejected);
+}
+
+// The specular scene (DESIGN 8): the glossy receiver's extremes.
+void addSpecularCases(std::vector<Case>& v)
+{
+    auto spec = [&](const char* name, const char* what, double h, double R, const char* lum, double alpha,
+                    glm::dvec3 eye, Expect e = Expect::Finite, bool quick = false, bool oddRes = false) {
+        add(v, name, what, h, R, 1, 1, lum, e, quick, oddRes);
+        v.back().kind = SceneKind::Specular;
+        v.back().alpha = alpha;
+        v.back().eye = eye;
+    };
+    spec("spec_grazing_eye", "specular: eye 2 cm above the ground 20 m away (grazing w_o)", 0.1, 3 * kPi / 4,
+         "downlight", 0.25, {0, 20, 0.02}, Expect::Finite, true);
+    spec("spec_alpha002", "specular: alpha 0.02 (the narrowest lobe the reference resolves), light near", 0.1,
+         3 * kPi / 4, "downlight", 0.02, {0, 4, 2}, Expect::Finite, true);
+    spec("spec_eye_in_plane", "specular: eye in the vertical light's plane (y = 0), row of pixels there too", 0.5,
+         kPi / 2, "diffuse", 0.1, {0, 0, 3}, Expect::Finite, false, true);
+    spec("spec_behind", "specular: up-light facing down, the receiver behind its emission: exactly 0", 1, kPi,
+         "stab:upward", 0.25, {0, 4, 2}, Expect::Zero, true);
+}
+
+// The indirect scene (DESIGN 9): the room's extremes. The light's corners
+// must lie strictly inside the room (Scene::validate).
+void addIndirectCases(std::vector<Case>& v)
+{
+    auto room = [&](const char* name, const char* what, double h, double R, double w, double l, const char* lum,
+                    double albedo, Expect e = Expect::Finite, bool quick = false) {
+        add(v, name, what, h, R, w, l, lum, e, quick);
+        v.back().kind = SceneKind::Indirect;
+        v.back().albedo = albedo;
+    };
+    room("ind_ceiling", "indirect: up-light 1 mm below the ceiling (a stiff bounce source: E_dir ~ 1/r^2 there)", 2.499,
+         kPi, 1, 1, "updown", 0.5, Expect::Finite, true);
+    room("ind_wall_gap", "indirect: 4.98 m x 0.5 m light, its ends 1 cm from two walls, h = 1.1", 1.1, kPi, 4.98, 0.5,
+         "diffuse", 0.5);
+    room("ind_floor_graze", "indirect: vertical light 1 mm above the floor (h = 1e-3, R = pi/2)", 1e-3, kPi / 2, 1, 1,
+         "lambert", 0.5);
+    room("ind_black", "indirect: albedo 0, nothing bounces: exactly 0", 1.1, 3 * kPi / 4, 1, 1, "diffuse", 0.0,
+         Expect::Zero, true);
+    room("ind_outside", "indirect: light through the ceiling (h = 2.9, R = pi/2): a clear InputError", 2.9, kPi / 2, 1,
+         1, "lambert", 0.5, Expect::Rejected, true);
+}
+
 // The catalogue. Heights, rotations and sizes follow DESIGN section 2 (the
 // light's centre at h + L/2, R the angle between n_L and the receiver normal).
 const std::vector<Case>& catalogue()
 {
     static const std::vector<Case> cases = [] {
         std::vector<Case> v;
-        // add(name, what, h, R, W, L, luminaire, expectation, quick, oddRes)
-        auto add = [&](const char* name, const char* what, double h, double R, double W, double L, const char* lum,
-                       Expect e = Expect::Finite, bool quick = false, bool oddRes = false) {
-            Case c;
-            c.name = name;
-            c.what = what;
-            c.height = h;
-            c.rotation = R;
-            c.width = W;
-            c.length = L;
-            c.luminaire = lum;
-            c.expect = e;
-            c.quick = quick;
-            c.oddRes = oddRes;
-            v.push_back(c);
-        };
-        // Light touching the receiver: lower edge on the ground (h = 0, R = pi/2).
-        add("touching", "light standing on the receiver: h = 0, R = pi/2", 0, kPi / 2, 1, 1, "lambert", Expect::Finite,
-            true);
-        add("touching_diffuse", "as touching, PERLUCE-like emission at and beyond gamma 90", 0, kPi / 2, 1, 1,
-            "diffuse");
-        // Grazing: the lower edge 10 um above the ground, tilted just past vertical.
-        add("grazing", "grazing: h = 1e-5, R = pi/2 + 1e-4", 1e-5, kPi / 2 + 1e-4, 1, 1, "lambert", Expect::Finite,
-            true);
-        add("grazing_diffuse", "grazing with emission at gamma 90 (diffuse)", 1e-5, kPi / 2 + 1e-4, 1, 1, "diffuse");
-        // Receiver points in the light's plane (y = 0 at R = pi/2; odd
-        // resolution puts a pixel row exactly there) with emission at gamma =
-        // 90: the solid-angle form has L_e = I / (A cos) = I / 0 there while
-        // Omega_L = 0 (thesis 6.6's "contradiction"); the area form is regular.
-        add("plane_diffuse", "receiver row in the light plane, gamma-90 emission (PERLUCE)", 0.5, kPi / 2, 1, 1,
-            "diffuse", Expect::Finite, true, true);
-        add("plane_sideways", "receiver row in the light plane, asymmetric emission (INTRO)", 0.5, kPi / 2, 1, 1,
-            "sideways", Expect::Finite, false, true);
-        // Far field: every method must meet the point light (bound: pointBound()).
-        add("far", "far field h = 1000 (tiny solid angles, thesis Fig. 5.9)", 1000, kPi, 1, 1, "lambert",
-            Expect::PointLimit, true);
-        add("far_sideways", "far field h = 1000, tilted, asymmetric luminaire", 1000, 3 * kPi / 4, 1, 1, "sideways",
-            Expect::PointLimit);
-        // Sizes.
-        add("tiny", "1 mm x 1 mm light at h = 1 (point limit)", 1, 3 * kPi / 4, 1e-3, 1e-3, "lambert",
-            Expect::PointLimit, true);
-        add("thin", "long thin light 40 m x 0.02 m at h = 1", 1, 3 * kPi / 4, 40, 0.02, "linear");
-        add("huge_ceiling", "100 m x 100 m horizontal light (R = pi, centre at 50.1 m)", 0.1, kPi, 100, 100, "lambert");
-        add("huge_tilted", "100 m x 100 m light at R = 5pi/8, lower edge 3.9 m up", 0.1, 5 * kPi / 8, 100, 100,
-            "downlight");
-        // Nothing reaches the receiver: the image must be exactly zero.
-        add("zero_upward", "up-light facing down: emits only at gamma > 90", 1, kPi, 1, 1, "stab:upward", Expect::Zero,
-            true);
-        add("zero_spot", "vertical spot (nothing at gamma >= 60) above the image", 5, kPi / 2, 1, 1, "spot",
-            Expect::Zero);
-        // Extremely narrow spot: sigma 0.5 degrees.
-        add("pencil", "extremely narrow spot (Gaussian sigma 0.5 deg, measured to 10 deg)", 1, kPi, 1, 1, "stab:pencil",
-            Expect::Finite, true);
-        // The suite's stress luminaires (luminaires/, docs/robust.md): a fan of
-        // light in the light's own plane seen from that plane, a sub-degree
-        // beam, a quadrant-only distribution tilted, a direct/indirect light
-        // tilted so that its up-light grazes the receiver.
-        add("stress_grazing", "wall washer (peak at gamma 90) seen from the light's plane, h = 0.1, R = pi/2", 0.1,
-            kPi / 2, 1, 1, "grazing", Expect::Finite, false, true);
-        add("stress_pencil", "pencil beam (sigma 0.4 deg) at h = 1.1", 1.1, kPi, 1, 1, "pencil");
-        add("stress_quadrant", "quadrant-asymmetric emission, h = 0.1, R = 3pi/4", 0.1, 3 * kPi / 4, 1, 1, "quadrant");
-        add("stress_updown", "direct/indirect light tilted, h = 0.1, R = 5pi/8", 0.1, 5 * kPi / 8, 1, 1, "updown");
-        // Degenerate polygons: a clear InputError, never NaN.
-        add("coincident", "all four corners coincide (0 x 0)", 1, kPi, 0, 0, "lambert", Expect::Rejected, true);
-        add("collinear", "corners collinear (0 x 1)", 1, kPi, 0, 1, "lambert", Expect::Rejected, true);
-        add("collinear_float", "corners collinear in float (1e-9 x 1)", 1, kPi, 1e-9, 1, "lambert", Expect::Rejected);
-        // The specular scene (DESIGN 8): the glossy receiver's extremes.
-        auto spec = [&](const char* name, const char* what, double h, double R, const char* lum, double alpha,
-                        glm::dvec3 eye, Expect e = Expect::Finite, bool quick = false, bool oddRes = false) {
-            add(name, what, h, R, 1, 1, lum, e, quick, oddRes);
-            v.back().kind = SceneKind::Specular;
-            v.back().alpha = alpha;
-            v.back().eye = eye;
-        };
-        spec("spec_grazing_eye", "specular: eye 2 cm above the ground 20 m away (grazing w_o)", 0.1, 3 * kPi / 4,
-             "downlight", 0.25, {0, 20, 0.02}, Expect::Finite, true);
-        spec("spec_alpha002", "specular: alpha 0.02 (the narrowest lobe the reference resolves), light near", 0.1,
-             3 * kPi / 4, "downlight", 0.02, {0, 4, 2}, Expect::Finite, true);
-        spec("spec_eye_in_plane", "specular: eye in the vertical light's plane (y = 0), row of pixels there too", 0.5,
-             kPi / 2, "diffuse", 0.1, {0, 0, 3}, Expect::Finite, false, true);
-        spec("spec_behind", "specular: up-light facing down, the receiver behind its emission: exactly 0", 1, kPi,
-             "stab:upward", 0.25, {0, 4, 2}, Expect::Zero, true);
-        // The indirect scene (DESIGN 9): the room's extremes. The light's
-        // corners must lie strictly inside the room (Scene::validate).
-        auto room = [&](const char* name, const char* what, double h, double R, double w, double l, const char* lum,
-                        double albedo, Expect e = Expect::Finite, bool quick = false) {
-            add(name, what, h, R, w, l, lum, e, quick);
-            v.back().kind = SceneKind::Indirect;
-            v.back().albedo = albedo;
-        };
-        room("ind_ceiling", "indirect: up-light 1 mm below the ceiling (a stiff bounce source: E_dir ~ 1/r^2 there)",
-             2.499, kPi, 1, 1, "updown", 0.5, Expect::Finite, true);
-        room("ind_wall_gap", "indirect: 4.98 m x 0.5 m light, its ends 1 cm from two walls, h = 1.1", 1.1, kPi, 4.98,
-             0.5, "diffuse", 0.5);
-        room("ind_floor_graze", "indirect: vertical light 1 mm above the floor (h = 1e-3, R = pi/2)", 1e-3, kPi / 2, 1,
-             1, "lambert", 0.5);
-        room("ind_black", "indirect: albedo 0, nothing bounces: exactly 0", 1.1, 3 * kPi / 4, 1, 1, "diffuse", 0.0,
-             Expect::Zero, true);
-        room("ind_outside", "indirect: light through the ceiling (h = 2.9, R = pi/2): a clear InputError", 2.9, kPi / 2,
-             1, 1, "lambert", 0.5, Expect::Rejected, true);
+        addGeometryCases(v);
+        addLuminaireCases(v);
+        addSpecularCases(v);
+        addIndirectCases(v);
         return v;
     }();
     return cases;
@@ -282,9 +308,11 @@ bool CaseResult::ok() const
     return true;
 }
 
-std::vector<CaseResult> run(ocl::Runtime& rt, const Options& opt)
+namespace {
+
+// The families to run (all, or those of --methods), and the cases checked by name.
+std::vector<const methods::Family*> selectedFamilies(const Options& opt)
 {
-    using methods::Precision;
     std::vector<const methods::Family*> fams;
     for (auto& f : methods::registry().all())
         if (opt.methods.empty() || std::count(opt.methods.begin(), opt.methods.end(), f.name)) fams.push_back(&f);
@@ -293,25 +321,108 @@ std::vector<CaseResult> run(ocl::Runtime& rt, const Options& opt)
     for (auto& n : opt.cases)
         if (std::none_of(catalogue().begin(), catalogue().end(), [&](const Case& c) { return c.name == n; }))
             throw InputError(fmt::format("stability: unknown case '{}'", n));
+    return fams;
+}
 
+bool selected(const Case& c, const Options& opt)
+{
+    if (!opt.cases.empty()) return std::count(opt.cases.begin(), opt.cases.end(), c.name) > 0;
+    return !opt.quick || c.quick;
+}
+
+// What one case renders with: the device, its scene and luminaire, the
+// precisions (double last where the device has it).
+struct CaseRun {
+    ocl::Runtime& rt;
+    const Case& c;
+    const Scene& s;
+    const photometry::Table& table;
+    const std::vector<methods::Precision>& precs;
+    methods::RenderOptions ro;
+
+    methods::RenderResult render(const std::string& method, methods::Precision p) const
+    {
+        return methods::render(rt, table, s, methods::parseSpec(method, c.kind), p, ro);
+    }
+
+    // Every method and precision must refuse the light with an InputError.
+    void rejected(const std::vector<const methods::Family*>& fams, CaseResult& cr) const
+    {
+        for (auto* f : fams)
+            for (methods::Precision p : precs) {
+                Row row;
+                row.method = f->name;
+                row.precision = methods::precisionName(p);
+                try {
+                    render(f->name, p);
+                    row.failures.push_back("rendered a degenerate light instead of an InputError");
+                } catch (const InputError& e) {
+                    if (cr.rejected.empty()) cr.rejected = e.what();
+                }
+                cr.rows.push_back(std::move(row));
+            }
+    }
+
+    // One family in every precision, double first, so float rows can be
+    // compared with it; each row checked against the case's expectation.
+    void family(const methods::Family& f, const Image& ref, const Image& point, CaseResult& cr) const
+    {
+        auto spec = methods::parseSpec(f.name, c.kind);
+        Image dbl;
+        for (auto it = precs.rbegin(); it != precs.rend(); ++it) {
+            methods::Precision p = *it;
+            Row row;
+            row.method = f.name;
+            row.spec = spec.canonical();
+            row.precision = methods::precisionName(p);
+            row.image = methods::render(rt, table, s, spec, p, ro).image;
+            row.err = measure(ref, row.image);
+            row.maxAbs = maxAbs(row.image);
+            if (p == methods::Precision::Double)
+                dbl = row.image;
+            else if (!dbl.px.empty())
+                row.fdDiff = maxDiffRel(row.image, dbl, cr.refMax);
+            check(row, point, p == methods::Precision::Double);
+            cr.rows.push_back(std::move(row));
+        }
+    }
+
+    void check(Row& row, const Image& point, bool dbl) const
+    {
+        if (row.err.nonfinite > 0) row.failures.push_back(fmt::format("{} non-finite pixels", row.err.nonfinite));
+        if (c.expect == Expect::Zero && row.maxAbs != 0)
+            row.failures.push_back(fmt::format("not exactly zero: max {} lx", row.maxAbs));
+        if (!(row.fdDiff <= c.maxFd))
+            row.failures.push_back(fmt::format("float vs double {:.3g} > {:.3g}", row.fdDiff, c.maxFd));
+        if (c.expect == Expect::PointLimit) {
+            row.pointDiff = maxDiffRel(row.image, point, maxAbs(point));
+            double b = pointBound(s, dbl);
+            if (!(row.pointDiff <= b))
+                row.failures.push_back(fmt::format("point limit {:.3g} > bound {:.3g}", row.pointDiff, b));
+        }
+    }
+};
+
+}  // namespace
+
+std::vector<CaseResult> run(ocl::Runtime& rt, const Options& opt)
+{
+    using methods::Precision;
+    const std::vector<const methods::Family*> fams = selectedFamilies(opt);
     std::vector<Precision> precs = {Precision::Float};
     if (rt.fp64()) precs.push_back(Precision::Double);
-    methods::RenderOptions ro;
-    ro.reps = 1;  // errors, not timings
 
     std::vector<CaseResult> out;
     for (const Case& c : catalogue()) {
-        if (!opt.cases.empty()) {
-            if (!std::count(opt.cases.begin(), opt.cases.end(), c.name)) continue;
-        } else if (opt.quick && !c.quick) {
-            continue;
-        }
+        if (!selected(c, opt)) continue;
         CaseResult cr;
         cr.c = c;
         Scene s = sceneOf(c, opt.res);
         cr.res = s.res;
         if (opt.progress) std::cerr << fmt::format("stability: {} ({})\n", c.name, s.describe());
         photometry::Table table = luminaire(c.luminaire);
+        CaseRun run{rt, c, s, table, precs, {}};
+        run.ro.reps = 1;  // errors, not timings
 
         // The methods that render this case's kind of scene.
         std::vector<const methods::Family*> caseFams;
@@ -319,66 +430,18 @@ std::vector<CaseResult> run(ocl::Runtime& rt, const Options& opt)
             if (methods::renders(*f, c.kind)) caseFams.push_back(f);
 
         if (c.expect == Expect::Rejected) {
-            // Every method and precision must refuse the light with an InputError.
-            for (auto* f : caseFams)
-                for (Precision p : precs) {
-                    Row row;
-                    row.method = f->name;
-                    row.precision = methods::precisionName(p);
-                    try {
-                        methods::render(rt, table, s, methods::parseSpec(f->name, c.kind), p, ro);
-                        row.failures.push_back("rendered a degenerate light instead of an InputError");
-                    } catch (const InputError& e) {
-                        if (cr.rejected.empty()) cr.rejected = e.what();
-                    }
-                    cr.rows.push_back(std::move(row));
-                }
+            run.rejected(caseFams, cr);
             out.push_back(std::move(cr));
             continue;
         }
-
         // The ground truth: the reference in double (float when the device has none).
-        Precision best = precs.back();
-        auto ref = methods::render(rt, table, s, methods::parseSpec("reference", c.kind), best, ro);
+        auto ref = run.render("reference", precs.back());
         cr.reference = ref.image;
         cr.refMax = maxAbs(ref.image);
         if (ref.stats.contains("max_err_est")) cr.refErrEst = ref.stats["max_err_est"].get<double>();
         Image point;
-        if (c.expect == Expect::PointLimit)
-            point = methods::render(rt, table, s, methods::parseSpec("point", c.kind), best, ro).image;
-
-        for (auto* f : caseFams) {
-            auto spec = methods::parseSpec(f->name, c.kind);
-            Image dbl;
-            // Double first, so float rows can be compared with it.
-            for (auto it = precs.rbegin(); it != precs.rend(); ++it) {
-                Precision p = *it;
-                Row row;
-                row.method = f->name;
-                row.spec = spec.canonical();
-                row.precision = methods::precisionName(p);
-                row.image = methods::render(rt, table, s, spec, p, ro).image;
-                row.err = measure(ref.image, row.image);
-                row.maxAbs = maxAbs(row.image);
-                if (p == Precision::Double)
-                    dbl = row.image;
-                else if (!dbl.px.empty())
-                    row.fdDiff = maxDiffRel(row.image, dbl, cr.refMax);
-                if (row.err.nonfinite > 0)
-                    row.failures.push_back(fmt::format("{} non-finite pixels", row.err.nonfinite));
-                if (c.expect == Expect::Zero && row.maxAbs != 0)
-                    row.failures.push_back(fmt::format("not exactly zero: max {} lx", row.maxAbs));
-                if (!(row.fdDiff <= c.maxFd))
-                    row.failures.push_back(fmt::format("float vs double {:.3g} > {:.3g}", row.fdDiff, c.maxFd));
-                if (c.expect == Expect::PointLimit) {
-                    row.pointDiff = maxDiffRel(row.image, point, maxAbs(point));
-                    double b = pointBound(s, p == Precision::Double);
-                    if (!(row.pointDiff <= b))
-                        row.failures.push_back(fmt::format("point limit {:.3g} > bound {:.3g}", row.pointDiff, b));
-                }
-                cr.rows.push_back(std::move(row));
-            }
-        }
+        if (c.expect == Expect::PointLimit) point = run.render("point", precs.back()).image;
+        for (auto* f : caseFams) run.family(*f, ref.image, point, cr);
         out.push_back(std::move(cr));
     }
     return out;
