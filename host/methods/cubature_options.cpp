@@ -14,15 +14,11 @@ namespace lb::methods {
 
 const std::vector<Param>& cubatureParams()
 {
-    // Ranges from geometry (a tuner searches them): plane_eps up to 1 m, the
-    // side of the normalized scene's light (a larger shift moves the receiver
-    // farther than the light is wide); corner_inset the whole way from the
-    // corner (0) to the corner mean (1); blend_dist down to 0.4 m, 2/3 of the
-    // nearest light-centre distance of the published scenes (0.6 m at h =
-    // 0.1): below it every pixel is already pure grid MC; area_q from 0.1
-    // (the area rule only within a tenth of the light's size: its error there
-    // exceeds 100 %) to 10 (far field only); area_sin over the whole range of
-    // an elevation's sine.
+    // Ranges from geometry (a tuner searches them; tune.json "search" and its
+    // near_bound list show them): each meaning says why its range ends where
+    // it does. area_q from 0.1 (the area rule only within a tenth of the
+    // light's size: its error there exceeds 100 %) to 10 (far field only);
+    // area_sin over the whole range of an elevation's sine.
     static const std::vector<Param> params = {
         Param::choice("triangulation", "fan", {"fan", "delaunay"},
                       "fan around the first dynamic point (paper 5.2) or Delaunay by Lawson flips (thesis 5.2); "
@@ -34,13 +30,19 @@ const std::vector<Param>& cubatureParams()
                       "light (thesis Eq. 5.11)"),
         Param::list("dynamic", "cp", {"cp", "np", "mrp", "barycentre", "none"},
                     "dynamic points added to the clipped light's corners ('+'-joined; none = corners only)"),
-        Param::real("plane_eps", 1e-3, 1e-6, 1.0, Scale::Log,
-                    "receivers closer than this (m) to the light's plane are moved to this distance (paper 5.3)"),
+        Param::real(
+            "plane_eps", 1e-3, 1e-6, 1.0, Scale::Log,
+            "receivers closer than this (m) to the light's plane are moved to this distance (paper 5.3); range 1e-6 .. "
+            "1 m: at most the side of the normalized scene's light (1 m), since a larger shift moves the "
+            "receiver farther from the light than the light is wide and the rule then integrates a "
+            "different, far-field light; at least 1e-6 m, ~16 float ulps of a 1 m scene"),
         Param::real("horizon_eps", 0.0, 0.0, 0.5, Scale::Linear,
                     "clip the light at n_x . (p - x) >= this (m): the tilted horizon of thesis 5.2.4 (it used 0.1)"),
         Param::real("corner_inset", 0.0, 0.0, 1.0, Scale::Linear,
                     "the corner samples look the radiance up this fraction of the way towards the clipped light's "
-                    "corner mean (0 = at the corners; the triangles keep their weights)"),
+                    "corner mean (0 = at the corners; the triangles keep their weights); range 0 .. 1: at 1 every "
+                    "corner collapses onto the corner mean (one radiance value for the whole light), beyond 1 the "
+                    "lookups would cross the centre and leave the light"),
         Param::real("dyn_weight", 1.0, 0.0, 4.0, Scale::Linear,
                     "scale of the dynamic samples' weights, all weights rescaled to the same sum (1 = the "
                     "triangulation's weights)"),
@@ -48,7 +50,9 @@ const std::vector<Param>& cubatureParams()
             "blend_dist", 1e6, 0.4, 1e6, Scale::Log,
             "beyond this distance (m) from the light's centre the result blends linearly into a 3 x 3 grid "
             "MC estimate, fully MC from 1.5x on (thesis 6.6; the default 1e6 = never: beyond every scene of the "
-            "suite, the h = 1000 far-field stability cases included)"),
+            "suite, the h = 1000 far-field stability cases included); range from 0.4 m, 2/3 of the nearest "
+            "light-centre distance of the published scenes (0.6 m at h = 0.1): below it every pixel is "
+            "already pure grid MC and the objective is flat"),
         lookupParam("lut", "intensity lookup: trig-free table (photometry/lut.h, as mc) or the exact bilinear one"),
         specializeParam("auto: smallest kernel for the scene (methods/specialize.h: the straight-line fan, or "
                         "Delaunay over cp+barycentre, of an unclipped rectangle; 1D table); none: the general one"),

@@ -26,6 +26,7 @@
 #include <memory>
 #include <numeric>
 #include <set>
+#include <tuple>
 
 namespace lb::tune {
 
@@ -118,6 +119,23 @@ void readSearch(const Reader& r, TuneExperiment& e)
             if (p.tunable && numeric(p) && !base.given.count(p.name)) e.params.push_back(p.name);
     }
     if (e.params.empty()) r.fail("params", fmt::format("method {} has no tunable parameter left to search", base.name));
+    if (r.has("bounds")) {
+        const json& b = r.at("bounds");
+        if (!b.is_object()) r.fail("bounds", "expected an object {\"name\": [lo, hi], ...}");
+        for (const auto& [n, range] : b.items()) {
+            if (std::find(e.params.begin(), e.params.end(), n) == e.params.end())
+                r.fail("bounds", fmt::format("'{}' is not searched (searched: {})", n, fmt::join(e.params, ", ")));
+            const auto& p = *std::find_if(fam.params.begin(), fam.params.end(), [&](auto& q) { return q.name == n; });
+            if (!range.is_array() || range.size() != 2 || !range[0].is_number() || !range[1].is_number())
+                r.fail("bounds", fmt::format("'{}': expected [lo, hi], found {}", n, range.dump()));
+            const double lo = range[0].get<double>(), hi = range[1].get<double>();
+            if (!(lo >= p.lo && hi <= p.hi && lo < hi))
+                r.fail("bounds",
+                       fmt::format("'{}': expected lo < hi within the tunables table's [{}, {}], found [{}, {}]", n,
+                                   p.lo, p.hi, lo, hi));
+            e.bounds[n] = {lo, hi};
+        }
+    }
     if (r.has("reference")) {
         e.reference = r.string("reference");
         try {
@@ -197,10 +215,10 @@ TuneExperiment loadTuneExperiment(const std::string& path)
     // A tune file is a few kB; 16 MiB leaves room for generated ones.
     const json j = util::readJsonObject(path, "a tune experiment file (JSON)", 16u << 20);
     Reader r{path, j};
-    r.onlyKnown({"name",      "description", "method",         "params",  "reference",  "luminaire_dir", "res",
-                 "precision", "size",        "extent",         "train",   "validation", "objective",     "algorithm",
-                 "metric",    "global",      "global_maxeval", "maxeval", "maxtime",    "seed",          "scene",
-                 "alpha",     "eye",         "albedo"});
+    r.onlyKnown({"name",      "description", "method", "params",         "bounds",  "reference",  "luminaire_dir",
+                 "res",       "precision",   "size",   "extent",         "train",   "validation", "objective",
+                 "algorithm", "metric",      "global", "global_maxeval", "maxeval", "maxtime",    "seed",
+                 "scene",     "alpha",       "eye",    "albedo"});
     TuneExperiment e;
     e.path = path;
     e.raw = j;
@@ -239,7 +257,11 @@ public:
         const auto& fam = methods::family(base_.name, e.sceneKeys.kind);
         for (const auto& n : e.params)
             for (const auto& p : fam.params)
-                if (p.name == n) dims_.push_back({p});
+                if (p.name == n) {
+                    Dim d{p};
+                    if (auto b = e.bounds.find(n); b != e.bounds.end()) std::tie(d.param.lo, d.param.hi) = b->second;
+                    dims_.push_back(d);
+                }
         train_ = cases(e.train, "train");
         validation_ = cases(e.validation, "validation");
     }
@@ -508,13 +530,18 @@ json Tuner::run()
     doc["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     doc["improved_validation"] =
         doc["tuned"][validationKey].get<double>() < doc["default"][validationKey].get<double>();
+    doc["near_bound"] = json::array();
+    for (const auto& b : doc["tuned"]["at_bound"]) {
+        doc["near_bound"].push_back(
+            {{"name", b["param"]}, {"value", b["value"]}, {"bound", b["bound"]}, {"limit", b["limit"]}});
+        // Always said, --quiet or not: the result is suspect.
+        fmt::print(stderr,
+                   "tune: warning: {} = {:.6g} ended within 1 % of the search range from its {} bound {:.6g}: "
+                   "the optimum may lie beyond it (the ranges: tune.json, \"search\")\n",
+                   b["param"].get<std::string>(), b["value"].get<double>(), b["bound"].get<std::string>(),
+                   b["limit"].get<double>());
+    }
     if (!opt_.quiet) {
-        for (const auto& b : doc["tuned"]["at_bound"])
-            fmt::print(stderr,
-                       "tune: warning: {} = {:.6g} ended within 1 % of the search range from its {} bound {:.6g}: "
-                       "the optimum may lie beyond it (the ranges: tune.json, \"search\")\n",
-                       b["param"].get<std::string>(), b["value"].get<double>(), b["bound"].get<std::string>(),
-                       b["limit"].get<double>());
         fmt::print(stderr, "tune: tuned {}  train {} {:.6g}  validation {:.6g}  ({} evaluations, {:.1f} s)\n",
                    doc["tuned"]["params"].dump(), e_.metric, doc["tuned"][trainKey].get<double>(),
                    doc["tuned"][validationKey].get<double>(), evals_, doc["seconds"].get<double>());

@@ -6,6 +6,7 @@
 //   {"name": "tune-smoke",
 //    "method": "cubature:triangulation=fan",   // the SPEC whose tunables are searched
 //    "params": ["plane_eps", "horizon_eps"],   // default: every tunable Real/Int of the method
+//    "bounds": {"plane_eps": [1e-6, 1e-4]},    // optional: a narrower range than the tunables table's
 //    "reference": "reference:tol=1e-4",
 //    "luminaire_dir": "luminaires", "res": 24, "precision": "float", "size": [1, 1], "extent": 5,
 //    "train":      {"luminaires": ["lambert.ldt"], "heights": [0.1], "rotations": ["pi/2", "3pi/4"]},
@@ -30,7 +31,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace lb::tune {
@@ -45,6 +48,8 @@ struct TuneExperiment {
     std::string path, name;
     std::string method;  // base SPEC
     std::vector<std::string> params;  // names searched
+    // Narrower search ranges than the tunables table's, by name ("bounds").
+    std::map<std::string, std::pair<double, double>> bounds;
     std::string reference = "reference";
     int res = 24;
     std::string precision = "float";
@@ -80,6 +85,9 @@ struct TuneOptions {
 };
 
 // Runs the search and writes outDir/tune.json (and tune.png); returns the document.
+// Its "near_bound" lists every searched parameter whose tuned value ended within
+// 1 % of the searched unit interval from a bound ({name, value, bound lo | hi,
+// limit}); each is also warned about on stderr (the optimum may lie beyond it).
 // Its summaries ("default", "tuned") name the metric: train_<metric>,
 // validation_<metric>, ..._per_scene, ..._mean, ..._worst. Throws lb::Error
 // before searching when the metric is flip and flip-evaluator is not available.

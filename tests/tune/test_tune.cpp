@@ -120,6 +120,76 @@ TEST(Tune, MinimisesTheChosenMetric)
     EXPECT_LE(g["tuned"]["train_grad_nmse"].get<double>(), gd);  // the best point is never worse than the start
 }
 
+// A tiny tune experiment whose optimum lies outside its range: on one of
+// tune-smoke's training scenes (lambert, the light touching the receiver
+// plane, h = 0, R = pi/2) the NMSE falls as horizon_eps grows from 0 to its
+// optimum near 0.016 (measured 0.342 at 0, 0.312 at 0.0094, 0.304 at 0.016),
+// so with "bounds" capping horizon_eps at 0.005 the search ends on the upper
+// bound; tune.json's near_bound names it (value, bound hi, limit) and stderr
+// says so even with --quiet.
+TEST(Tune, ReportsTheParameterThatEndsOnABound)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    nlohmann::json e;
+    std::ifstream(test::sourceDir() + "/experiments/tune-smoke.json") >> e;
+    e["luminaire_dir"] = test::sourceDir() + "/luminaires";
+    e["params"] = {"horizon_eps"};
+    e["bounds"] = {{"horizon_eps", {0.0, 0.005}}};
+    e["train"]["luminaires"] = {"lambert.ldt"};
+    e["train"]["rotations"] = {"pi/2"};
+    e["validation"]["luminaires"] = {"lambert.ldt"};
+    e["validation"]["rotations"] = {"pi/2"};
+    e["maxeval"] = 12;
+    fs::path dir = fs::temp_directory_path() / ("lb_tune_bound_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    std::ofstream(dir / "e.json") << e.dump();
+    auto r =
+        test::runCli("tune " + (dir / "e.json").string() + " --out " + (dir / "out").string() + " --quiet --no-plot");
+    ASSERT_EQ(r.code, 0) << r.err;
+    nlohmann::json doc;
+    std::ifstream(dir / "out" / "tune.json") >> doc;
+    fs::remove_all(dir);
+    // The narrowed range is the one searched and reported.
+    ASSERT_EQ(doc["search"].size(), 1u);
+    EXPECT_EQ(doc["search"][0]["hi"].get<double>(), 0.005);
+    std::printf("horizon_eps in [0, 0.005]: train nmse %.6g at the default -> %.6g at horizon_eps %.4g\n",
+                doc["trace"][0]["objective"].get<double>(), doc["tuned"]["train_nmse"].get<double>(),
+                doc["tuned"]["params"]["horizon_eps"].get<double>());
+    const auto& nb = doc["near_bound"];
+    ASSERT_EQ(nb.size(), 1u) << nb.dump();
+    EXPECT_EQ(nb[0]["name"], "horizon_eps");
+    EXPECT_EQ(nb[0]["bound"], "hi");
+    EXPECT_EQ(nb[0]["limit"].get<double>(), 0.005);
+    // The search moved there from inside: strictly better than the default.
+    EXPECT_LT(doc["tuned"]["train_nmse"].get<double>(), doc["trace"][0]["objective"].get<double>());
+    // Within 1 % of the linear range's unit interval from 0.005.
+    EXPECT_GE(nb[0]["value"].get<double>() / 0.005, 0.99) << nb.dump();
+    EXPECT_NE(r.err.find("horizon_eps"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("bound"), std::string::npos) << r.err;
+}
+
+// "bounds" may only narrow a searched parameter's range inside the table's.
+TEST(Tune, BoundsOutsideTheTableAreRefused)
+{
+    nlohmann::json e;
+    std::ifstream(test::sourceDir() + "/experiments/tune-smoke.json") >> e;
+    e["luminaire_dir"] = test::sourceDir() + "/luminaires";
+    fs::path p = fs::temp_directory_path() / ("lb_tune_bounds_" + std::to_string(::getpid()) + ".json");
+    for (const auto& [b, what] : std::vector<std::pair<nlohmann::json, std::string>>{
+             {{{"plane_eps", {1e-7, 1e-3}}}, "within the tunables table's"},
+             {{{"plane_eps", {1e-3, 1e-4}}}, "lo < hi"},
+             {{{"corner_inset", {0, 0.5}}}, "is not searched"},
+             {{{"plane_eps", 0.1}}, "expected [lo, hi]"}}) {
+        e["bounds"] = b;
+        std::ofstream(p) << e.dump();
+        std::string msg = test::inputErrorOf([&] { tune::loadTuneExperiment(p.string()); });
+        EXPECT_NE(msg.find("\"bounds\""), std::string::npos) << msg;
+        EXPECT_NE(msg.find(what), std::string::npos) << what << " in: " << msg;
+    }
+    fs::remove(p);
+}
+
 // The CI criterion of the tuner: tuning improves the validation NMSE over the
 // defaults on tune-smoke (a few seconds on 2 cores with the references
 // cached, ~1 s more for the plot's matplotlib start-up).
