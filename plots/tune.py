@@ -23,12 +23,17 @@ def main():
     fig, ax = plt.subplots(figsize=(6, 4))
     ax.plot(k, [t["objective"] for t in trace], ".", color="0.6", label="objective")
     ax.plot(k, [t["best"] for t in trace], "-", color="C0", label="best so far")
-    ax.axhline(doc["default"]["train_" + metric], color="C1", ls="--", label="default (train)")
-    ax.set_yscale("log")
+    # The equal-time objective is a mean log ratio (may be negative): linear axis.
+    key = "objective" if doc["objective"] == "equal_time" else metric
+    ax.axhline(doc["default"]["train_" + key], color="C1", ls="--", label="default (train)")
+    if doc["objective"] == "equal_time":
+        ax.set_ylabel(f"mean log({metric} / MCI's at equal time), training scenes")
+    else:
+        ax.set_yscale("log")
+        ax.set_ylabel(f"{doc['objective']} {metric} over the training scenes")
     ax.set_xlabel("evaluation")
-    ax.set_ylabel(f"{doc['objective']} {metric} over the training scenes")
     ax.set_title(f"{doc['name']}: {doc['tuned']['algorithm']}, validation "
-                 f"{doc['default']['validation_' + metric]:.4g} -> {doc['tuned']['validation_' + metric]:.4g}",
+                 f"{doc['default']['validation_' + key]:.4g} -> {doc['tuned']['validation_' + key]:.4g}",
                  fontsize=9)
     ax.legend(fontsize=8)
     fig.tight_layout()

@@ -56,12 +56,15 @@ SceneSet sceneSet(const Reader& file, const std::string& key, const std::string&
     return s;
 }
 
-// One scene: its table, its reference image.
+// One scene: its table, its reference image (and with the equal_time
+// objective MCI's curve on it).
 struct Case {
     std::string label;
+    std::string luminaire;  // the file's name, e.g. lambert.ldt
     std::shared_ptr<photometry::Table> table;
     Scene scene;
     Image ref;
+    std::vector<CurvePoint> mci;
 };
 
 }  // namespace
@@ -84,6 +87,33 @@ double Dim::toUnit(double v) const
         ? (std::log(std::max(v, param.lo)) - std::log(param.lo)) / (std::log(param.hi) - std::log(param.lo))
         : (v - param.lo) / (param.hi - param.lo);
     return std::clamp(u, 0.0, 1.0);
+}
+
+double mciMetricAt(const std::vector<CurvePoint>& curveByN, double ms)
+{
+    if (curveByN.empty()) throw Error("mciMetricAt: empty MCI curve");
+    std::vector<std::pair<double, double>> p;  // (log t, log metric), t increasing
+    double t = 0;
+    for (const auto& c : curveByN) {
+        t = std::max({t, c.ms, 1e-9});
+        const double lt = std::log(t), lm = std::log(std::max(c.metric, 1e-300));
+        if (!p.empty() && lt <= p.back().first)
+            p.back().second = std::min(p.back().second, lm);
+        else
+            p.emplace_back(lt, lm);
+    }
+    const double x = std::log(std::max(ms, 1e-9));
+    if (x <= p.front().first) return std::exp(p.front().second - (x - p.front().first));
+    if (x >= p.back().first) return std::exp(p.back().second - (x - p.back().first));
+    size_t i = 1;
+    while (p[i].first < x) ++i;
+    const double w = (x - p[i - 1].first) / (p[i].first - p[i - 1].first);
+    return std::exp(p[i - 1].second + w * (p[i].second - p[i - 1].second));
+}
+
+double equalTimeScore(double metric, double ms, const std::vector<CurvePoint>& curveByN)
+{
+    return std::log(std::max(metric, 1e-300) / mciMetricAt(curveByN, ms));
 }
 
 namespace {
@@ -184,8 +214,32 @@ void readOptimiser(const Reader& r, TuneExperiment& e)
     }
     if (r.has("objective")) {
         e.objective = r.string("objective");
-        if (e.objective != "mean" && e.objective != "worst")
-            r.fail("objective", fmt::format("expected mean or worst, found '{}'", e.objective));
+        if (e.objective != "mean" && e.objective != "worst" && e.objective != "equal_time")
+            r.fail("objective", fmt::format("expected mean, worst or equal_time, found '{}'", e.objective));
+    }
+    if (r.has("equal_time")) {
+        if (e.objective != "equal_time")
+            r.fail("equal_time", fmt::format("set, but \"objective\" is '{}' (equal_time uses it)", e.objective));
+        const json& j = r.at("equal_time");
+        if (!j.is_object()) r.fail("equal_time", "expected an object with time_res, reps, mc, mci_n");
+        Reader q{r.path, j, "equal_time."};
+        q.onlyKnown({"time_res", "reps", "mc", "mci_n"});
+        auto& k = e.equalTime;
+        if (q.has("time_res")) k.timeRes = static_cast<int>(q.integer("time_res", 8, 4096));
+        if (q.has("reps")) k.reps = static_cast<int>(q.integer("reps", 1, 1000));
+        if (q.has("mc")) k.mc = q.string("mc");
+        if (q.has("mci_n")) {
+            k.mciN = q.integers("mci_n", 1, 1 << 20);
+            if (k.mciN.size() < 2) q.fail("mci_n", "expected at least two sample counts (a curve)");
+        }
+    }
+    if (e.objective == "equal_time") {
+        try {
+            auto mc = methods::parseSpec(e.equalTime.mc, e.sceneKeys.kind);
+            if (mc.name != "mc" || mc.given.count("n")) throw InputError("expected an mc SPEC without n");
+        } catch (const InputError& err) {
+            r.fail("equal_time", fmt::format("mc '{}': {}", e.equalTime.mc, err.what()));
+        }
     }
     auto checkAlgo = [&](const std::string& k, const std::string& name) {
         if (nlopt_algorithm_from_string(name.c_str()) < 0)
@@ -215,10 +269,11 @@ TuneExperiment loadTuneExperiment(const std::string& path)
     // A tune file is a few kB; 16 MiB leaves room for generated ones.
     const json j = util::readJsonObject(path, "a tune experiment file (JSON)", 16u << 20);
     Reader r{path, j};
-    r.onlyKnown({"name",      "description", "method", "params",         "bounds",  "reference",  "luminaire_dir",
-                 "res",       "precision",   "size",   "extent",         "train",   "validation", "objective",
-                 "algorithm", "metric",      "global", "global_maxeval", "maxeval", "maxtime",    "seed",
-                 "scene",     "alpha",       "eye",    "albedo"});
+    r.onlyKnown({"name",          "description", "method",    "params",     "bounds", "reference",
+                 "luminaire_dir", "res",         "precision", "size",       "extent", "train",
+                 "validation",    "objective",   "algorithm", "metric",     "global", "global_maxeval",
+                 "maxeval",       "maxtime",     "seed",      "equal_time", "scene",  "alpha",
+                 "eye",           "albedo"});
     TuneExperiment e;
     e.path = path;
     e.raw = j;
@@ -248,6 +303,14 @@ std::string specWith(const std::string& base, const std::vector<std::string>& na
 
 namespace {
 
+// One evaluation of a spec on one scene.
+struct Eval {
+    double metric = 0;  // the experiment's metric (1e6 when undefined or non-finite pixels)
+    double ms = 0;  // equal_time: the median time at the equal-time resolution
+    double score = 0;  // what the objective aggregates: metric, or the equal-time score
+    long nonfinite = 0;
+};
+
 class Tuner {
 public:
     Tuner(const TuneExperiment& e, const TuneOptions& o) : e_(e), opt_(o), rt_(o.device)
@@ -262,6 +325,7 @@ public:
                     if (auto b = e.bounds.find(n); b != e.bounds.end()) std::tie(d.param.lo, d.param.hi) = b->second;
                     dims_.push_back(d);
                 }
+        for (const auto& d : dims_) names_.push_back(d.param.name);
         train_ = cases(e.train, "train");
         validation_ = cases(e.validation, "validation");
     }
@@ -269,6 +333,46 @@ public:
     json run();
 
 private:
+    bool equalTime() const { return e_.objective == "equal_time"; }
+
+    double metricOf(const Image& ref, const Image& img, long* nonfinite) const
+    {
+        auto m = metrics::compare(ref, img);
+        if (e_.metric == "flip") m.flip = metrics::flip(ref, img);  // only when minimised: it costs most
+        if (nonfinite) *nonfinite += m.nonfinite;
+        const double v = metrics::minimisable(m, e_.metric);
+        return m.nonfinite > 0 || !std::isfinite(v) ? 1e6 : v;
+    }
+
+    // The equal-time timing: one warm-up and the median of reps launches at time_res.
+    methods::RenderOptions timedOptions() const
+    {
+        methods::RenderOptions ro;
+        ro.reps = e_.equalTime.reps;
+        ro.timeRes = e_.equalTime.timeRes;
+        return ro;
+    }
+
+    // MCI's curve on one scene: metric and time at each of mci_n.
+    std::vector<CurvePoint> mciCurve(const Case& c, const std::string& what)
+    {
+        std::vector<CurvePoint> out;
+        const auto& k = e_.equalTime;
+        for (long n : k.mciN) {
+            const std::string spec = k.mc + (k.mc.find(':') == std::string::npos ? ":" : ",") + fmt::format("n={}", n);
+            auto r = methods::render(rt_, *c.table, c.scene, methods::parseSpec(spec, e_.sceneKeys.kind), prec_,
+                                     timedOptions());
+            out.push_back({r.timing.median_ms, metricOf(c.ref, r.image, nullptr)});
+        }
+        if (!opt_.quiet) {
+            std::string line;
+            for (size_t i = 0; i < out.size(); ++i)
+                line += fmt::format("  N={} {:.3g} ms {:.3g}", k.mciN[i], out[i].ms, out[i].metric);
+            fmt::print(stderr, "tune: {} MCI curve {}:{}\n", what, c.label, line);
+        }
+        return out;
+    }
+
     std::vector<Case> cases(const SceneSet& s, const std::string& what)
     {
         std::vector<Case> out;
@@ -281,6 +385,7 @@ private:
                 for (size_t r = 0; r < s.rotations.size(); ++r)
                     for (double alpha : e_.sceneKeys.alphas) {
                         Case c;
+                        c.luminaire = fs::path(lum).filename().string();
                         c.table = table;
                         c.scene.height = h;
                         c.scene.rotation = s.rotations[r];
@@ -293,41 +398,41 @@ private:
                         if (c.scene.kind == SceneKind::Specular) c.label += fmt::format(" alpha={}", alpha);
                         if (!opt_.quiet) fmt::print(stderr, "tune: {} reference {}\n", what, c.label);
                         c.ref = methods::render(rt_, *table, c.scene, ref, prec_, ro).image;
+                        if (equalTime()) c.mci = mciCurve(c, what);
                         out.push_back(std::move(c));
                     }
         }
         return out;
     }
 
-    // The metric of the method with `values` on every case (non-finite
-    // pixels or an undefined value: a large penalty so the search moves
-    // away; non-finite pixels are reported too).
-    std::vector<double> errors(const std::vector<Case>& cs, const std::vector<double>& values,
-                               long* nonfinite = nullptr)
+    // The metric (and with equal_time the time and score) of the method with
+    // `values` on every case (non-finite pixels or an undefined value: a large
+    // penalty so the search moves away; non-finite pixels are counted).
+    std::vector<Eval> evaluate(const std::vector<Case>& cs, const std::vector<double>& values)
     {
-        std::vector<std::string> names;
-        for (const auto& d : dims_) names.push_back(d.param.name);
         methods::MethodSpec s =
-            methods::parseSpec(specWith(e_.method, names, values, e_.sceneKeys.kind), e_.sceneKeys.kind);
+            methods::parseSpec(specWith(e_.method, names_, values, e_.sceneKeys.kind), e_.sceneKeys.kind);
         methods::RenderOptions ro;
         ro.reps = 1;  // only the image matters here
-        std::vector<double> out;
+        if (equalTime()) ro = timedOptions();
+        std::vector<Eval> out;
         for (const auto& c : cs) {
             auto r = methods::render(rt_, *c.table, c.scene, s, prec_, ro);
-            auto m = metrics::compare(c.ref, r.image);
-            if (e_.metric == "flip") m.flip = metrics::flip(c.ref, r.image);  // only when minimised: it costs most
-            if (nonfinite) *nonfinite += m.nonfinite;
-            const double v = metrics::minimisable(m, e_.metric);
-            out.push_back(m.nonfinite > 0 || !std::isfinite(v) ? 1e6 : v);
+            Eval ev;
+            ev.metric = metricOf(c.ref, r.image, &ev.nonfinite);
+            ev.ms = r.timing.median_ms;
+            ev.score = equalTime() ? equalTimeScore(ev.metric, ev.ms, c.mci) : ev.metric;
+            out.push_back(ev);
         }
         return out;
     }
 
-    double aggregate(const std::vector<double>& v) const
+    double aggregate(const std::vector<Eval>& v) const
     {
-        if (e_.objective == "worst") return *std::max_element(v.begin(), v.end());
+        if (e_.objective == "worst")
+            return std::max_element(v.begin(), v.end(), [](auto& a, auto& b) { return a.score < b.score; })->score;
         double s = 0;
-        for (double x : v) s += x;
+        for (const auto& x : v) s += x.score;
         return s / double(v.size());
     }
 
@@ -362,6 +467,21 @@ private:
         return out;
     }
 
+    // One named set's values in a summary: <set>_objective, <set>_<metric>
+    // (by the objective; the mean with equal_time) with its per-scene list,
+    // mean and worst; with equal_time also the scores, times and MCI's metric
+    // at those times per scene.
+    void setJson(json& s, const std::string& set, const std::vector<Case>& cs, const std::vector<Eval>& x) const;
+
+    // The defaults, then the search on `train`; the best values.
+    struct Search {
+        std::vector<double> best;
+        std::string algo;
+        int evals = 0;
+        json trace;
+    };
+    Search searchOn(const std::vector<Case>& train, const std::string& label);
+
     json header() const;
     json summary(const std::vector<double>& v, const std::string& algo, int evals);
     std::string search(std::vector<double>& u, std::chrono::steady_clock::time_point t0);
@@ -374,13 +494,42 @@ private:
     methods::Precision prec_;
     methods::MethodSpec base_;
     std::vector<Dim> dims_;
+    std::vector<std::string> names_;
     std::vector<Case> train_, validation_;
+    const std::vector<Case>* active_ = &train_;  // what the running search minimises over
+    std::string label_;  // "" for the main search, else the fold or preset it runs for
     json trace_ = json::array();
     int evals_ = 0;
     double best_ = std::numeric_limits<double>::infinity();
     std::vector<double> bestU_;
     std::string stageName_;
 };
+
+void Tuner::setJson(json& s, const std::string& set, const std::vector<Case>& cs, const std::vector<Eval>& x) const
+{
+    std::vector<double> m;
+    for (const auto& v : x) m.push_back(v.metric);
+    const std::string k = set + "_" + e_.metric;
+    const double mean = std::accumulate(m.begin(), m.end(), 0.0) / double(m.size());
+    const double worst = *std::max_element(m.begin(), m.end());
+    s[set + "_objective"] = aggregate(x);
+    s[k] = e_.objective == "worst" ? worst : mean;
+    s[k + "_per_scene"] = m;
+    s[k + "_mean"] = mean;
+    s[k + "_worst"] = worst;
+    if (equalTime()) {
+        json score = json::array(), ms = json::array(), mci = json::array();
+        for (size_t i = 0; i < x.size(); ++i) {
+            score.push_back(x[i].score);
+            ms.push_back(x[i].ms);
+            mci.push_back(mciMetricAt(cs[i].mci, x[i].ms));
+        }
+        s[set + "_equal_time"] = aggregate(x);
+        s[set + "_equal_time_per_scene"] = score;
+        s[set + "_ms_per_scene"] = ms;
+        s[set + "_mci_" + e_.metric + "_per_scene"] = mci;
+    }
+}
 
 void Tuner::stage(const std::string& algo, int maxeval, double maxtime, std::vector<double>& u)
 {
@@ -400,7 +549,7 @@ void Tuner::stage(const std::string& algo, int maxeval, double maxtime, std::vec
         auto* t = static_cast<std::pair<Tuner*, std::pair<int, int>>*>(data);
         Tuner& self = *t->first;
         auto v = self.values(x);
-        double obj = self.aggregate(self.errors(self.train_, v));
+        double obj = self.aggregate(self.evaluate(*self.active_, v));
         ++self.evals_;
         if (obj < self.best_) {
             self.best_ = obj;
@@ -412,8 +561,9 @@ void Tuner::stage(const std::string& algo, int maxeval, double maxtime, std::vec
                                {"best", self.best_},
                                {"params", self.paramsJson(v)}});
         if (!self.opt_.quiet)
-            fmt::print(stderr, "tune: {} evaluation {}/{}  objective {:.6g}  best {:.6g}  {}\n", self.stageName_,
-                       self.evals_ - t->second.first, t->second.second, obj, self.best_, self.paramsJson(v).dump());
+            fmt::print(stderr, "tune: {}{} evaluation {}/{}  objective {:.6g}  best {:.6g}  {}\n", self.label_,
+                       self.stageName_, self.evals_ - t->second.first, t->second.second, obj, self.best_,
+                       self.paramsJson(v).dump());
         return obj;
     };
     // Progress counts k/maxeval within the stage.
@@ -456,6 +606,19 @@ json Tuner::header() const
         scenes[set == &train_ ? "train" : "validation"] = a;
     }
     doc["scenes"] = scenes;
+    if (equalTime()) {
+        const auto& k = e_.equalTime;
+        json curves = json::object();
+        for (auto* set : {&train_, &validation_})
+            for (const auto& c : *set) {
+                json pts = json::array();
+                for (size_t i = 0; i < c.mci.size(); ++i)
+                    pts.push_back({{"n", k.mciN[i]}, {"ms", c.mci[i].ms}, {e_.metric, c.mci[i].metric}});
+                curves[c.label] = pts;
+            }
+        doc["equal_time"] = {
+            {"time_res", k.timeRes}, {"reps", k.reps}, {"mc", k.mc}, {"mci_n", k.mciN}, {"mci_curves", curves}};
+    }
     return doc;
 }
 
@@ -463,23 +626,17 @@ json Tuner::header() const
 // mean and worst; the spec that renders them, the bounds they ended at.
 json Tuner::summary(const std::vector<double>& v, const std::string& algo, int evals)
 {
-    long nfT = 0, nfV = 0;
-    auto tr = errors(train_, v, &nfT);
-    auto va = errors(validation_, v, &nfV);
+    auto tr = evaluate(train_, v);
+    auto va = evaluate(validation_, v);
     json s;
     s["params"] = paramsJson(v);
-    std::vector<std::string> names;
-    for (const auto& d : dims_) names.push_back(d.param.name);
-    s["spec"] = specWith(e_.method, names, v, e_.sceneKeys.kind);
-    for (const auto& [set, x] :
-         {std::pair<std::string, const std::vector<double>*>{"train", &tr}, {"validation", &va}}) {
-        const std::string k = set + "_" + e_.metric;
-        s[k] = aggregate(*x);
-        s[k + "_per_scene"] = *x;
-        s[k + "_mean"] = std::accumulate(x->begin(), x->end(), 0.0) / double(x->size());
-        s[k + "_worst"] = *std::max_element(x->begin(), x->end());
-    }
-    s["nonfinite"] = nfT + nfV;
+    s["spec"] = specWith(e_.method, names_, v, e_.sceneKeys.kind);
+    setJson(s, "train", train_, tr);
+    setJson(s, "validation", validation_, va);
+    long nf = 0;
+    for (auto* x : {&tr, &va})
+        for (const auto& ev : *x) nf += ev.nonfinite;
+    s["nonfinite"] = nf;
     s["evaluations"] = evals;
     s["algorithm"] = algo;
     s["at_bound"] = atBound(v);
@@ -507,29 +664,46 @@ std::string Tuner::search(std::vector<double>& u, std::chrono::steady_clock::tim
     return algo;
 }
 
+Tuner::Search Tuner::searchOn(const std::vector<Case>& train, const std::string& label)
+{
+    active_ = &train;
+    label_ = label;
+    trace_ = json::array();
+    evals_ = 0;
+    best_ = std::numeric_limits<double>::infinity();
+    bestU_.clear();
+    nlopt::srand(e_.seed);
+    std::vector<double> u;
+    for (const auto& d : dims_) u.push_back(d.toUnit(std::stod(base_.values.at(d.param.name))));
+    Search out;
+    out.algo = search(u, std::chrono::steady_clock::now());
+    out.best = values(bestU_.empty() ? u : bestU_);
+    out.evals = evals_;
+    out.trace = trace_;
+    active_ = &train_;
+    label_.clear();
+    return out;
+}
+
 json Tuner::run()
 {
     auto t0 = std::chrono::steady_clock::now();
-    nlopt::srand(e_.seed);
     std::vector<double> defaults;
     for (const auto& d : dims_) defaults.push_back(std::stod(base_.values.at(d.param.name)));
 
     json doc = header();
-    const std::string trainKey = "train_" + e_.metric, validationKey = "validation_" + e_.metric;
     doc["default"] = summary(defaults, "none", 0);
     if (!opt_.quiet)
-        fmt::print(stderr, "tune: default  train {} {:.6g}  validation {:.6g}\n", e_.metric,
-                   doc["default"][trainKey].get<double>(), doc["default"][validationKey].get<double>());
+        fmt::print(stderr, "tune: default  train {:.6g}  validation {:.6g} ({} of {})\n",
+                   doc["default"]["train_objective"].get<double>(),
+                   doc["default"]["validation_objective"].get<double>(), e_.objective, e_.metric);
 
-    std::vector<double> u;
-    for (size_t i = 0; i < dims_.size(); ++i) u.push_back(dims_[i].toUnit(defaults[i]));
-    const std::string algo = search(u, t0);
-    std::vector<double> best = values(bestU_.empty() ? u : bestU_);
-    doc["tuned"] = summary(best, algo, evals_);
-    doc["trace"] = trace_;
+    Search s = searchOn(train_, "");
+    doc["tuned"] = summary(s.best, s.algo, s.evals);
+    doc["trace"] = s.trace;
     doc["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     doc["improved_validation"] =
-        doc["tuned"][validationKey].get<double>() < doc["default"][validationKey].get<double>();
+        doc["tuned"]["validation_objective"].get<double>() < doc["default"]["validation_objective"].get<double>();
     doc["near_bound"] = json::array();
     for (const auto& b : doc["tuned"]["at_bound"]) {
         doc["near_bound"].push_back(
@@ -541,11 +715,11 @@ json Tuner::run()
                    b["param"].get<std::string>(), b["value"].get<double>(), b["bound"].get<std::string>(),
                    b["limit"].get<double>());
     }
-    if (!opt_.quiet) {
-        fmt::print(stderr, "tune: tuned {}  train {} {:.6g}  validation {:.6g}  ({} evaluations, {:.1f} s)\n",
-                   doc["tuned"]["params"].dump(), e_.metric, doc["tuned"][trainKey].get<double>(),
-                   doc["tuned"][validationKey].get<double>(), evals_, doc["seconds"].get<double>());
-    }
+    if (!opt_.quiet)
+        fmt::print(stderr, "tune: tuned {}  train {:.6g}  validation {:.6g} ({} of {}; {} evaluations, {:.1f} s)\n",
+                   doc["tuned"]["params"].dump(), doc["tuned"]["train_objective"].get<double>(),
+                   doc["tuned"]["validation_objective"].get<double>(), e_.objective, e_.metric, s.evals,
+                   doc["seconds"].get<double>());
     return doc;
 }
 

@@ -13,12 +13,26 @@
 //    "validation": {"luminaires": ["spot.ldt"],    "heights": [1.1], "rotations": ["pi/2", "3pi/4"]},
 //    "metric": "nmse",                           // what is minimised: any metric a record carries
 //                                                // (nmse, nrmse, relmse, grad_nmse, flip, ueb, leb as |leb|)
-//    "objective": "mean",                        // mean | worst of the metric over the training scenes
+//    "objective": "mean",                        // mean | worst of the metric over the training scenes,
+//                                                // or equal_time (below)
+//    "equal_time": {"time_res": 128, "reps": 5, "mc": "mc", "mci_n": [1, 2, 4, 8, 16, 32, 64]},
 //    "algorithm": "LN_SBPLX",                    // any nlopt name (LN_NELDERMEAD, LN_BOBYQA, ...)
 //    "global": "GN_DIRECT_L", "global_maxeval": 40,   // optional global search before the local one
 //    "maxeval": 30, "maxtime": 60, "seed": 1,
 //    "scene": "specular", "alpha": [0.1, 0.5], "eye": [0, 4, 2]}   // scene/scene_keys.h; alphas
 //                                                // multiply the train and validation scenes
+//
+// The equal-time objective: before the search, MCI ("mc" with n = each of
+// "mci_n") is rendered on every scene and timed at time_res^2 pixels (one
+// warm-up, median of reps launches), giving the scene's curve of MCI's metric
+// against its time. Each evaluation times the candidate the same way and
+// scores each scene by log(metric / MCI's metric at the candidate's time),
+// interpolated log-log on that curve (mciMetricAt); the objective is the mean
+// over the scenes. So a candidate that gains accuracy only by becoming slower
+// gains nothing against MCI. Noise: each evaluation's time is one median of
+// `reps` launches on whatever else the machine runs; at 1.5x timing noise the
+// score moves by ~log 1.5 = 0.4 (MCI's metric ~ 1/t), so compare
+// equal-time objectives that differ by more than that, or rerun.
 //
 // Each parameter is searched in the unit interval mapped onto its bounds from
 // the tunables table, linearly or logarithmically (Scale::Log). Continuous
@@ -44,6 +58,14 @@ struct SceneSet {
     std::vector<std::string> rotationText;
 };
 
+// The "equal_time" key: how the candidate and MCI are timed.
+struct EqualTimeKeys {
+    int timeRes = 128;  // pixels per side of the timed launches
+    int reps = 5;  // timed launches after one warm-up; their median counts
+    std::string mc = "mc";  // MCI's SPEC, n set from mciN
+    std::vector<long> mciN = {1, 2, 4, 8, 16, 32, 64};
+};
+
 struct TuneExperiment {
     std::string path, name;
     std::string method;  // base SPEC
@@ -56,7 +78,8 @@ struct TuneExperiment {
     double width = 1, length = 1, extent = 5;
     SceneSet train, validation;
     std::string metric = "nmse";  // metrics::minimisableMetrics()
-    std::string objective = "mean";  // mean | worst
+    std::string objective = "mean";  // mean | worst | equal_time
+    EqualTimeKeys equalTime;
     std::string algorithm = "LN_SBPLX";
     std::string global;  // "" = none
     int globalMaxeval = 0;  // 0: half of maxeval
@@ -92,6 +115,20 @@ struct TuneOptions {
 // validation_<metric>, ..._per_scene, ..._mean, ..._worst. Throws lb::Error
 // before searching when the metric is flip and flip-evaluator is not available.
 nlohmann::json runTune(const TuneExperiment& e, const TuneOptions& opt);
+
+// One point of a scene's MCI curve: MCI's median time (ms) at the
+// equal-time resolution and its metric on the scene.
+struct CurvePoint {
+    double ms, metric;
+};
+// MCI's metric at `ms`: the curve (in order of N) with its times made
+// non-decreasing (a later, larger N measured faster than a smaller one takes
+// the smaller one's time; equal times keep the lower metric), interpolated
+// linearly in (log t, log metric); beyond its ends along metric ~ 1/t (MC's
+// variance at N ~ t). Metrics <= 0 count as 1e-300.
+double mciMetricAt(const std::vector<CurvePoint>& curveByN, double ms);
+// The equal-time score of one scene: log(metric / mciMetricAt(curve, ms)).
+double equalTimeScore(double metric, double ms, const std::vector<CurvePoint>& curveByN);
 
 // The SPEC with `names` set to `values` (canonical text), the rest from `base`.
 std::string specWith(const std::string& base, const std::vector<std::string>& names, const std::vector<double>& values,

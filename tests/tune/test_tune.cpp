@@ -11,6 +11,8 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <tuple>
+#include <vector>
 
 #include <unistd.h>
 
@@ -18,6 +20,24 @@ namespace lb {
 namespace {
 
 namespace fs = std::filesystem;
+
+// Runs `lumibench tune` on experiment `e` (--quiet --no-plot) in a fresh
+// temporary directory; its tune.json (null when it failed) and in *r the run.
+nlohmann::json runTuneCli(const nlohmann::json& e, test::CliResult* r, const std::string& extraFlags = "")
+{
+    static int k = 0;
+    fs::path dir =
+        fs::temp_directory_path() / ("lb_tune_cli_" + std::to_string(::getpid()) + "_" + std::to_string(k++));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    std::ofstream(dir / "e.json") << e.dump();
+    *r = test::runCli("tune " + (dir / "e.json").string() + " --out " + (dir / "out").string() + " --quiet --no-plot" +
+                      extraFlags);
+    nlohmann::json doc;
+    if (r->code == 0) std::ifstream(dir / "out" / "tune.json") >> doc;
+    fs::remove_all(dir);
+    return doc;
+}
 
 TEST(Tune, LogScaleMapsEndsAndMidpoint)
 {
@@ -91,18 +111,11 @@ TEST(Tune, MinimisesTheChosenMetric)
     base["maxeval"] = 3;
     std::map<std::string, nlohmann::json> docs;
     for (const char* metric : {"nmse", "grad_nmse"}) {
-        fs::path dir =
-            fs::temp_directory_path() / ("lb_tune_" + std::string(metric) + "_" + std::to_string(::getpid()));
-        fs::remove_all(dir);
-        fs::create_directories(dir);
         nlohmann::json e = base;
         e["metric"] = metric;
-        std::ofstream(dir / "e.json") << e.dump();
-        auto r = test::runCli("tune " + (dir / "e.json").string() + " --out " + (dir / "out").string() +
-                              " --quiet --no-plot");
+        test::CliResult r;
+        docs[metric] = runTuneCli(e, &r);
         ASSERT_EQ(r.code, 0) << r.err;
-        std::ifstream(dir / "out" / "tune.json") >> docs[metric];
-        fs::remove_all(dir);
     }
     const auto& g = docs["grad_nmse"];
     EXPECT_EQ(g["metric"], "grad_nmse");
@@ -140,16 +153,9 @@ TEST(Tune, ReportsTheParameterThatEndsOnABound)
     e["validation"]["luminaires"] = {"lambert.ldt"};
     e["validation"]["rotations"] = {"pi/2"};
     e["maxeval"] = 12;
-    fs::path dir = fs::temp_directory_path() / ("lb_tune_bound_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    std::ofstream(dir / "e.json") << e.dump();
-    auto r =
-        test::runCli("tune " + (dir / "e.json").string() + " --out " + (dir / "out").string() + " --quiet --no-plot");
+    test::CliResult r;
+    nlohmann::json doc = runTuneCli(e, &r);
     ASSERT_EQ(r.code, 0) << r.err;
-    nlohmann::json doc;
-    std::ifstream(dir / "out" / "tune.json") >> doc;
-    fs::remove_all(dir);
     // The narrowed range is the one searched and reported.
     ASSERT_EQ(doc["search"].size(), 1u);
     EXPECT_EQ(doc["search"][0]["hi"].get<double>(), 0.005);
@@ -169,25 +175,116 @@ TEST(Tune, ReportsTheParameterThatEndsOnABound)
     EXPECT_NE(r.err.find("bound"), std::string::npos) << r.err;
 }
 
-// "bounds" may only narrow a searched parameter's range inside the table's.
-TEST(Tune, BoundsOutsideTheTableAreRefused)
+// tune-smoke.json (its luminaires found from here) with the keys of `patch`
+// set: the InputError loading it gives ("" when it loads).
+std::string smokeRefusal(const nlohmann::json& patch)
 {
     nlohmann::json e;
     std::ifstream(test::sourceDir() + "/experiments/tune-smoke.json") >> e;
     e["luminaire_dir"] = test::sourceDir() + "/luminaires";
-    fs::path p = fs::temp_directory_path() / ("lb_tune_bounds_" + std::to_string(::getpid()) + ".json");
+    e.update(patch);
+    fs::path p = fs::temp_directory_path() / ("lb_tune_refused_" + std::to_string(::getpid()) + ".json");
+    std::ofstream(p) << e.dump();
+    std::string msg = test::inputErrorOf([&] { tune::loadTuneExperiment(p.string()); });
+    fs::remove(p);
+    return msg;
+}
+
+// "bounds" may only narrow a searched parameter's range inside the table's.
+TEST(Tune, BoundsOutsideTheTableAreRefused)
+{
     for (const auto& [b, what] : std::vector<std::pair<nlohmann::json, std::string>>{
              {{{"plane_eps", {1e-7, 1e-3}}}, "within the tunables table's"},
              {{{"plane_eps", {1e-3, 1e-4}}}, "lo < hi"},
              {{{"corner_inset", {0, 0.5}}}, "is not searched"},
              {{{"plane_eps", 0.1}}, "expected [lo, hi]"}}) {
-        e["bounds"] = b;
-        std::ofstream(p) << e.dump();
-        std::string msg = test::inputErrorOf([&] { tune::loadTuneExperiment(p.string()); });
+        std::string msg = smokeRefusal({{"bounds", b}});
         EXPECT_NE(msg.find("\"bounds\""), std::string::npos) << msg;
         EXPECT_NE(msg.find(what), std::string::npos) << what << " in: " << msg;
     }
-    fs::remove(p);
+}
+
+// "equal_time" only with the equal_time objective, an mc SPEC without n and
+// a curve of at least two points.
+TEST(Tune, BadEqualTimeKeysAreRefused)
+{
+    for (const auto& [obj, keys, what] : std::vector<std::tuple<std::string, nlohmann::json, std::string>>{
+             {"mean", {{"reps", 5}}, "\"objective\" is 'mean'"},
+             {"equal_time", {{"mc", "mc:n=4"}}, "without n"},
+             {"equal_time", {{"mc", "cubature"}}, "without n"},
+             {"equal_time", {{"mci_n", {8}}}, "at least two"},
+             {"equal_time", {{"time_res", 0}}, "time_res"}}) {
+        std::string msg = smokeRefusal({{"objective", obj}, {"equal_time", keys}});
+        EXPECT_NE(msg.find("equal_time"), std::string::npos) << msg;
+        EXPECT_NE(msg.find(what), std::string::npos) << what << " in: " << msg;
+    }
+}
+
+// MCI's metric at a time: log-log interpolation of the curve, beyond its ends
+// along metric ~ 1/t; a larger N measured faster than a smaller one takes the
+// smaller one's time. Exact up to exp/log rounding: 1e-12 relative.
+TEST(Tune, MciCurveInterpolatesLogLog)
+{
+    const std::vector<tune::CurvePoint> c = {{1, 1}, {2, 0.5}, {4, 0.25}};
+    EXPECT_NEAR(tune::mciMetricAt(c, 2), 0.5, 1e-12);
+    EXPECT_NEAR(tune::mciMetricAt(c, std::sqrt(2.0)), std::sqrt(0.5), 1e-12);  // log-log midpoint
+    EXPECT_NEAR(tune::mciMetricAt(c, 8), 0.125, 1e-12);  // beyond the slowest: ~1/t
+    EXPECT_NEAR(tune::mciMetricAt(c, 0.5), 2, 1e-12);  // below the fastest: ~1/t
+    // N = 2 timed faster than N = 1: both at 1 ms, the lower metric kept.
+    const std::vector<tune::CurvePoint> noisy = {{1, 1}, {0.8, 0.5}, {4, 0.25}};
+    EXPECT_NEAR(tune::mciMetricAt(noisy, 1), 0.5, 1e-12);
+    EXPECT_NEAR(tune::mciMetricAt(noisy, 2), 0.5 * std::sqrt(0.5), 1e-12);
+    // The score: 0 on the curve, log 2 at twice the time with the same metric.
+    EXPECT_NEAR(tune::equalTimeScore(0.5, 2, c), 0, 1e-12);
+    EXPECT_NEAR(tune::equalTimeScore(0.5, 4, c), std::log(2.0), 1e-12);
+}
+
+// The equal-time objective on a tiny experiment: finite, and it charges a
+// slower spec at equal error. The cubature's general kernel
+// (specialize=none) renders the same image as its straight-line fan on an
+// unclipped light (lambert, h = 1.1, R = pi), so its NMSE is the same, but
+// it takes 30-70x as long at 128^2 on PoCL (measured 0.27 ms against
+// 7.7-19.5 ms): its score log(NMSE / NMSE_MCI(t)) must be higher by about
+// log of that ratio. Asked: more than log 2, which holds unless the timing
+// noise of a shared machine reaches 15x.
+TEST(Tune, EqualTimeObjectiveChargesTheSlowerSpec)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    std::map<std::string, nlohmann::json> docs;
+    for (const char* method : {"cubature", "cubature:specialize=none"}) {
+        nlohmann::json e = {
+            {"method", method},
+            {"params", {"horizon_eps"}},
+            {"reference", "reference:tol=1e-4"},
+            {"luminaire_dir", test::sourceDir() + "/luminaires"},
+            {"res", 24},
+            {"train", {{"luminaires", {"lambert.ldt"}}, {"heights", {1.1}}, {"rotations", {"pi"}}}},
+            {"validation", {{"luminaires", {"batwing.ldt"}}, {"heights", {1.1}}, {"rotations", {"pi"}}}},
+            {"objective", "equal_time"},
+            {"equal_time", {{"time_res", 128}, {"reps", 5}, {"mci_n", {1, 4, 16, 64}}}},
+            {"maxeval", 1}};  // the defaults only
+        test::CliResult r;
+        docs[method] = runTuneCli(e, &r);
+        ASSERT_EQ(r.code, 0) << r.err;
+    }
+    const auto& fast = docs["cubature"]["default"];
+    const auto& slow = docs["cubature:specialize=none"]["default"];
+    for (const auto* d : {&fast, &slow}) {
+        ASSERT_TRUE((*d)["train_objective"].is_number()) << d->dump();
+        EXPECT_TRUE(std::isfinite((*d)["train_objective"].get<double>()));
+        EXPECT_TRUE(std::isfinite((*d)["validation_equal_time"].get<double>()));
+        EXPECT_EQ((*d)["train_equal_time"], (*d)["train_objective"]);
+    }
+    // The MCI curves were measured, four points per scene.
+    EXPECT_EQ(docs["cubature"]["equal_time"]["mci_curves"].size(), 2u);
+    // Equal NMSE: the two kernels differ by float rounding only (1e-3 relative is generous).
+    const double nf = fast["train_nmse"], ns = slow["train_nmse"];
+    EXPECT_NEAR(ns, nf, 1e-3 * nf);
+    const double tf = fast["train_ms_per_scene"][0], ts = slow["train_ms_per_scene"][0];
+    const double of = fast["train_objective"], os = slow["train_objective"];
+    std::printf("equal-time objective: fan %.4g ms score %.4g, general %.4g ms score %.4g (nmse %.4g, %.4g)\n", tf, of,
+                ts, os, nf, ns);
+    EXPECT_GT(os, of + std::log(2.0));
 }
 
 // The CI criterion of the tuner: tuning improves the validation NMSE over the
