@@ -16,9 +16,13 @@
  *   LB_LTC_EXACT_G   G_Omega exact: the clipped polygon's Lambert irradiance at
  *                    unit radiance (spherical.h) divides the diffuse estimate
  *   LB_LUT           trig-free intensity table (common/lut.h), `lum` is the LUT
+ *   LB_LTC_RECT      the straight-line form (radiance=point; common/ltc_lanes.inc),
+ *                    one pixel per work-item or, with LB_LANES=8 (float, LUT),
+ *                    eight in float8; tests/specular/test_ltc_lanes.cpp holds it
+ *                    to the general kernel
  * Continuous tunables (arguments): plane_eps, horizon_eps (cubature, as in
  * kernels/cubature.cl).
- * @variants: "" | "-DLB_LUT" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_LTC_EXACT_G" | "-DLB_CUB_TRI=1" | "-DLB_LTC_EXACT_G" | "-DLB_LTC_RADIANCE=1" | "-DLB_LTC_RADIANCE=2" | "-DLB_LTC_RADIANCE=3" | "-DLB_LTC_RADIANCE=1 -DLB_LTC_EXACT_G"
+ * @variants: "" | "-DLB_LUT" | "-DLB_LUT -DLB_LTC_RADIANCE=3 -DLB_LTC_RECT" | "-DLB_LUT -DLB_LTC_RADIANCE=3 -DLB_LTC_RECT -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_LTC_EXACT_G" | "-DLB_CUB_TRI=1" | "-DLB_LTC_EXACT_G" | "-DLB_LTC_RADIANCE=1" | "-DLB_LTC_RADIANCE=2" | "-DLB_LTC_RADIANCE=3" | "-DLB_LTC_RADIANCE=1 -DLB_LTC_EXACT_G"
  */
 #include "common/lbmath.h"
 
@@ -29,6 +33,33 @@
 #define LB_CUB_TRI LB_CUB_FAN
 #endif
 
+#if defined(LB_LTC_RECT) && defined(LB_LANES) && LB_LANES == 8 && !defined(LB_DOUBLE)
+#include "common/lanes8.h"
+#include "common/lanes_all.inc"
+#include "common/lanes_end.h"
+
+__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
+                     __global const float* ltc, real plane_eps, real horizon_eps)
+{
+    int col0, row, res;
+    float8 ou, ov, on;
+    real au, av, an;
+    if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
+        return;
+    float8 col = (float8)(0, 1, 2, 3, 4, 5, 6, 7) + (float)col0;
+    lb_store_x8(out, row * res + col0, res - col0, lb_ltc_rect_point_x8(P, lum, ltc, col, row, ou, ov, on, au, av, an));
+}
+#elif defined(LB_LTC_RECT)
+__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
+                     __global const float* ltc, real plane_eps, real horizon_eps)
+{
+    int col, row, res;
+    real ou, ov, on, au, av, an;
+    if (!lb_work_item_pixels(P, row0, &col, &row, &res, &ou, &ov, &on, &au, &av, &an))
+        return;
+    out[row * res + col] = lb_ltc_rect_point(P, lum, ltc, (real)col, row, ou, ov, on, au, av, an);
+}
+#else
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
                      __global const float* ltc, real plane_eps, real horizon_eps)
 {
@@ -107,3 +138,4 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     }
     out[row * res + col] = ls;
 }
+#endif

@@ -92,11 +92,13 @@ Family specularLtc()
                     "cubature: receivers closer than this (m) to the light's plane are moved to it (paper 5.3)"),
         Param::real("horizon_eps", 0.0, 0.0, 0.5, Scale::Linear,
                     "cubature: clip the light at n_x . (p - x) >= this (m) (thesis 5.2.4)"),
-        lookupParam("lut",
-                    "intensity lookup: trig-free table (photometry/lut.h, as cubature's default) or the exact "
-                    "bilinear one"),
     };
-    f.lumBuffer = lookupBuffer;
+    // The straight-line form (kernels/common/ltc_lanes.inc): radiance=point with
+    // its own G (the light rectangle needs no clip for it); the lookup, specialize
+    // and lanes parameters as the diffuse families'.
+    addStraightLineOptions(f, "-DLB_LTC_RECT", [](const Scene&, const MethodSpec& s) {
+        return s.str("radiance") == "point" && s.str("g_omega") == "estimate";
+    });
     f.defines = [](const MethodSpec& s) {
         std::string d;
         const std::string& rad = s.str("radiance");
@@ -105,7 +107,6 @@ Family specularLtc()
         if (rad == "point") d += " -DLB_LTC_RADIANCE=3";
         if (rad == "cubature" && s.str("triangulation") == "delaunay") d += " -DLB_CUB_TRI=1";
         if (s.str("g_omega") == "exact") d += " -DLB_LTC_EXACT_G";
-        if (s.str("lookup") == "lut") d += " -DLB_LUT";
         return d.empty() ? d : d.substr(1);
     };
     f.args = {"ltc", "plane_eps", "horizon_eps"};
