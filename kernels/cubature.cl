@@ -1,5 +1,5 @@
 /* cubature.cl -- scattered-sampling cubature (paper Sec. 5, thesis 5.2): the
- * general kernel runs lb_cubature_irradiance_ex of common/cubature.h, one
+ * general kernel runs lb_cubature_irradiance of common/cubature.h, one
  * work-item per pixel; the straight-line forms (below) are those of
  * common/cubature_lanes.inc, one or eight pixels per work-item.
  *
@@ -29,8 +29,9 @@
  *   LB_LUT            trig-free intensity table (common/lut.h), `lum` is the LUT
  *   LB_CUB_AREA=n     blend in the area form by the n x n Gauss-Legendre rule (n = 2, 3;
  *                     common/cubature_lanes.inc lb_area_gauss_rect), in every form
- * Continuous tunables (kernel arguments): plane_eps, horizon_eps (metres),
- * corner_inset, dyn_weight (common/cubature.h lb_cubature_irradiance_ex; 0, 1 = plain),
+ * Continuous tunables (kernel arguments, common/cubature.h LB_CUB_TUNABLES, one
+ * lb_cub_tunables per work-item): plane_eps, horizon_eps (metres),
+ * corner_inset, dyn_weight (common/cubature.h lb_cubature_irradiance; 0, 1 = plain),
  * blend_dist (m): beyond it the result blends into a 3 x 3 grid MC (lb_blend_weight;
  * fully MC, without the cubature, from 1.5 blend_dist on); area_q, area_sin: with
  * LB_CUB_AREA = n (2 or 3) the n x n Gauss rule of the area form is blended in
@@ -57,28 +58,42 @@
  * (common/scene.h); lum packed luminaire (common/photometry.h); out N x N
  * irradiance in lux, row-major, row 0 at the top; rows row0 .. row0 + global
  * height. stats: 2 ints per pixel of the whole image (triangles, flips),
- * written when want_stats != 0 (pass any small buffer otherwise). */
+ * written when want_stats != 0 (pass any small buffer otherwise); then the
+ * continuous tunables, one real each (LB_CUB_TUNABLES). Each form of the
+ * kernel below opens with this signature and CUB_PROLOGUE. */
+#define CUB_TUNABLE_ARG(name) , real name
+#define CUB_TUNABLE_SET(name) tun.name = name;
+#define CUB_KERNEL                                                                                             \
+    __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,     \
+                         __global int* stats, int want_stats LB_CUB_TUNABLES(CUB_TUNABLE_ARG))
+/* opt: the structural variant (the -D flags above); tun: the arguments */
+#define CUB_PROLOGUE                                                                                           \
+    lb_cub_options opt;                                                                                        \
+    opt.triangulation = LB_CUB_TRI;                                                                            \
+    opt.weighting = LB_CUB_WEIGHT;                                                                             \
+    opt.formfactor = LB_CUB_NORMALIZE;                                                                         \
+    opt.dynamic = LB_CUB_DYNAMIC;                                                                              \
+    lb_cub_tunables tun;                                                                                       \
+    LB_CUB_TUNABLES(CUB_TUNABLE_SET)
+
 /* The straight-line forms: fan around CP, or Delaunay over corners + CP +
  * barycentre; (e, triangles, flips) of one pixel or eight. */
 /* On the rectangle [ou, ou + W] x [v0c, v0c + lc] at height hc: the light, or
  * with LB_CUB_RECT_CLIP what the horizon leaves of it (lb_cub_rect_clip). */
 #if defined(LB_CUB_RECT_DELALL)
 #define LB_CUB_RECT_CALL(s, nt, nf)                                                                             \
-    lb_cub_rect_delall##s(lum, ou, v0c, hc, P[LB_P_W], lc, R(1) / (P[LB_P_W] * P[LB_P_L]), au, av, an,              \
-                          LB_CUB_WEIGHT, LB_CUB_NORMALIZE, corner_inset, dyn_weight, want_stats, &nt, &nf)
+    lb_cub_rect_delall##s(lum, ou, v0c, hc, P[LB_P_W], lc, R(1) / (P[LB_P_W] * P[LB_P_L]), au, av, an, opt, tun, \
+                          want_stats, &nt, &nf)
 #elif defined(LB_CUB_RECT_DEL)
 #define LB_CUB_RECT_CALL(s, nt, nf)                                                                             \
-    lb_cub_rect_del##s(lum, ou, v0c, hc, P[LB_P_W], lc, R(1) / (P[LB_P_W] * P[LB_P_L]), au, av, an, LB_CUB_WEIGHT,          \
-                       LB_CUB_NORMALIZE, corner_inset, dyn_weight, &nt, &nf)
+    lb_cub_rect_del##s(lum, ou, v0c, hc, P[LB_P_W], lc, R(1) / (P[LB_P_W] * P[LB_P_L]), au, av, an, opt, tun, &nt, &nf)
 #elif defined(LB_CUB_RECT_FAN)
 #define LB_CUB_RECT_CALL(s, nt, nf)                                                                             \
-    lb_cub_rect_fan##s(lum, ou, v0c, hc, P[LB_P_W], lc, R(1) / (P[LB_P_W] * P[LB_P_L]), au, av, an, LB_CUB_WEIGHT,          \
-                       (LB_CUB_DYNAMIC & LB_CUB_CP) != 0, LB_CUB_NORMALIZE, corner_inset, dyn_weight,            \
-                       &nt);                                                                                     \
+    lb_cub_rect_fan##s(lum, ou, v0c, hc, P[LB_P_W], lc, R(1) / (P[LB_P_W] * P[LB_P_L]), au, av, an, opt, tun, &nt); \
     nf = 0
 #endif
 #ifdef LB_CUB_RECT_CLIP
-#define LB_CUB_RECT_CLIP_CALL(s) lb_cub_rect_clip##s(ov, hc, P[LB_P_L], av, an, horizon_eps, &v0c, &lc)
+#define LB_CUB_RECT_CLIP_CALL(s) lb_cub_rect_clip##s(ov, hc, P[LB_P_L], av, an, tun.horizon_eps, &v0c, &lc)
 #else
 #define LB_CUB_RECT_CLIP_CALL(s) (void)0
 #endif
@@ -91,23 +106,22 @@
 #include "common/lanes_all.inc"
 #include "common/lanes_end.h"
 
-__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
-                     __global int* stats, int want_stats, real plane_eps, real horizon_eps,
-                     real corner_inset, real dyn_weight, real blend_dist, real area_q, real area_sin)
+CUB_KERNEL
 {
+    CUB_PROLOGUE
     int col0, row, res;
     float8 ou, ov, on;
     real au, av, an;
     if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
         return;
     int8 nt, nf;
-    float8 hc = lb_cub_rect_shift_x8(on, lb_plane_distance_x8(P, (float8)(0, 1, 2, 3, 4, 5, 6, 7) + (float)col0, row), plane_eps);
+    float8 hc = lb_cub_rect_shift_x8(on, lb_plane_distance_x8(P, (float8)(0, 1, 2, 3, 4, 5, 6, 7) + (float)col0, row), tun.plane_eps);
     float8 v0c = ov, lc = (float8)(P[LB_P_L]);
     LB_CUB_RECT_CLIP_CALL(_x8);
 #ifdef LB_CUB_AREA
     /* the area form's weight; where every lane takes the area form alone the
      * cubature is not evaluated (a far-field row costs only the area rule) */
-    float8 ta = lb_area_weight_x8(ou, v0c, on, P[LB_P_W], lc, area_q, area_sin);
+    float8 ta = lb_area_weight_x8(ou, v0c, on, P[LB_P_W], lc, tun.area_q, tun.area_sin);
     float8 e = (float8)(0.0f);
     nt = (int8)(0);
     nf = (int8)(0);
@@ -121,7 +135,7 @@ __kernel void render(__global const real* P, __global const float* lum, __global
 #endif
 #ifdef LB_CUB_BLEND
     float8 t;
-    e = lb_cub_rect_blend_x8(lum, e, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an, blend_dist, &t);
+    e = lb_cub_rect_blend_x8(lum, e, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an, tun.blend_dist, &t);
     nt = t >= 1.0f ? 0 : nt; /* no cubature where the grid MC alone counts */
     nf = t >= 1.0f ? 0 : nf;
 #endif
@@ -144,20 +158,19 @@ __kernel void render(__global const real* P, __global const float* lum, __global
  * work-item (GPUs, double, the exact lookup). Without LB_CUB_RECT_CLIP
  * horizon_eps is unused: the host chose that variant because it clips
  * nothing. */
-__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
-                     __global int* stats, int want_stats, real plane_eps, real horizon_eps,
-                     real corner_inset, real dyn_weight, real blend_dist, real area_q, real area_sin)
+CUB_KERNEL
 {
+    CUB_PROLOGUE
     int col, row, res;
     real ou, ov, on, au, av, an;
     if (!lb_work_item_pixels(P, row0, &col, &row, &res, &ou, &ov, &on, &au, &av, &an))
         return;
     int nt, nf;
-    real hc = lb_cub_rect_shift(on, lb_plane_distance(P, (real)col, row), plane_eps);
+    real hc = lb_cub_rect_shift(on, lb_plane_distance(P, (real)col, row), tun.plane_eps);
     real v0c = ov, lc = P[LB_P_L];
     LB_CUB_RECT_CLIP_CALL();
 #ifdef LB_CUB_AREA
-    real ta = lb_area_weight(ou, v0c, on, P[LB_P_W], lc, area_q, area_sin);
+    real ta = lb_area_weight(ou, v0c, on, P[LB_P_W], lc, tun.area_q, tun.area_sin);
     real e = R(0);
     nt = nf = 0;
     if (ta < R(1))
@@ -168,7 +181,7 @@ __kernel void render(__global const real* P, __global const float* lum, __global
 #endif
 #ifdef LB_CUB_BLEND
     real t;
-    e = lb_cub_rect_blend(lum, e, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an, blend_dist, &t);
+    e = lb_cub_rect_blend(lum, e, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an, tun.blend_dist, &t);
     nt = t >= R(1) ? 0 : nt;
     nf = t >= R(1) ? 0 : nf;
 #endif
@@ -180,10 +193,9 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     }
 }
 #else
-__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
-                     __global int* stats, int want_stats, real plane_eps, real horizon_eps,
-                     real corner_inset, real dyn_weight, real blend_dist, real area_q, real area_sin)
+CUB_KERNEL
 {
+    CUB_PROLOGUE
     int col = get_global_id(0);
     int row = row0 + (int)get_global_id(1);
     int n = (int)P[LB_P_RES];
@@ -193,11 +205,10 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     real3 x = lb_pixel_position(P, row, col);
     real3 nx = lb_p3(P, LB_P_NX);
     int nt = 0, nf = 0;
-    real t = lb_blend_weight(length(x - L.c), blend_dist);
+    real t = lb_blend_weight(length(x - L.c), tun.blend_dist);
     real e = R(0);
     if (t < R(1))
-        e = lb_cubature_irradiance_ex(lum, L, x, nx, LB_CUB_TRI, LB_CUB_WEIGHT, LB_CUB_NORMALIZE, LB_CUB_DYNAMIC,
-                                      plane_eps, horizon_eps, corner_inset, dyn_weight, &nt, &nf);
+        e = lb_cubature_irradiance(lum, L, x, nx, opt, tun, &nt, &nf);
     if (t > R(0))
         e = (R(1) - t) * e + t * lb_grid_mc_irradiance(lum, L, x, nx, 3);
 #ifdef LB_CUB_AREA
@@ -210,10 +221,10 @@ __kernel void render(__global const real* P, __global const float* lum, __global
         lb_receiver_normal_local(P, &au, &av, &an);
         real v0c = ov, lc = P[LB_P_L];
         if (au == R(0)) {
-            real hc = lb_cub_rect_shift(on, lb_plane_distance(P, (real)col, row), plane_eps);
-            lb_cub_rect_clip(ov, hc, P[LB_P_L], av, an, horizon_eps, &v0c, &lc);
+            real hc = lb_cub_rect_shift(on, lb_plane_distance(P, (real)col, row), tun.plane_eps);
+            lb_cub_rect_clip(ov, hc, P[LB_P_L], av, an, tun.horizon_eps, &v0c, &lc);
         }
-        real ta = lb_area_weight(ou, v0c, on, P[LB_P_W], lc, area_q, area_sin);
+        real ta = lb_area_weight(ou, v0c, on, P[LB_P_W], lc, tun.area_q, tun.area_sin);
         e = lb_area_blend(lum, e, ta, ou, v0c, on, P[LB_P_W], lc, au, av, an, R(1) / (P[LB_P_W] * P[LB_P_L]));
         nt = ta >= R(1) ? 0 : nt;
         nf = ta >= R(1) ? 0 : nf;

@@ -80,7 +80,8 @@ LB_FN real ind_direct(__global const float* lum, lb_light L, real3 p, real3 n, r
     return lb_intensity_local(lum, lb_to_light_frame(L, -w)) * cw / (r2 * sqrt(r2));
 #elif LB_RSM_DIRECT == 1
     int nt, nf;
-    return lb_cubature_irradiance(lum, L, p, n, LB_CUB_FAN, LB_CUB_AVERAGE, 0, LB_CUB_CP, plane_eps, R(0), &nt, &nf);
+    return lb_cubature_irradiance(lum, L, p, n, lb_cub_paper_options(), lb_cub_plain_tunables(plane_eps, R(0)), &nt,
+                                  &nf);
 #else
     real err;
     int splits;

@@ -82,9 +82,10 @@ __kernel void render(__global const real* P, __global const float* lum, __global
         lb_cub T;
         real w[LB_CUB_MAXS];
         real elam;
-        lb_cubature_setup(&T, L, x, nx, LB_CUB_TRI, LB_CUB_AVERAGE,
-                          LB_CUB_TRI == LB_CUB_DELAUNAY ? (LB_CUB_CP | LB_CUB_BARY) : LB_CUB_CP, plane_eps,
-                          horizon_eps, w, &elam);
+        lb_cub_options opt = lb_cub_paper_options();
+        opt.triangulation = LB_CUB_TRI;
+        opt.dynamic = LB_CUB_TRI == LB_CUB_DELAUNAY ? (LB_CUB_CP | LB_CUB_BARY) : LB_CUB_CP;
+        lb_cubature_setup(&T, L, x, nx, opt, lb_cub_plain_tunables(plane_eps, horizon_eps), w, &elam);
         for (int i = 0; i < T.ns; ++i) {
             if (w[i] != R(0))
                 e += w[i] * lb_radiance_from(lum, L, T.p[i]);

@@ -64,6 +64,61 @@
 #define LB_CUB_AVERAGE 1
 #define LB_CUB_DOTOUT 2
 
+/* The cubature's structural choices, one value for all of them (a kernel
+ * fills it from its -D flags, the same for every work-item; the host's unit
+ * tests from their loops). */
+typedef struct {
+    int triangulation; /* LB_CUB_FAN | LB_CUB_DELAUNAY */
+    int weighting;     /* LB_CUB_SAMPLE | LB_CUB_AVERAGE | LB_CUB_DOTOUT */
+    int formfactor;    /* normalize: 0 none, 1 formfactor (thesis Eq. 5.11; step 6 above) */
+    int dynamic;       /* bit set of LB_CUB_CP, _NP, _MRP, _BARY; 0 = the corners only */
+} lb_cub_options;
+
+/* The paper's method: a fan around CP, average weights (Eq. 10), no
+ * normalization. */
+LB_FN lb_cub_options lb_cub_paper_options(void)
+{
+    lb_cub_options o;
+    o.triangulation = LB_CUB_FAN;
+    o.weighting = LB_CUB_AVERAGE;
+    o.formfactor = 0;
+    o.dynamic = LB_CUB_CP;
+    return o;
+}
+
+/* The cubature's continuous tunables, declared once: the fields of
+ * lb_cub_tunables, the real-valued arguments of kernels/cubature.cl's kernel
+ * (in this order, after want_stats) and the values the host binds to them
+ * (host/methods/family_cubature.cpp; each is a parameter of the method).
+ *   plane_eps    (m) receivers nearer the light's plane move to this distance (step 1)
+ *   horizon_eps  (m) the tilted horizon (step 2)
+ *   corner_inset the corner samples' lookup moved towards the corner mean
+ *                (lb_cubature_irradiance; 0 = plain)
+ *   dyn_weight   scale of the dynamic samples' weights (1 = plain)
+ *   blend_dist   (m) the far-field blend into the 3 x 3 grid MC (lb_blend_weight)
+ *   area_q, area_sin  the area form's blend (cubature_lanes.inc lb_area_weight) */
+#define LB_CUB_TUNABLES(X) X(plane_eps) X(horizon_eps) X(corner_inset) X(dyn_weight) X(blend_dist) X(area_q) X(area_sin)
+#define LB_CUB_TUNABLE_FIELD(name) real name;
+typedef struct {
+    LB_CUB_TUNABLES(LB_CUB_TUNABLE_FIELD)
+} lb_cub_tunables;
+#undef LB_CUB_TUNABLE_FIELD
+
+/* The plain method at these two tolerances: no inset, the dynamic samples at
+ * their triangulation weight, no far-field or area blend. */
+LB_FN lb_cub_tunables lb_cub_plain_tunables(real plane_eps, real horizon_eps)
+{
+    lb_cub_tunables t;
+    t.plane_eps = plane_eps;
+    t.horizon_eps = horizon_eps;
+    t.corner_inset = R(0);
+    t.dyn_weight = R(1);
+    t.blend_dist = R(1e30); /* beyond every scene */
+    t.area_q = R(1e30);     /* the area rule nowhere by distance */
+    t.area_sin = R(0);      /* nor by elevation */
+    return t;
+}
+
 /* Merge tolerance, relative to the clipped light's size: samples closer than
  * tol * size are one sample, a sample closer than that to an edge lies on the
  * edge. Float positions relative to x carry ~1e-7 relative error, so 1e-5
@@ -439,14 +494,17 @@ LB_FN real lb_cub_weights(const lb_cub* T, real3 u, real3 v, real3 nL, real3 nx,
  * and lb_mrp (dynamic.h) -- are the ones the cp/np/mrp baselines use. */
 
 /* The whole geometric step for the shading point x (world) with normal nx:
- * plane shift, (tilted) horizon clip, dynamic points, triangulation, weights.
+ * plane shift, (tilted) horizon clip, dynamic points, triangulation, weights
+ * (of opt: triangulation, weighting, dynamic; of tun: plane_eps, horizon_eps).
  * On return T holds the samples (positions relative to the shifted x) and
  * triangles, w[0..T->ns) the weights, *elam the exact Lambert irradiance of
  * the clipped light at unit radiance. Returns the sum of the triangles' solid
  * angles (0 when nothing of the light is above the horizon). */
-LB_FN real lb_cubature_setup(lb_cub* T, lb_light L, real3 x, real3 nx, int triangulation, int weighting,
-                             int dynamic, real plane_eps, real horizon_eps, real* w, real* elam)
+LB_FN real lb_cubature_setup(lb_cub* T, lb_light L, real3 x, real3 nx, lb_cub_options opt, lb_cub_tunables tun,
+                             real* w, real* elam)
 {
+    real plane_eps = tun.plane_eps;
+    int dynamic = opt.dynamic;
     real s = dot(L.n, x - L.c);
     if (fabs(s) < plane_eps)
         x += L.n * ((s >= R(0) ? plane_eps : -plane_eps) - s);
@@ -454,7 +512,7 @@ LB_FN real lb_cubature_setup(lb_cub* T, lb_light L, real3 x, real3 nx, int trian
     lb_light_corners(L, poly);
     for (int i = 0; i < 4; ++i)
         poly[i] -= x;
-    int n = lb_clip_polygon(poly, 4, nx, horizon_eps);
+    int n = lb_clip_polygon(poly, 4, nx, tun.horizon_eps);
     *elam = n >= 3 ? lb_polygon_irradiance_lambert(poly, n, nx) : R(0);
     if (lb_cub_init(T, poly, n, L.u, L.v) < 3) {
         T->nt = 0;
@@ -485,15 +543,15 @@ LB_FN real lb_cubature_setup(lb_cub* T, lb_light L, real3 x, real3 nx, int trian
     }
     for (int i = 1; i < nd; ++i)
         lb_cub_insert(T, dyn[i], L.u, L.v);
-    if (triangulation == LB_CUB_DELAUNAY)
+    if (opt.triangulation == LB_CUB_DELAUNAY)
         lb_cub_delaunay(T);
-    return lb_cub_weights(T, L.u, L.v, L.n, nx, weighting, w);
+    return lb_cub_weights(T, L.u, L.v, L.n, nx, opt.weighting, w);
 }
 
 /* Cubature irradiance (lux) at x: lb_cubature_setup, then the photometric
- * lookups. normalize: 0 none, 1 formfactor (thesis Eq. 5.11). *ntri and
- * *nflips receive the statistics. Two placement tunables (searched
- * by `lumibench tune`; 0 and 1 are the plain method, bit for bit):
+ * lookups; opt.formfactor: the normalization of step 6. *ntri and *nflips
+ * receive the statistics. Two placement tunables (searched by `lumibench
+ * tune`; lb_cub_plain_tunables' 0 and 1 are the plain method, bit for bit):
  *   corner_inset  the hull samples (the clipped light's corners) look the
  *                 radiance up at p + corner_inset (c - p), c the mean of
  *                 the clipped light's corners; the triangles and with them the
@@ -502,17 +560,19 @@ LB_FN real lb_cubature_setup(lb_cub* T, lb_light L, real3 x, real3 nx, int trian
  *   dyn_weight    the weights of the dynamic samples are scaled by it and
  *                 all weights rescaled to the same sum, so the estimate
  *                 stays a weighted mean of the radiance times the same
- *                 total cosine-weighted solid angle. */
-LB_FN real lb_cubature_irradiance_ex(__global const float* lum, lb_light L, real3 x, real3 nx, int triangulation,
-                                     int weighting, int normalize_ff, int dynamic, real plane_eps, real horizon_eps,
-                                     real corner_inset, real dyn_weight, int* ntri, int* nflips)
+ *                 total cosine-weighted solid angle.
+ * blend_dist, area_q and area_sin are the kernel's (lb_blend_weight,
+ * lb_area_weight), not read here. */
+LB_FN real lb_cubature_irradiance(__global const float* lum, lb_light L, real3 x, real3 nx, lb_cub_options opt,
+                                  lb_cub_tunables tun, int* ntri, int* nflips)
 {
     lb_cub T;
     real w[LB_CUB_MAXS];
     real elam;
-    lb_cubature_setup(&T, L, x, nx, triangulation, weighting, dynamic, plane_eps, horizon_eps, w, &elam);
+    lb_cubature_setup(&T, L, x, nx, opt, tun, w, &elam);
     *ntri = T.nt;
     *nflips = T.flips;
+    real dyn_weight = tun.dyn_weight, corner_inset = tun.corner_inset;
     if (dyn_weight != R(1) && T.ns > T.nh) {
         real before = R(0), after = R(0);
         for (int i = 0; i < T.ns; ++i) {
@@ -540,18 +600,9 @@ LB_FN real lb_cubature_irradiance_ex(__global const float* lum, lb_light L, real
             e += w[i] * lb_radiance_from(lum, L, p);
         ws += w[i];
     }
-    if (normalize_ff)
+    if (opt.formfactor)
         return ws > R(0) ? elam * e / ws : R(0);
     return e;
-}
-
-/* The plain method: no inset, dynamic samples at their triangulation weight. */
-LB_FN real lb_cubature_irradiance(__global const float* lum, lb_light L, real3 x, real3 nx, int triangulation,
-                                  int weighting, int normalize_ff, int dynamic, real plane_eps, real horizon_eps,
-                                  int* ntri, int* nflips)
-{
-    return lb_cubature_irradiance_ex(lum, L, x, nx, triangulation, weighting, normalize_ff, dynamic, plane_eps,
-                                     horizon_eps, R(0), R(1), ntri, nflips);
 }
 
 /* Far-field blend (thesis 6.6 proposes blending the cubature into MCI with

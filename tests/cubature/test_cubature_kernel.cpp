@@ -13,6 +13,17 @@ namespace {
 struct KernelCase {
     const char* opts;
     int tri, wt, ff, dyn;
+    // The same variant as the host's lb_cub_options (lb::f32 or lb::f64).
+    template <class Options>
+    Options options() const
+    {
+        Options o;
+        o.triangulation = tri;
+        o.weighting = wt;
+        o.formfactor = ff;
+        o.dynamic = dyn;
+        return o;
+    }
 };
 
 // Renders a 32 x 32 image of the scene h = 1, R = 3pi/4 with each variant on
@@ -28,8 +39,9 @@ struct HostF32 {
     static float eval(const float* lum, const lb::f32::lb_light& L, const float* P, int r, int c, const KernelCase& kc,
                       int* nt, int* nf)
     {
-        return lb::f32::lb_cubature_irradiance(lum, L, lb::f32::lb_pixel_position(P, r, c), glm::vec3(0, 0, 1), kc.tri,
-                                               kc.wt, kc.ff, kc.dyn, 1e-3f, 0.0f, nt, nf);
+        return lb::f32::lb_cubature_irradiance(lum, L, lb::f32::lb_pixel_position(P, r, c), glm::vec3(0, 0, 1),
+                                               kc.options<lb::f32::lb_cub_options>(),
+                                               lb::f32::lb_cub_plain_tunables(1e-3f, 0.0f), nt, nf);
     }
 };
 struct HostF64 {
@@ -37,8 +49,9 @@ struct HostF64 {
     static double eval(const float* lum, const lb::f64::lb_light& L, const double* P, int r, int c,
                        const KernelCase& kc, int* nt, int* nf)
     {
-        return lb::f64::lb_cubature_irradiance(lum, L, lb::f64::lb_pixel_position(P, r, c), glm::dvec3(0, 0, 1), kc.tri,
-                                               kc.wt, kc.ff, kc.dyn, 1e-3, 0.0, nt, nf);
+        return lb::f64::lb_cubature_irradiance(lum, L, lb::f64::lb_pixel_position(P, r, c), glm::dvec3(0, 0, 1),
+                                               kc.options<lb::f64::lb_cub_options>(),
+                                               lb::f64::lb_cub_plain_tunables(1e-3, 0.0), nt, nf);
     }
 };
 
