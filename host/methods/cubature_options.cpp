@@ -130,24 +130,26 @@ CubatureOptions CubatureOptions::parse(const std::map<std::string, std::string>&
     for (const auto& p : cubatureParams()) v[p.name] = p.def;
     for (const auto& [k, value] : kv) v[k] = param(k).canonical("cubature", value);
     auto index = [&](const char* k) { return choiceIndex(param(k), v.at(k)); };
-    auto real = [&](const char* k) { return std::stod(v.at(k)); };
     CubatureOptions o(NoDefaults{});
     o.triangulation = index("triangulation");
     o.weighting = index("weighting");
     o.formfactor = v.at("normalize") == "formfactor";
     o.dynamic = parseDynamicSet(v.at("dynamic"));
-    o.planeEps = real("plane_eps");
-    o.horizonEps = real("horizon_eps");
-    o.cornerInset = real("corner_inset");
-    o.dynWeight = real("dyn_weight");
-    o.blendDist = real("blend_dist");
+#define LB_READ_TUNABLE(name) o.tunables.name = std::stod(v.at(#name));
+    LB_CUB_TUNABLES(LB_READ_TUNABLE)
+#undef LB_READ_TUNABLE
     o.lut = v.at("lookup") == "lut";
     o.specialize = v.at("specialize") == "auto";
     o.lanes = v.at("lanes");
     o.area = v.at("area") == "none" ? 0 : v.at("area").back() - '0';  // gaussN
-    o.areaQ = real("area_q");
-    o.areaSin = real("area_sin");
     return o;
+}
+
+std::vector<std::string> cubatureTunableNames()
+{
+#define LB_TUNABLE_NAME(name) #name,
+    return {LB_CUB_TUNABLES(LB_TUNABLE_NAME)};
+#undef LB_TUNABLE_NAME
 }
 
 std::string CubatureOptions::defines() const

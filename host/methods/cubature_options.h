@@ -5,6 +5,7 @@
 // defines (kernels/cubature.cl) and its continuous arguments.
 #pragma once
 
+#include "math/kmath.h"
 #include "methods/tunables.h"
 
 #include <map>
@@ -28,6 +29,11 @@ inline constexpr double kDefaultAreaSin = 0.5;
 // blend_dist, lookup, specialize, lanes, area, area_q, area_sin.
 const std::vector<Param>& cubatureParams();
 
+// The names of the kernel's real-valued arguments, in kernel order: the
+// fields of lb_cub_tunables (kernels/common/cubature.h LB_CUB_TUNABLES), each
+// a Real parameter of cubatureParams().
+std::vector<std::string> cubatureTunableNames();
+
 // A cubature SPEC's values as the kernel takes them. Every field is read
 // from the parameter of the same name (cubatureParams: its meaning there).
 struct CubatureOptions {
@@ -35,12 +41,11 @@ struct CubatureOptions {
     int weighting;  // 0 sample (paper Eq. 9), 1 average (Eq. 10), 2 dotout
     bool formfactor;  // normalize=formfactor (thesis Eq. 5.11)
     int dynamic;  // bit set of kernels/common/cubature.h: LB_CUB_CP, _NP, _MRP, _BARY
-    double planeEps, horizonEps, cornerInset, dynWeight, blendDist;
+    lb::f64::lb_cub_tunables tunables;  // the kernel's real arguments, by the parameters' names
     bool lut;  // lookup=lut
     bool specialize;  // specialize=auto
     std::string lanes;  // auto | 1 | 8 (lanesFor, methods/straight.h)
     int area;  // Gauss-Legendre points per side: 0 (none), 2 or 3
-    double areaQ, areaSin;
 
     // The defaults of cubatureParams().
     CubatureOptions();

@@ -83,8 +83,8 @@ Family cubatureFamily()
     f.lumBuffer = [](const MethodSpec& s, const photometry::Table& t) {
         return options(s).lut ? photometry::buildLut(t).packed : t.packed();
     };
-    f.args = {"stats",      "want_stats", "plane_eps", "horizon_eps", "corner_inset",
-              "dyn_weight", "blend_dist", "area_q",    "area_sin"};
+    f.args = {"stats", "want_stats"};
+    for (const auto& name : cubatureTunableNames()) f.args.push_back(name);
     f.statsSwitch = "want_stats";
     f.setArgs = [](LaunchContext& c) {
         CubatureOptions o = options(c.spec);
@@ -93,13 +93,9 @@ Family cubatureFamily()
         c.named["stats"] = stats;
         c.arg("stats", stats);
         c.arg("want_stats", cl_int(0));
-        c.realArg("plane_eps", o.planeEps);
-        c.realArg("horizon_eps", o.horizonEps);
-        c.realArg("corner_inset", o.cornerInset);
-        c.realArg("dyn_weight", o.dynWeight);
-        c.realArg("blend_dist", o.blendDist);
-        c.realArg("area_q", o.areaQ);
-        c.realArg("area_sin", o.areaSin);
+#define LB_BIND_TUNABLE(name) c.realArg(#name, o.tunables.name);
+        LB_CUB_TUNABLES(LB_BIND_TUNABLE)
+#undef LB_BIND_TUNABLE
     };
     f.straightDefines = {"-DLB_CUB_RECT_FAN", "-DLB_CUB_RECT_DEL", "-DLB_CUB_RECT_DELALL"};
     f.benchSpecs = {"cubature:lanes=1", "cubature:specialize=none,lookup=exact",

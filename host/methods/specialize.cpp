@@ -84,13 +84,13 @@ Specialization analyseCubature(const Scene& scene, const photometry::Table& tabl
     s.lut1d = o.lut && photometry::isRotational(table);
     // lb_blend_weight is exactly 0 up to blend_dist; 1e-6 relative covers the
     // kernel's float rounding of the distance.
-    bool noBlend = farthestPixel(scene) * (1 + 1e-6) < o.blendDist;
+    bool noBlend = farthestPixel(scene) * (1 + 1e-6) < o.tunables.blend_dist;
     // Delaunay over corners + CP never flips on an unclipped rectangle (the
     // header's proof): it is the fan around CP.
     bool fanCp =
         (o.triangulation == 0 && (o.dynamic == 1 || o.dynamic == 0)) || (o.triangulation == 1 && o.dynamic == 1);
     bool delCpBary = o.triangulation == 1 && o.dynamic == (1 | 8);  // LB_CUB_CP | LB_CUB_BARY
-    bool unclipped = lightAboveEveryHorizon(scene, o.horizonEps + o.planeEps);
+    bool unclipped = lightAboveEveryHorizon(scene, o.tunables.horizon_eps + o.tunables.plane_eps);
     // Otherwise the straight-line forms run on what the horizon leaves where
     // it cuts along the light's u edges (LB_CUB_RECT_CLIP). dynamic=none fans
     // from the clipped polygon's first vertex, which the clip decides: general.
