@@ -641,6 +641,5 @@ LB_FN real lb_blend_weight(real dist, real blend_dist)
  * cubature_lanes.inc, here one pixel per call (lb_cub_rect_fan); the 8-lane
  * form is included by kernels/cubature.cl. */
 #include "lanes1.h"
-#include "rect_lanes.inc"
 #include "cubature_lanes.inc"
 #include "lanes_end.h"
