@@ -470,6 +470,49 @@ std::vector<Scene> delaunayScenes()
             flat};
 }
 
+// The spec variations both Delaunay forms are held to the general kernel
+// with: Delaunay over the corners and `dynamic`, each weighting, the
+// placement tunables, a larger plane shift, formfactor, the far-field blend
+// and the area form.
+std::vector<std::string> delaunaySpecs(const std::string& dynamic)
+{
+    const std::string d = "cubature:triangulation=delaunay,dynamic=" + dynamic;
+    return {d,
+            d + ",weighting=sample",
+            d + ",weighting=dotout",
+            d + ",corner_inset=0.3,dyn_weight=2",
+            d + ",plane_eps=0.05",
+            d + ",normalize=formfactor",
+            d + ",blend_dist=1.5",
+            d + ",area=gauss2"};
+}
+
+// Worst relative differences of a straight-line Delaunay form against the
+// general kernel over delaunayScenes() x specs: diff(scene, spec, precision,
+// lanes, reference precision, bound) renders both and checks one pair. The
+// bounds: double 1e-12; float `rel` of the reference or twice the general
+// float kernel's own worst error on the scene, formfactor 1e-4.
+struct FormWorst {
+    double f = 0, d = 0, general = 0;
+};
+template <class Diff>
+FormWorst delaunayAgainstGeneral(ocl::Runtime& rt, const photometry::Table& t, const std::vector<std::string>& specs,
+                                 Precision ref, double rel, Diff diff)
+{
+    FormWorst w;
+    for (const auto& s : delaunayScenes())
+        for (const auto& spec : specs) {
+            bool ff = spec.find("formfactor") != std::string::npos;
+            double g = rt.fp64() ? generalFloatError(rt, t, s, spec) : 0;
+            w.general = std::max(w.general, g);
+            for (const char* lanes : {"1", "8"})
+                w.f = std::max(w.f, diff(s, spec, Precision::Float, lanes, ref, std::max(ff ? 1e-4 : rel, 2 * g)));
+            if (rt.fp64()) w.d = std::max(w.d, diff(s, spec, Precision::Double, "1", Precision::Double, 1e-12));
+            if (::testing::Test::HasFailure()) return w;
+        }
+    return w;
+}
+
 // The straight-line Delaunay over corners + CP + barycentre against the
 // general kernel (Lawson flips over the triangulation structure), with the
 // bounds of the rectangle fan above: double 1e-12; float 1e-6 of the double
@@ -483,37 +526,17 @@ TEST(Specialize, CubatureRectDelaunayEqualsGeneral)
 {
     LB_REQUIRE_RUNTIME(rt);
     auto asym = asymmetric();
-    std::vector<Scene> scenes = delaunayScenes();
-    const std::string d = "cubature:triangulation=delaunay,dynamic=cp+barycentre";
-    const std::vector<std::string> specs = {d,
-                                            d + ",weighting=sample",
-                                            d + ",weighting=dotout",
-                                            d + ",corner_inset=0.3,dyn_weight=2",
-                                            d + ",plane_eps=0.05",
-                                            d + ",normalize=formfactor",
-                                            d + ",blend_dist=1.5",
-                                            d + ",blend_dist=0.6,weighting=sample",
-                                            d + ",area=gauss2",
-                                            d + ",area=gauss3,area_q=3"};
+    std::vector<std::string> specs = delaunaySpecs("cp+barycentre");
+    specs.push_back(specs[0] + ",blend_dist=0.6,weighting=sample");
+    specs.push_back(specs[0] + ",area=gauss3,area_q=3");
     Precision ref = rt->fp64() ? Precision::Double : Precision::Float;
-    double rel = rt->fp64() ? 1e-6 : 2e-5;
-    double worst = 0, worstD = 0, worstGeneral = 0;
-    for (const auto& s : scenes)
-        for (const auto& spec : specs) {
-            bool ff = spec.find("formfactor") != std::string::npos;
-            double g = rt->fp64() ? generalFloatError(*rt, asym, s, spec) : 0;
-            worstGeneral = std::max(worstGeneral, g);
-            for (const char* lanes : {"1", "8"})
-                worst = std::max(
-                    worst,
-                    cubatureDiff(*rt, asym, s, spec, Precision::Float, lanes, ref, std::max(ff ? 1e-4 : rel, 2 * g)));
-            if (rt->fp64())
-                worstD = std::max(worstD,
-                                  cubatureDiff(*rt, asym, s, spec, Precision::Double, "1", Precision::Double, 1e-12));
-            if (HasFailure()) return;
-        }
-    std::cout << "Delaunay cp + barycentre, straight-line against the general kernel: float " << worst
-              << " (general float kernel against its double result: " << worstGeneral << "), double " << worstD << "\n";
+    FormWorst w = delaunayAgainstGeneral(
+        *rt, asym, specs, ref, rt->fp64() ? 1e-6 : 2e-5,
+        [&](const Scene& s, const std::string& spec, Precision p, const std::string& lanes, Precision pr,
+            double bound) { return cubatureDiff(*rt, asym, s, spec, p, lanes, pr, bound); });
+    if (HasFailure()) return;
+    std::cout << "Delaunay cp + barycentre, straight-line against the general kernel: float " << w.f
+              << " (general float kernel against its double result: " << w.general << "), double " << w.d << "\n";
 }
 
 // The straight-line Delaunay over corners + CP + NP + MRP + barycentre
@@ -533,15 +556,8 @@ TEST(Specialize, CubatureRectDelaunayAllEqualsGeneral)
     LB_REQUIRE_RUNTIME(rt);
     auto asym = asymmetric();
     std::vector<Scene> scenes = delaunayScenes();
-    const std::string d = "cubature:triangulation=delaunay,dynamic=cp+np+mrp+barycentre";
-    const std::vector<std::string> specs = {d,
-                                            d + ",weighting=sample",
-                                            d + ",weighting=dotout",
-                                            d + ",corner_inset=0.3,dyn_weight=2",
-                                            d + ",plane_eps=0.05",
-                                            d + ",normalize=formfactor",
-                                            d + ",blend_dist=1.5",
-                                            d + ",area=gauss2"};
+    const std::vector<std::string> specs = delaunaySpecs("cp+np+mrp+barycentre");
+    const std::string& d = specs[0];
     for (const auto& s : scenes) {
         auto a = analyseCubature(s, asym, CubatureOptions::parse(parseSpec(d).values));
         EXPECT_TRUE(a.rectDelAll) << s.describe();
@@ -555,8 +571,7 @@ TEST(Specialize, CubatureRectDelaunayAllEqualsGeneral)
     EXPECT_FALSE(delAll(scenes[0], "cubature:triangulation=delaunay,dynamic=cp+np+barycentre"));
     EXPECT_FALSE(delAll(scene(-0.2, 5 * M_PI / 8, 45), d));
     Precision ref = rt->fp64() ? Precision::Double : Precision::Float;
-    double rel = rt->fp64() ? 1e-6 : 2e-5;
-    double worst = 0, worstD = 0, worstGeneral = 0, flipRatio = 1;
+    double flipRatio = 1;
     RenderOptions opt;
     opt.reps = 1;
     // worst relative difference; triangle counts equal, flips close
@@ -577,18 +592,10 @@ TEST(Specialize, CubatureRectDelaunayAllEqualsGeneral)
         if (gf > 0) flipRatio = std::min(flipRatio, std::min(sf / gf, gf / sf));
         return w;
     };
-    for (const auto& s : scenes)
-        for (const auto& spec : specs) {
-            bool ff = spec.find("formfactor") != std::string::npos;
-            double g = rt->fp64() ? generalFloatError(*rt, asym, s, spec) : 0;
-            worstGeneral = std::max(worstGeneral, g);
-            for (const char* lanes : {"1", "8"})
-                worst = std::max(worst, diff(s, spec, Precision::Float, lanes, ref, std::max(ff ? 1e-4 : rel, 2 * g)));
-            if (rt->fp64()) worstD = std::max(worstD, diff(s, spec, Precision::Double, "1", Precision::Double, 1e-12));
-            if (HasFailure()) return;
-        }
-    std::cout << "Delaunay cp + np + mrp + barycentre, straight-line against the general kernel: float " << worst
-              << " (general float kernel against its double result: " << worstGeneral << "), double " << worstD
+    FormWorst w = delaunayAgainstGeneral(*rt, asym, specs, ref, rt->fp64() ? 1e-6 : 2e-5, diff);
+    if (HasFailure()) return;
+    std::cout << "Delaunay cp + np + mrp + barycentre, straight-line against the general kernel: float " << w.f
+              << " (general float kernel against its double result: " << w.general << "), double " << w.d
               << "; flips per pixel within a factor " << flipRatio << " of the general kernel's\n";
 }
 
