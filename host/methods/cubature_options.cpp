@@ -68,6 +68,10 @@ const std::vector<Param>& cubatureParams()
                     "with area: the cubature alone where the light's farthest point is seen at an elevation "
                     "sin(beta) >= area_sin above the light's plane, the area rule alone below area_sin/2 (0: never "
                     "by elevation)"),
+        Param::text("preset", "none",
+                    "a presets file (JSON: luminaire file name -> SPEC of this method, as `lumibench tune` writes "
+                    "with \"presets\": true): each luminaire renders with its entry, the keys given beside preset "
+                    "on top; none = no presets"),
     };
     return params;
 }

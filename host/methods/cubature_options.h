@@ -26,7 +26,9 @@ inline constexpr double kDefaultAreaSin = 0.5;
 
 // The cubature family's parameters, in SPEC order: triangulation, weighting,
 // normalize, dynamic, plane_eps, horizon_eps, corner_inset, dyn_weight,
-// blend_dist, lookup, specialize, lanes, area, area_q, area_sin.
+// blend_dist, lookup, specialize, lanes, area, area_q, area_sin, preset
+// (resolved per luminaire before the options are read: methods/spec.h
+// resolvePreset).
 const std::vector<Param>& cubatureParams();
 
 // The names of the kernel's real-valued arguments, in kernel order: the

@@ -70,6 +70,15 @@ Family cubatureFamily()
                 "method cubature: triangulation=fan takes at most one dynamic point, got dynamic={} (the fan of "
                 "several points jumps by up to 20% between pixels); use triangulation=delaunay",
                 dynamicSetName(o.dynamic)));
+        // A preset file is read and checked where the SPEC is given (exit 2
+        // before any render); the luminaire's entry is picked when it renders.
+        if (const std::string& file = s.str("preset"); file != "none") try {
+                readPresets(file, s.name, s.kind);
+            } catch (const InputError& err) {
+                throw InputError(fmt::format("method {}: bad value '{}' for preset: expected {} naming a presets "
+                                             "file; {}",
+                                             s.name, file, Param::text("preset", "none", "").allowed(), err.what()));
+            }
     };
     f.defines = [](const MethodSpec& s) { return options(s).defines(); };
     f.sceneDefines = [](const MethodSpec& s, const Scene& scene, const photometry::Table& t) {

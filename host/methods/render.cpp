@@ -145,7 +145,7 @@ std::string cacheKey(const photometry::Table& table, const Scene& scene, const M
 
 Prepared::Prepared(ocl::Runtime& rt, const photometry::Table& table, const Scene& scene, const MethodSpec& spec,
                    Precision precision)
-    : fam_(methods::family(spec.name, scene.kind)), spec_(spec), scene_(scene)
+    : fam_(methods::family(spec.name, scene.kind)), spec_(resolvePreset(spec, table.source)), scene_(scene)
 {
     if (spec.kind != scene.kind)
         throw InputError(fmt::format("method {} was given for the {} scene, not the {} scene it renders here",
@@ -339,6 +339,8 @@ RenderResult render(ocl::Runtime& rt, const photometry::Table& table, const Scen
     // which kernel variant ran (structural and scene defines): the records
     // say whether a straight-line form or the general kernel was timed
     result.stats["defines"] = prep.options();
+    // a per-luminaire preset: the spec it resolved to for this luminaire
+    if (spec.has("preset") && spec.str("preset") != "none") result.stats["preset_spec"] = prep.spec().canonical();
     // the form of the timed kernel: an equal-time verdict is fair where it is the fast one
     std::string form = kernelForm(fam, timeDefines.empty() ? prep.options() : timeDefines);
     if (!form.empty()) result.stats["form"] = form;

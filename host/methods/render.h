@@ -26,6 +26,7 @@ public:
 
     const Family& family() const { return fam_; }
     const std::string& options() const { return options_; }  // the program's -D options
+    const MethodSpec& spec() const { return spec_; }  // as rendered: a preset resolved for the luminaire
     int lanes() const { return ctx_->lanes; }
     double buildSeconds() const { return buildSeconds_; }
     const Scene& scene() const { return scene_; }

@@ -2,10 +2,12 @@
 
 #include "methods/registry.h"
 #include "util/error.h"
+#include "util/json_file.h"
 
 #include <fmt/format.h>
 
 #include <cstdlib>
+#include <filesystem>
 
 namespace lb::methods {
 
@@ -47,6 +49,56 @@ MethodSpec parseSpec(const std::string& text, SceneKind kind)
     }
     if (f.validate) f.validate(s);
     return s;
+}
+
+std::map<std::string, std::string> readPresets(const std::string& file, const std::string& family, SceneKind kind)
+{
+    // A presets file holds one SPEC per luminaire: 1 MiB is thousands.
+    const nlohmann::json j = util::readJsonObject(file, "a presets file (JSON: luminaire file name -> SPEC)", 1u << 20);
+    std::map<std::string, std::string> out;
+    for (const auto& [lum, v] : j.items()) {
+        if (!v.is_string())
+            throw InputError(fmt::format("{}: entry '{}': expected a SPEC string, found {}", file, lum, v.dump()));
+        MethodSpec e;
+        try {
+            e = parseSpec(v.get<std::string>(), kind);
+        } catch (const InputError& err) {
+            throw InputError(fmt::format("{}: entry '{}': {}", file, lum, err.what()));
+        }
+        if (e.name != family)
+            throw InputError(
+                fmt::format("{}: entry '{}': a {} SPEC where method {} is preset", file, lum, e.name, family));
+        if (e.given.count("preset"))
+            throw InputError(fmt::format("{}: entry '{}': a preset may not name another preset", file, lum));
+        out[lum] = v.get<std::string>();
+    }
+    return out;
+}
+
+MethodSpec resolvePreset(const MethodSpec& s, const std::string& luminaireSource)
+{
+    auto it = s.values.find("preset");
+    if (it == s.values.end() || it->second == "none") return s;
+    const std::string file = it->second;
+    const auto entries = readPresets(file, s.name, s.kind);
+    const std::string lum = std::filesystem::path(luminaireSource).filename().string();
+    auto e = entries.find(lum);
+    if (e == entries.end()) {
+        std::vector<std::string> names;
+        for (const auto& [k, v] : entries) names.push_back(k);
+        throw InputError(fmt::format("method {}: preset file '{}' has no entry for luminaire '{}' (entries: {})",
+                                     s.name, file, lum.empty() ? "(no file)" : lum,
+                                     names.empty() ? std::string("none") : fmt::format("{}", fmt::join(names, ", "))));
+    }
+    MethodSpec r = parseSpec(e->second, s.kind);
+    for (const auto& k : s.given)
+        if (k != "preset") {
+            r.values[k] = s.values.at(k);
+            r.given.insert(k);
+        }
+    const Family& f = family(s.name, s.kind);
+    if (f.validate) f.validate(r);
+    return r;
 }
 
 double MethodSpec::num(const std::string& key) const { return std::strtod(str(key).c_str(), nullptr); }

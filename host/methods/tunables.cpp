@@ -52,6 +52,13 @@ Param Param::list(std::string n, std::string d, std::vector<std::string> c, std:
     return p;
 }
 
+Param Param::text(std::string n, std::string d, std::string m)
+{
+    Param p = choice(std::move(n), std::move(d), {}, std::move(m));
+    p.kind = Kind::Text;
+    return p;
+}
+
 std::string Param::allowed() const
 {
     switch (kind) {
@@ -63,6 +70,8 @@ std::string Param::allowed() const
         return fmt::format("one of {}", fmt::join(choices, "|"));
     case Kind::List:
         return fmt::format("a '+'-joined list of {}", fmt::join(choices, "|"));
+    case Kind::Text:
+        return "a non-empty text without ',' (e.g. a file path)";
     }
     return "";
 }
@@ -83,6 +92,10 @@ std::string Param::canonical(const std::string& method, const std::string& value
             return fmt::format("{}", static_cast<long>(v));
         }
         return fmt::format("{}", v);
+    }
+    if (kind == Kind::Text) {
+        if (value.empty()) bad();  // ',' cannot reach here: it separates the SPEC's pairs
+        return value;
     }
     auto isChoice = [&](const std::string& s) {
         for (auto& c : choices)

@@ -11,7 +11,7 @@
 
 namespace lb::methods {
 
-enum class Kind { Real, Int, Choice, List };
+enum class Kind { Real, Int, Choice, List, Text };
 enum class Scale { Linear, Log };
 
 struct Param {
@@ -28,6 +28,8 @@ struct Param {
     static Param integer(std::string n, long d, long lo, long hi, Scale s, std::string m, bool tune = false);
     static Param choice(std::string n, std::string d, std::vector<std::string> c, std::string m);
     static Param list(std::string n, std::string d, std::vector<std::string> c, std::string m);
+    // Free text (a file path): non-empty, without ',' (the SPEC's separator).
+    static Param text(std::string n, std::string d, std::string m);
 
     // Checks a value and returns its canonical text; throws InputError naming
     // the method, the key, what was given and what is allowed.

@@ -260,6 +260,15 @@ void readOptimiser(const Reader& r, TuneExperiment& e)
     if (r.has("maxeval")) e.maxeval = static_cast<int>(r.integer("maxeval", 1, 1000000));
     if (r.has("maxtime")) e.maxtime = r.number("maxtime", 0, 1e7);
     if (r.has("seed")) e.seed = static_cast<unsigned>(r.integer("seed", 0, 0xffffffffL));
+    if (r.has("cross_validation")) {
+        const std::string cv = r.string("cross_validation");
+        if (cv != "leave-one-luminaire-out" && cv != "none")
+            r.fail("cross_validation", fmt::format("expected leave-one-luminaire-out or none, found '{}'", cv));
+        e.crossValidation = cv != "none";
+        if (e.crossValidation && e.train.luminaires.size() < 2)
+            r.fail("cross_validation", "leave-one-luminaire-out needs two training luminaires or more");
+    }
+    if (r.has("presets")) e.presets = r.boolean("presets");
 }
 
 }  // namespace
@@ -269,11 +278,11 @@ TuneExperiment loadTuneExperiment(const std::string& path)
     // A tune file is a few kB; 16 MiB leaves room for generated ones.
     const json j = util::readJsonObject(path, "a tune experiment file (JSON)", 16u << 20);
     Reader r{path, j};
-    r.onlyKnown({"name",          "description", "method",    "params",     "bounds", "reference",
-                 "luminaire_dir", "res",         "precision", "size",       "extent", "train",
-                 "validation",    "objective",   "algorithm", "metric",     "global", "global_maxeval",
-                 "maxeval",       "maxtime",     "seed",      "equal_time", "scene",  "alpha",
-                 "eye",           "albedo"});
+    r.onlyKnown({"name",          "description", "method",    "params",     "bounds",           "reference",
+                 "luminaire_dir", "res",         "precision", "size",       "extent",           "train",
+                 "validation",    "objective",   "algorithm", "metric",     "global",           "global_maxeval",
+                 "maxeval",       "maxtime",     "seed",      "equal_time", "cross_validation", "presets",
+                 "scene",         "alpha",       "eye",       "albedo"});
     TuneExperiment e;
     e.path = path;
     e.raw = j;
@@ -482,6 +491,25 @@ private:
     };
     Search searchOn(const std::vector<Case>& train, const std::string& label);
 
+    // The training luminaires' file names, in order of first appearance.
+    std::vector<std::string> trainLuminaires() const
+    {
+        std::vector<std::string> out;
+        for (const auto& c : train_)
+            if (std::find(out.begin(), out.end(), c.luminaire) == out.end()) out.push_back(c.luminaire);
+        return out;
+    }
+    // The cases of `cs` whose luminaire is (or with `keep` false: is not) `lum`.
+    static std::vector<Case> only(const std::vector<Case>& cs, const std::string& lum, bool keep = true)
+    {
+        std::vector<Case> out;
+        for (const auto& c : cs)
+            if ((c.luminaire == lum) == keep) out.push_back(c);
+        return out;
+    }
+    json crossValidation(const std::vector<double>& defaults);
+    json presets(const std::vector<double>& defaults, const std::vector<double>& global);
+
     json header() const;
     json summary(const std::vector<double>& v, const std::string& algo, int evals);
     std::string search(std::vector<double>& u, std::chrono::steady_clock::time_point t0);
@@ -685,6 +713,85 @@ Tuner::Search Tuner::searchOn(const std::vector<Case>& train, const std::string&
     return out;
 }
 
+// Leave-one-luminaire-out: per training luminaire a search on the others'
+// training scenes, scored on its own (held out) and on the validation set.
+json Tuner::crossValidation(const std::vector<double>& defaults)
+{
+    json folds = json::array();
+    double sumDefault = 0, sumTuned = 0, sumTrain = 0, sumValidation = 0;
+    int improved = 0;
+    const auto lums = trainLuminaires();
+    for (const auto& lum : lums) {
+        const auto fold = only(train_, lum, false), held = only(train_, lum);
+        Search s = searchOn(fold, fmt::format("fold {}: ", lum));
+        json f;
+        f["held_out"] = lum;
+        f["default"] = aggregate(evaluate(held, defaults));
+        f["tuned"] = aggregate(evaluate(held, s.best));
+        f["train_default"] = aggregate(evaluate(fold, defaults));
+        f["train"] = aggregate(evaluate(fold, s.best));
+        f["validation"] = aggregate(evaluate(validation_, s.best));
+        f["tuned_spec"] = specWith(e_.method, names_, s.best, e_.sceneKeys.kind);
+        f["params"] = paramsJson(s.best);
+        f["evaluations"] = s.evals;
+        f["near_bound"] = atBound(s.best);
+        sumDefault += f["default"].get<double>();
+        sumTuned += f["tuned"].get<double>();
+        sumTrain += f["train"].get<double>();
+        sumValidation += f["validation"].get<double>();
+        improved += f["tuned"].get<double>() < f["default"].get<double>();
+        if (!opt_.quiet)
+            fmt::print(stderr, "tune: fold {}: held out default {:.6g} tuned {:.6g}  train {:.6g}  validation {:.6g}\n",
+                       lum, f["default"].get<double>(), f["tuned"].get<double>(), f["train"].get<double>(),
+                       f["validation"].get<double>());
+        folds.push_back(f);
+    }
+    const double n = double(lums.size());
+    return {{"scheme", "leave-one-luminaire-out"},
+            {"score", e_.objective + " " + e_.metric},
+            {"folds", folds},
+            {"held_out_default_mean", sumDefault / n},
+            {"held_out_tuned_mean", sumTuned / n},
+            {"train_mean", sumTrain / n},
+            {"validation_mean", sumValidation / n},
+            {"folds_improved", improved}};
+}
+
+// A tuned spec per training luminaire (on its own training scenes) against
+// the defaults and the global tuned spec.
+json Tuner::presets(const std::vector<double>& defaults, const std::vector<double>& global)
+{
+    json entries = json::object(), rows = json::array();
+    for (const auto& lum : trainLuminaires()) {
+        const auto own = only(train_, lum), val = only(validation_, lum);
+        Search s = searchOn(own, fmt::format("preset {}: ", lum));
+        const std::string spec = specWith(e_.method, names_, s.best, e_.sceneKeys.kind);
+        entries[lum] = spec;
+        json row = {{"luminaire", lum},
+                    {"spec", spec},
+                    {"params", paramsJson(s.best)},
+                    {"evaluations", s.evals},
+                    {"near_bound", atBound(s.best)},
+                    {"train_default", aggregate(evaluate(own, defaults))},
+                    {"train_global", aggregate(evaluate(own, global))},
+                    {"train_preset", aggregate(evaluate(own, s.best))}};
+        if (!val.empty()) {
+            row["validation_default"] = aggregate(evaluate(val, defaults));
+            row["validation_global"] = aggregate(evaluate(val, global));
+            row["validation_preset"] = aggregate(evaluate(val, s.best));
+        }
+        if (!opt_.quiet)
+            fmt::print(stderr, "tune: preset {}: train default {:.6g} global {:.6g} preset {:.6g}\n", lum,
+                       row["train_default"].get<double>(), row["train_global"].get<double>(),
+                       row["train_preset"].get<double>());
+        rows.push_back(row);
+    }
+    return {{"file", "presets.json"},
+            {"score", e_.objective + " " + e_.metric},
+            {"entries", entries},
+            {"luminaires", rows}};
+}
+
 json Tuner::run()
 {
     auto t0 = std::chrono::steady_clock::now();
@@ -701,9 +808,11 @@ json Tuner::run()
     Search s = searchOn(train_, "");
     doc["tuned"] = summary(s.best, s.algo, s.evals);
     doc["trace"] = s.trace;
-    doc["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     doc["improved_validation"] =
         doc["tuned"]["validation_objective"].get<double>() < doc["default"]["validation_objective"].get<double>();
+    if (e_.crossValidation) doc["cross_validation"] = crossValidation(defaults);
+    if (e_.presets) doc["presets"] = presets(defaults, s.best);
+    doc["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     doc["near_bound"] = json::array();
     for (const auto& b : doc["tuned"]["at_bound"]) {
         doc["near_bound"].push_back(
@@ -734,6 +843,9 @@ json runTune(const TuneExperiment& e, const TuneOptions& opt)
     json doc = t.run();
     fs::create_directories(opt.outDir);
     fs::path out = fs::path(opt.outDir) / "tune.json";
+    if (doc.contains("presets"))
+        util::writeFileAtomic((fs::path(opt.outDir) / "presets.json").string(),
+                              doc["presets"]["entries"].dump(2) + "\n");
     util::writeFileAtomic(out.string(), doc.dump(2) + "\n");
     if (opt.plot) {
         fs::path script = fs::path(LB_SOURCE_DIR) / "plots" / "tune.py";

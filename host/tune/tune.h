@@ -19,6 +19,8 @@
 //    "algorithm": "LN_SBPLX",                    // any nlopt name (LN_NELDERMEAD, LN_BOBYQA, ...)
 //    "global": "GN_DIRECT_L", "global_maxeval": 40,   // optional global search before the local one
 //    "maxeval": 30, "maxtime": 60, "seed": 1,
+//    "cross_validation": "leave-one-luminaire-out",   // optional, below
+//    "presets": true,                                  // optional, below
 //    "scene": "specular", "alpha": [0.1, 0.5], "eye": [0, 4, 2]}   // scene/scene_keys.h; alphas
 //                                                // multiply the train and validation scenes
 //
@@ -33,6 +35,22 @@
 // `reps` launches on whatever else the machine runs; at 1.5x timing noise the
 // score moves by ~log 1.5 = 0.4 (MCI's metric ~ 1/t), so compare
 // equal-time objectives that differ by more than that, or rerun.
+//
+// Cross-validation ("cross_validation": "leave-one-luminaire-out"): after the
+// main search, one more search per luminaire of the training set, on the
+// training scenes of every other luminaire (the same heights, rotations and
+// budget); each fold's tuned spec and the defaults are then scored on the
+// held-out luminaire's training scenes (and on the validation set).
+// tune.json's "cross_validation": per fold the held-out luminaire, default and
+// tuned held-out scores, train and validation scores, the tuned spec; their
+// means. Needs two training luminaires or more.
+//
+// Presets ("presets": true): one more search per training luminaire on its
+// own training scenes; DIR/presets.json maps each luminaire file's name to its
+// tuned SPEC (`render --method cubature:preset=DIR/presets.json`), and
+// tune.json's "presets" compares, per luminaire, the defaults, the one global
+// tuned spec and the preset on that luminaire's training scenes (and its
+// validation scenes where the validation set has the same luminaire).
 //
 // Each parameter is searched in the unit interval mapped onto its bounds from
 // the tunables table, linearly or logarithmically (Scale::Log). Continuous
@@ -86,6 +104,8 @@ struct TuneExperiment {
     int maxeval = 30;
     double maxtime = 0;  // seconds, 0 = none
     unsigned seed = 1;
+    bool crossValidation = false;  // leave-one-luminaire-out over the training luminaires
+    bool presets = false;  // a tuned spec per training luminaire, DIR/presets.json
     SceneKindKeys sceneKeys;  // scene, alpha, eye, albedo
     nlohmann::json raw;
 };
@@ -107,7 +127,8 @@ struct TuneOptions {
     bool plot = true;  // run plots/tune.py when /usr/bin/python3 has matplotlib
 };
 
-// Runs the search and writes outDir/tune.json (and tune.png); returns the document.
+// Runs the search and writes outDir/tune.json (and tune.png, and with
+// "presets" presets.json); returns the document.
 // Its "near_bound" lists every searched parameter whose tuned value ended within
 // 1 % of the searched unit interval from a bound ({name, value, bound lo | hi,
 // limit}); each is also warned about on stderr (the optimum may lie beyond it).

@@ -119,6 +119,7 @@ TEST(Samples, SetsAreDeterministicInRangeAndDistinctBySeed)
 std::vector<std::string> validValues(const Param& p)
 {
     if (p.kind == Kind::Choice || p.kind == Kind::List) return p.choices;
+    if (p.kind == Kind::Text) return {p.def};  // a file path: any other value names a file that must exist
     if (p.kind == Kind::Int) return {fmt::format("{}", long(p.lo)), fmt::format("{}", long(p.hi)), p.def};
     return {fmt::format("{}", p.lo), fmt::format("{}", p.hi), p.def};
 }

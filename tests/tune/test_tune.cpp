@@ -1,5 +1,7 @@
 // lumibench tune: the experiment parser, the parameter mapping and the
 // CI smoke run (experiments/tune-smoke.json).
+#include "methods/render.h"
+#include "photometry/load.h"
 #include "testutil.h"
 #include "tune/tune.h"
 #include "util/error.h"
@@ -21,21 +23,23 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Runs `lumibench tune` on experiment `e` (--quiet --no-plot) in a fresh
-// temporary directory; its tune.json (null when it failed) and in *r the run.
-nlohmann::json runTuneCli(const nlohmann::json& e, test::CliResult* r, const std::string& extraFlags = "")
+// Runs `lumibench tune` on experiment `e` (--quiet --no-plot) in directory
+// `dir` (default: a fresh temporary one, removed afterwards; a given one is
+// kept, with the outputs in dir/out); its tune.json (null when it failed)
+// and in *r the run.
+nlohmann::json runTuneCli(const nlohmann::json& e, test::CliResult* r, fs::path dir = {})
 {
     static int k = 0;
-    fs::path dir =
-        fs::temp_directory_path() / ("lb_tune_cli_" + std::to_string(::getpid()) + "_" + std::to_string(k++));
+    const bool keep = !dir.empty();
+    if (!keep)
+        dir = fs::temp_directory_path() / ("lb_tune_cli_" + std::to_string(::getpid()) + "_" + std::to_string(k++));
     fs::remove_all(dir);
     fs::create_directories(dir);
     std::ofstream(dir / "e.json") << e.dump();
-    *r = test::runCli("tune " + (dir / "e.json").string() + " --out " + (dir / "out").string() + " --quiet --no-plot" +
-                      extraFlags);
+    *r = test::runCli("tune " + (dir / "e.json").string() + " --out " + (dir / "out").string() + " --quiet --no-plot");
     nlohmann::json doc;
     if (r->code == 0) std::ifstream(dir / "out" / "tune.json") >> doc;
-    fs::remove_all(dir);
+    if (!keep) fs::remove_all(dir);
     return doc;
 }
 
@@ -285,6 +289,119 @@ TEST(Tune, EqualTimeObjectiveChargesTheSlowerSpec)
     std::printf("equal-time objective: fan %.4g ms score %.4g, general %.4g ms score %.4g (nmse %.4g, %.4g)\n", tf, of,
                 ts, os, nf, ns);
     EXPECT_GT(os, of + std::log(2.0));
+}
+
+// Leave-one-luminaire-out cross-validation and per-luminaire presets on the
+// suite's own luminaires (no ../shared): three training luminaires with the
+// light touching the receiver (h = 0, where horizon_eps matters), a short
+// search per fold and per preset. Checked: one fold per luminaire, each held
+// out once; a fold's held-out default score is the mean of the main run's
+// default per-scene values of that luminaire (the same renders); no search
+// ends worse on its own training scenes than its start (the defaults);
+// presets.json names each luminaire with a SPEC, and `render
+// --method cubature:preset=FILE` renders exactly that SPEC's image for the
+// luminaire (also from an experiment file); a luminaire without an entry, or
+// a missing file, ends with exit 2 naming the file, the luminaire and the
+// entries.
+TEST(Tune, CrossValidationAndPresetsOnTheSuitesLuminaires)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    const std::vector<std::string> lums = {"lambert.ldt", "batwing.ldt", "downlight.ldt"};
+    const std::string lumDir = test::sourceDir() + "/luminaires";
+    nlohmann::json e = {
+        {"method", "cubature:triangulation=fan"},
+        {"params", {"horizon_eps"}},
+        {"reference", "reference:tol=1e-4"},
+        {"luminaire_dir", lumDir},
+        {"res", 24},
+        {"train", {{"luminaires", lums}, {"heights", {0.0}}, {"rotations", {"pi/2"}}}},
+        {"validation", {{"luminaires", {"lambert.ldt", "phong10.ldt"}}, {"heights", {-0.1}}, {"rotations", {"pi/2"}}}},
+        {"maxeval", 6},
+        {"cross_validation", "leave-one-luminaire-out"},
+        {"presets", true}};
+    const fs::path dir = fs::temp_directory_path() / ("lb_tune_cv_" + std::to_string(::getpid()));
+    test::CliResult r;
+    nlohmann::json doc = runTuneCli(e, &r, dir);
+    ASSERT_EQ(r.code, 0) << r.err;
+
+    const auto& cv = doc["cross_validation"];
+    ASSERT_EQ(cv["folds"].size(), lums.size()) << cv.dump();
+    EXPECT_EQ(cv["scheme"], "leave-one-luminaire-out");
+    const auto& perScene = doc["default"]["train_nmse_per_scene"];  // one scene per luminaire, in order
+    for (size_t i = 0; i < lums.size(); ++i) {
+        const auto& f = cv["folds"][i];
+        EXPECT_EQ(f["held_out"], lums[i]);
+        for (const char* k : {"default", "tuned", "train", "train_default", "validation"})
+            EXPECT_TRUE(std::isfinite(f[k].get<double>())) << k << " " << f.dump();
+        EXPECT_DOUBLE_EQ(f["default"].get<double>(), perScene[i].get<double>()) << f.dump();
+        EXPECT_LE(f["train"].get<double>(), f["train_default"].get<double>()) << f.dump();
+        EXPECT_NO_THROW(methods::parseSpec(f["tuned_spec"].get<std::string>()));
+    }
+    for (const char* k : {"held_out_default_mean", "held_out_tuned_mean", "train_mean", "validation_mean"})
+        EXPECT_TRUE(std::isfinite(cv[k].get<double>())) << k;
+    std::printf("leave-one-luminaire-out: held-out nmse default %.4g -> tuned %.4g, %d of 3 folds improved\n",
+                cv["held_out_default_mean"].get<double>(), cv["held_out_tuned_mean"].get<double>(),
+                cv["folds_improved"].get<int>());
+
+    // Presets: a file and a row per training luminaire.
+    nlohmann::json presets;
+    std::ifstream(dir / "out" / "presets.json") >> presets;
+    ASSERT_EQ(presets.size(), lums.size()) << presets.dump();
+    for (const auto& row : doc["presets"]["luminaires"]) {
+        EXPECT_LE(row["train_preset"].get<double>(), row["train_default"].get<double>()) << row.dump();
+        EXPECT_EQ(presets[row["luminaire"].get<std::string>()], row["spec"]);
+    }
+    // lambert is in the validation set too: its preset is scored there.
+    EXPECT_TRUE(doc["presets"]["luminaires"][0].contains("validation_preset"));
+    EXPECT_FALSE(doc["presets"]["luminaires"][1].contains("validation_preset"));
+
+    // cubature:preset=FILE renders, for each luminaire, exactly its entry's image.
+    const std::string file = (dir / "out" / "presets.json").string();
+    Scene sc;
+    sc.height = 0.0;
+    sc.rotation = 1.5707963267948966;
+    sc.res = 16;
+    for (const auto& lum : lums) {
+        photometry::Table t = photometry::load(lumDir + "/" + lum);
+        auto viaPreset =
+            methods::render(*rt, t, sc, methods::parseSpec("cubature:preset=" + file), methods::Precision::Float);
+        auto direct =
+            methods::render(*rt, t, sc, methods::parseSpec(presets[lum].get<std::string>()), methods::Precision::Float);
+        EXPECT_EQ(viaPreset.image.px, direct.image.px) << lum;
+        EXPECT_EQ(viaPreset.stats["preset_spec"], methods::parseSpec(presets[lum].get<std::string>()).canonical());
+    }
+    // Through the command line: a luminaire without an entry, a missing file.
+    const std::string render =
+        "render --height 0 --rotation pi/2 --res 8 --out " + (dir / "x.exr").string() + " --method cubature:preset=";
+    auto miss = test::runCli(render + file + " --luminaire " + lumDir + "/phong10.ldt");
+    EXPECT_EQ(miss.code, 2) << miss.err;
+    for (const std::string& s :
+         {file, std::string("'phong10.ldt'"), std::string("batwing.ldt, downlight.ldt, lambert.ldt")})
+        EXPECT_NE(miss.err.find(s), std::string::npos) << s << " in: " << miss.err;
+    auto nofile = test::runCli(render + (dir / "nosuch.json").string() + " --luminaire " + lumDir + "/lambert.ldt");
+    EXPECT_EQ(nofile.code, 2) << nofile.err;
+    EXPECT_NE(nofile.err.find((dir / "nosuch.json").string()), std::string::npos) << nofile.err;
+
+    // In an experiment file: each luminaire takes its entry; one without fails with exit 2.
+    nlohmann::json x = {{"name", "preset"},
+                        {"luminaire_dir", lumDir},
+                        {"luminaires", {"lambert.ldt", "batwing.ldt"}},
+                        {"heights", {0.1}},
+                        {"rotations", {"pi/2"}},
+                        {"methods", {"cubature:preset=" + file}},
+                        {"reference", "reference:tol=1e-4"},
+                        {"res", 8},
+                        {"reps", 5},
+                        {"save_images", false}};
+    std::ofstream(dir / "x.json") << x.dump();
+    auto run = test::runCli("run " + (dir / "x.json").string() + " --out " + (dir / "xr").string());
+    EXPECT_EQ(run.code, 0) << run.err;
+    x["luminaires"] = {"phong10.ldt"};
+    std::ofstream(dir / "x.json") << x.dump();
+    run = test::runCli("run " + (dir / "x.json").string() + " --out " + (dir / "xr2").string());
+    EXPECT_EQ(run.code, 2) << run.err;
+    EXPECT_NE(run.err.find("'phong10.ldt'"), std::string::npos) << run.err;
+    fs::remove_all(dir);
 }
 
 // The CI criterion of the tuner: tuning improves the validation NMSE over the
