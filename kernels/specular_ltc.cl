@@ -16,13 +16,15 @@
  *   LB_LTC_EXACT_G   G_Omega exact: the clipped polygon's Lambert irradiance at
  *                    unit radiance (spherical.h) divides the diffuse estimate
  *   LB_LUT           trig-free intensity table (common/lut.h), `lum` is the LUT
- *   LB_LTC_RECT      the straight-line form (radiance=point; common/ltc_lanes.inc),
+ *   LB_LTC_RECT      the straight-line form (radiance=point, or cubature with the
+ *                    fan, LB_CUB_RECT_CLIP where the horizon cuts along u;
+ *                    common/ltc_lanes.inc),
  *                    one pixel per work-item or, with LB_LANES=8 (float, LUT),
  *                    eight in float8; tests/specular/test_ltc_lanes.cpp holds it
  *                    to the general kernel
  * Continuous tunables (arguments): plane_eps, horizon_eps (cubature, as in
  * kernels/cubature.cl).
- * @variants: "" | "-DLB_LUT" | "-DLB_LUT -DLB_LTC_RADIANCE=3 -DLB_LTC_RECT" | "-DLB_LUT -DLB_LTC_RADIANCE=3 -DLB_LTC_RECT -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_LTC_EXACT_G" | "-DLB_CUB_TRI=1" | "-DLB_LTC_EXACT_G" | "-DLB_LTC_RADIANCE=1" | "-DLB_LTC_RADIANCE=2" | "-DLB_LTC_RADIANCE=3" | "-DLB_LTC_RADIANCE=1 -DLB_LTC_EXACT_G"
+ * @variants: "" | "-DLB_LUT" | "-DLB_LUT -DLB_LTC_RADIANCE=3 -DLB_LTC_RECT" | "-DLB_LUT -DLB_LTC_RADIANCE=3 -DLB_LTC_RECT -DLB_LANES=8" | "-DLB_LUT -DLB_LTC_RECT" | "-DLB_LUT -DLB_LTC_RECT -DLB_LANES=8" | "-DLB_LUT -DLB_LTC_RECT -DLB_CUB_RECT_CLIP -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_LTC_EXACT_G" | "-DLB_CUB_TRI=1" | "-DLB_LTC_EXACT_G" | "-DLB_LTC_RADIANCE=1" | "-DLB_LTC_RADIANCE=2" | "-DLB_LTC_RADIANCE=3" | "-DLB_LTC_RADIANCE=1 -DLB_LTC_EXACT_G"
  */
 #include "common/lbmath.h"
 
@@ -47,7 +49,7 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
         return;
     float8 col = (float8)(0, 1, 2, 3, 4, 5, 6, 7) + (float)col0;
-    lb_store_x8(out, row * res + col0, res - col0, lb_ltc_rect_point_x8(P, lum, ltc, col, row, ou, ov, on, au, av, an));
+    lb_store_x8(out, row * res + col0, res - col0, lb_ltc_rect_shade_x8(P, lum, ltc, col, row, ou, ov, on, au, av, an, plane_eps, horizon_eps));
 }
 #elif defined(LB_LTC_RECT)
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
@@ -57,7 +59,8 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     real ou, ov, on, au, av, an;
     if (!lb_work_item_pixels(P, row0, &col, &row, &res, &ou, &ov, &on, &au, &av, &an))
         return;
-    out[row * res + col] = lb_ltc_rect_point(P, lum, ltc, (real)col, row, ou, ov, on, au, av, an);
+    out[row * res + col] = lb_ltc_rect_shade(P, lum, ltc, (real)col, row, ou, ov, on, au, av, an, plane_eps,
+                                               horizon_eps);
 }
 #else
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,

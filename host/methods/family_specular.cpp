@@ -9,6 +9,7 @@
 #include "ltc/ltc.h"
 #include "methods/registry.h"
 #include "methods/samples.h"
+#include "methods/specialize.h"
 #include "methods/straight.h"
 
 namespace lb::methods {
@@ -93,12 +94,27 @@ Family specularLtc()
         Param::real("horizon_eps", 0.0, 0.0, 0.5, Scale::Linear,
                     "cubature: clip the light at n_x . (p - x) >= this (m) (thesis 5.2.4)"),
     };
-    // The straight-line form (kernels/common/ltc_lanes.inc): radiance=point with
-    // its own G (the light rectangle needs no clip for it); the lookup, specialize
-    // and lanes parameters as the diffuse families'.
-    addStraightLineOptions(f, "-DLB_LTC_RECT", [](const Scene&, const MethodSpec& s) {
-        return s.str("radiance") == "point" && s.str("g_omega") == "estimate";
+    // The straight-line forms (kernels/common/ltc_lanes.inc): radiance=point, and
+    // the cubature's fan where the diffuse cubature's rules rectFan / rectClip
+    // hold (methods/specialize.h: nothing clipped, or the horizon cutting along
+    // the light's u edges, LB_CUB_RECT_CLIP); both with their own G. The lookup,
+    // specialize and lanes parameters as the diffuse families'.
+    auto unclipped = [](const Scene& scene, const MethodSpec& s) {
+        return lightAboveEveryHorizon(scene, s.num("horizon_eps") + s.num("plane_eps"));
+    };
+    addStraightLineOptions(f, "-DLB_LTC_RECT", [unclipped](const Scene& scene, const MethodSpec& s) {
+        if (s.str("g_omega") != "estimate") return false;
+        if (s.str("radiance") == "point") return true;
+        return s.str("radiance") == "cubature" && s.str("triangulation") == "fan" &&
+            (unclipped(scene, s) || horizonAlongU(scene));
     });
+    f.sceneDefines = [straight = f.sceneDefines, unclipped](const MethodSpec& s, const Scene& scene,
+                                                            const photometry::Table& t) {
+        std::string d = straight(s, scene, t);
+        if (d.find("-DLB_LTC_RECT") != std::string::npos && s.str("radiance") == "cubature" && !unclipped(scene, s))
+            d += " -DLB_CUB_RECT_CLIP";
+        return d;
+    };
     f.defines = [](const MethodSpec& s) {
         std::string d;
         const std::string& rad = s.str("radiance");

@@ -1,5 +1,5 @@
-// The straight-line form of the specular ltc (kernels/common/ltc_lanes.inc,
-// -DLB_LTC_RECT) against the general kernel, pixel by pixel: the LTC integral
+// The straight-line forms of the specular ltc (kernels/common/ltc_lanes.inc,
+// -DLB_LTC_RECT: radiance=point and the cubature's fan) against the general kernel, pixel by pixel: the LTC integral
 // with the horizon clip folded into the edge sum, and the view frame and table
 // lookup per lane.
 #include "methods/render.h"
@@ -57,6 +57,8 @@ std::vector<Scene> scenes()
     }
     v.push_back(specular(0.5, 5 * M_PI / 8, 0.1, {0, 4, 0.05}));
     v.push_back(specular(1.1, 7 * M_PI / 8, 0.5, {0, 0, 3}));
+    v.push_back(specular(-0.2, 5 * M_PI / 8, 0.25));  // the light crosses the floor: the fan's clip along u
+    v.push_back(specular(0.0, M_PI, 0.25));  // the light lying on the floor: the plane shift
     return v;
 }
 
@@ -77,41 +79,58 @@ TEST(LtcLanes, StraightLineFormEqualsGeneral)
     LB_REQUIRE_RUNTIME(rt);
     const bool fp64 = rt->fp64();
     auto t = photometry::synth("batwing");
-    const std::string general = "ltc:radiance=point,specialize=none";
-    double worstF = 0, worstD = 0;
-    for (const Scene& s : scenes()) {
-        const std::string what = s.describe() + " alpha " + std::to_string(s.alpha);
-        Precision refP = fp64 ? Precision::Double : Precision::Float;
-        Image ref = test::run(*rt, t, s, general, refP).image;
-        double bound = 1e-5;
-        if (fp64) {
-            Image genF = test::run(*rt, t, s, general, Precision::Float).image;
-            bound = std::max(bound, 2 * worstRel(ref, genF, 1.0, what + " general float", 1e-5));
-            Image d = test::run(*rt, t, s, "ltc:radiance=point", Precision::Double).image;
-            worstD = std::max(worstD, worstRel(ref, d, 1e-10, what + " double", 1e-4));
+    for (const std::string spec : {"ltc:radiance=point", "ltc"}) {
+        const std::string sep = spec.find(':') == std::string::npos ? ":" : ",";
+        const std::string general = spec + sep + "specialize=none";
+        double worstF = 0, worstD = 0;
+        for (const Scene& s : scenes()) {
+            const std::string what = spec + " " + s.describe();
+            ASSERT_NE(methods::family("ltc", SceneKind::Specular)
+                          .sceneDefines(methods::parseSpec(spec, SceneKind::Specular), s, t)
+                          .find("-DLB_LTC_RECT"),
+                      std::string::npos)
+                << what;
+            Precision refP = fp64 ? Precision::Double : Precision::Float;
+            Image ref = test::run(*rt, t, s, general, refP).image;
+            double bound = 1e-5;
+            if (fp64) {
+                Image genF = test::run(*rt, t, s, general, Precision::Float).image;
+                bound = std::max(bound, 2 * worstRel(ref, genF, 1.0, what + " general float", 1e-5));
+                Image d = test::run(*rt, t, s, spec, Precision::Double).image;
+                worstD = std::max(worstD, worstRel(ref, d, 1e-10, what + " double", 1e-4));
+            }
+            for (const char* lanes : {"lanes=1", "lanes=8"}) {
+                Image f = test::run(*rt, t, s, spec + sep + lanes, Precision::Float).image;
+                worstF = std::max(worstF, worstRel(ref, f, bound, what + " float " + lanes, 1e-5));
+            }
+            if (HasFailure()) return;
         }
-        for (const char* lanes : {"lanes=1", "lanes=8"}) {
-            Image f = test::run(*rt, t, s, std::string("ltc:radiance=point,") + lanes, Precision::Float).image;
-            worstF = std::max(worstF, worstRel(ref, f, bound, what + " float " + lanes, 1e-5));
-        }
-        if (HasFailure()) return;
+        std::cout << spec << ": straight-line form against the general kernel: float " << worstF << ", double "
+                  << worstD << "\n";
     }
-    std::cout << "ltc straight-line form against the general kernel: float " << worstF << ", double " << worstD << "\n";
 }
 
-// The rule: the straight-line form for radiance=point with its own G only.
-TEST(LtcLanes, RuleAppliesToPointRadianceOnly)
+// The rule: the straight-line form for radiance=point and for the fan (the
+// clip along u where the light crosses the floor), each with its own G.
+TEST(LtcLanes, RuleAppliesToPointAndFan)
 {
     auto t = photometry::synth("batwing");
     const auto& fam = methods::family("ltc", SceneKind::Specular);
-    Scene s = specular(1.1, 3 * M_PI / 4, 0.25);
-    auto defines = [&](const std::string& spec) {
-        return fam.sceneDefines(methods::parseSpec(spec, SceneKind::Specular), s, t);
+    Scene s = specular(1.1, 3 * M_PI / 4, 0.25), crossing = specular(-0.2, 5 * M_PI / 8, 0.25);
+    auto defines = [&](const std::string& spec, const Scene& sc) {
+        return fam.sceneDefines(methods::parseSpec(spec, SceneKind::Specular), sc, t);
     };
-    EXPECT_NE(defines("ltc:radiance=point").find("-DLB_LTC_RECT"), std::string::npos);
-    EXPECT_EQ(defines("ltc:radiance=point,specialize=none").find("-DLB_LTC_RECT"), std::string::npos);
-    EXPECT_EQ(defines("ltc:radiance=point,g_omega=exact").find("-DLB_LTC_RECT"), std::string::npos);
-    EXPECT_EQ(defines("ltc").find("-DLB_LTC_RECT"), std::string::npos);
+    auto has = [](const std::string& d, const char* what) { return d.find(what) != std::string::npos; };
+    EXPECT_TRUE(has(defines("ltc:radiance=point", s), "-DLB_LTC_RECT"));
+    EXPECT_TRUE(has(defines("ltc", s), "-DLB_LTC_RECT"));
+    EXPECT_FALSE(has(defines("ltc", s), "-DLB_CUB_RECT_CLIP"));
+    EXPECT_TRUE(has(defines("ltc", crossing), "-DLB_CUB_RECT_CLIP"));
+    EXPECT_FALSE(has(defines("ltc:radiance=point", crossing), "-DLB_CUB_RECT_CLIP"));
+    EXPECT_FALSE(has(defines("ltc:radiance=point,specialize=none", s), "-DLB_LTC_RECT"));
+    EXPECT_FALSE(has(defines("ltc:radiance=point,g_omega=exact", s), "-DLB_LTC_RECT"));
+    EXPECT_FALSE(has(defines("ltc:g_omega=exact", s), "-DLB_LTC_RECT"));
+    EXPECT_FALSE(has(defines("ltc:triangulation=delaunay", s), "-DLB_LTC_RECT"));
+    EXPECT_FALSE(has(defines("ltc:radiance=structured", s), "-DLB_LTC_RECT"));
 }
 
 }  // namespace
