@@ -62,12 +62,11 @@ __kernel void render(__global const real* P, __global const float* lum, __global
  * skew of lb_normal_point (only NP and MRP read it). */
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0, real skew)
 {
-    int col, row, res;
-    if (!lb_work_item_pixel(P, row0, &col, &row, &res))
+    int px;
+    lb_light L;
+    real3 x, nx;
+    if (!lb_work_item_receiver(P, row0, &px, &L, &x, &nx))
         return;
-    lb_light L = lb_scene_light(P);
-    real3 x = lb_pixel_position(P, row, col);
-    real3 nx = lb_p3(P, LB_P_NX);
     real e = R(0);
 #ifdef LB_DYN_POINT
     real3 pc = L.c - x;
@@ -93,6 +92,6 @@ __kernel void render(__global const real* P, __global const float* lum, __global
         e = omega * lb_radiance_from(lum, L, s) * cosx;
     }
 #endif
-    out[row * res + col] = e;
+    out[px] = e;
 }
 #endif

@@ -543,11 +543,11 @@ __kernel void ac_evaluate(int K, int T, __global real* state, __global const rea
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
                      __global const real* lights, int nlights, real clamp2)
 {
-    int col, row, res;
-    if (!lb_work_item_pixel(P, row0, &col, &row, &res))
+    int px;
+    lb_light L;
+    real3 x, nx;
+    if (!lb_work_item_receiver(P, row0, &px, &L, &x, &nx))
         return;
-    real3 x = lb_pixel_position(P, row, col);
-    real3 nx = lb_p3(P, LB_P_NX);
     real e = R(0);
     for (int k = 0; k < nlights; ++k) {
         __global const real* l = lights + LB_IND_TEX * k;
@@ -555,5 +555,5 @@ __kernel void render(__global const real* P, __global const float* lum, __global
                                R3(l[LB_IND_NRM], l[LB_IND_NRM + 1], l[LB_IND_NRM + 2]), l[LB_IND_FLUX], l[LB_IND_AREA],
                                clamp2);
     }
-    out[row * res + col] = e;
+    out[px] = e;
 }

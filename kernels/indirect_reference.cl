@@ -95,16 +95,16 @@ __kernel void render(__global const real* P, __global const float* lum, __global
                      __global const real* edir, __global const int* grid, __global const real* delta,
                      __global real* errout, __global int* splits_out, real rel_tol, int max_splits)
 {
-    int col, row, res;
-    if (!lb_work_item_pixel(P, row0, &col, &row, &res))
+    int px;
+    lb_light L;
+    real3 x, nx;
+    if (!lb_work_item_receiver(P, row0, &px, &L, &x, &nx))
         return;
-    real3 x = lb_pixel_position(P, row, col);
-    real3 nx = lb_p3(P, LB_P_NX);
     real rho = P[LB_P_ALBEDO];
     real err;
     int splits;
     real e = lb_bounce_irradiance(edir, grid, x, nx, rho, rel_tol, max_splits, &err, &splits);
-    out[row * res + col] = e;
-    errout[row * res + col] = err + lb_bounce_interp_err(delta, x, nx, rho);
-    splits_out[row * res + col] = splits;
+    out[px] = e;
+    errout[px] = err + lb_bounce_interp_err(delta, x, nx, rho);
+    splits_out[px] = splits;
 }

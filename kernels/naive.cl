@@ -10,12 +10,11 @@
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
                      __global const real* st, int n)
 {
-    int col, row, res;
-    if (!lb_work_item_pixel(P, row0, &col, &row, &res))
+    int px;
+    lb_light L;
+    real3 x, nx;
+    if (!lb_work_item_receiver(P, row0, &px, &L, &x, &nx))
         return;
-    lb_light L = lb_scene_light(P);
-    real3 x = lb_pixel_position(P, row, col);
-    real3 nx = lb_p3(P, LB_P_NX);
     real3 corner = L.c - L.u * (R(0.5) * L.w) - L.v * (R(0.5) * L.l);
     real sum = R(0);
     for (int i = 0; i < n; ++i) {
@@ -33,5 +32,5 @@ __kernel void render(__global const real* P, __global const float* lum, __global
             sum += lb_intensity_cg(lum, c, gamma) * cw / (r * r);
         }
     }
-    out[row * res + col] = sum / (real)n;
+    out[px] = sum / (real)n;
 }

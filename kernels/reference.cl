@@ -28,14 +28,15 @@
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
                      __global real* errout, __global int* splits_out, real rel_tol, int max_splits)
 {
-    int col, row, res;
-    if (!lb_work_item_pixel(P, row0, &col, &row, &res))
+    int px;
+    lb_light L;
+    real3 x, nx;
+    if (!lb_work_item_receiver(P, row0, &px, &L, &x, &nx))
         return;
     real err;
     int splits;
-    real e = lb_ref_irradiance(lum, lb_scene_light(P), lb_pixel_position(P, row, col), lb_p3(P, LB_P_NX), rel_tol,
-                               max_splits, &err, &splits);
-    out[row * res + col] = e;
-    errout[row * res + col] = err;
-    splits_out[row * res + col] = splits;
+    real e = lb_ref_irradiance(lum, L, x, nx, rel_tol, max_splits, &err, &splits);
+    out[px] = e;
+    errout[px] = err;
+    splits_out[px] = splits;
 }

@@ -66,12 +66,11 @@ __kernel void render(__global const real* P, __global const float* lum, __global
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
                      __global const float* ltc, real plane_eps, real horizon_eps)
 {
-    int col, row, res;
-    if (!lb_work_item_pixel(P, row0, &col, &row, &res))
+    int px;
+    lb_light L;
+    real3 x, nx;
+    if (!lb_work_item_receiver(P, row0, &px, &L, &x, &nx))
         return;
-    lb_light L = lb_scene_light(P);
-    real3 x = lb_pixel_position(P, row, col);
-    real3 nx = lb_p3(P, LB_P_NX);
     real3 wo = normalize(lb_p3(P, LB_P_EYE) - x);
     real alpha = P[LB_P_ALPHA];
     real ls = R(0);
@@ -140,6 +139,6 @@ __kernel void render(__global const real* P, __global const float* lum, __global
             ls = lbar * lb_ltc_brdf_polygon(ltc, q, 4, nx, wo, alpha);
         }
     }
-    out[row * res + col] = ls;
+    out[px] = ls;
 }
 #endif

@@ -37,12 +37,11 @@ LB_FN real lb_smc_u01(uint h)
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
                      __global const real* st, int n, int seed)
 {
-    int col, row, res;
-    if (!lb_work_item_pixel(P, row0, &col, &row, &res))
+    int px;
+    lb_light L;
+    real3 x, nx;
+    if (!lb_work_item_receiver(P, row0, &px, &L, &x, &nx))
         return;
-    lb_light L = lb_scene_light(P);
-    real3 x = lb_pixel_position(P, row, col);
-    real3 nx = lb_p3(P, LB_P_NX);
     real3 wo = normalize(lb_p3(P, LB_P_EYE) - x);
     real alpha = P[LB_P_ALPHA];
     real3 t1, t2;
@@ -76,7 +75,7 @@ __kernel void render(__global const real* P, __global const float* lum, __global
         }
 #endif
 #if LB_SMC_SAMPLING != 0
-        uint pix = (uint)(row * res + col);
+        uint pix = (uint)px;
         for (int i = 0; i < n; ++i) {
             uint h = lb_smc_hash(pix ^ lb_smc_hash((uint)seed * 0x9E3779B9u + (uint)i));
             real u1 = lb_smc_u01(h), u2 = lb_smc_u01(lb_smc_hash(h + 0x68E31DA4u));
@@ -110,5 +109,5 @@ __kernel void render(__global const real* P, __global const float* lum, __global
         }
 #endif
     }
-    out[row * res + col] = sum / (real)n;
+    out[px] = sum / (real)n;
 }

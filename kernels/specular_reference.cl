@@ -9,14 +9,16 @@
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
                      __global real* errout, __global int* splits_out, real rel_tol, int max_splits)
 {
-    int col, row, res;
-    if (!lb_work_item_pixel(P, row0, &col, &row, &res))
+    int px;
+    lb_light L;
+    real3 x, nx;
+    if (!lb_work_item_receiver(P, row0, &px, &L, &x, &nx))
         return;
     real err;
     int splits, cells;
-    real v = lb_specular_reference(lum, lb_scene_light(P), lb_pixel_position(P, row, col), lb_p3(P, LB_P_NX),
-                                   lb_p3(P, LB_P_EYE), P[LB_P_ALPHA], rel_tol, max_splits, &err, &splits, &cells);
-    out[row * res + col] = v;
-    errout[row * res + col] = err;
-    splits_out[row * res + col] = splits;
+    real v = lb_specular_reference(lum, L, x, nx, lb_p3(P, LB_P_EYE), P[LB_P_ALPHA], rel_tol, max_splits, &err,
+                                   &splits, &cells);
+    out[px] = v;
+    errout[px] = err;
+    splits_out[px] = splits;
 }

@@ -35,12 +35,11 @@ __kernel void render(__global const real* P, __global const float* lum, __global
 
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0)
 {
-    int col, row, res;
-    if (!lb_work_item_pixel(P, row0, &col, &row, &res))
+    int px;
+    lb_light L;
+    real3 x, nx;
+    if (!lb_work_item_receiver(P, row0, &px, &L, &x, &nx))
         return;
-    lb_light L = lb_scene_light(P);
-    real3 x = lb_pixel_position(P, row, col);
-    real3 nx = lb_p3(P, LB_P_NX);
     real3 p[LB_MAXV];
     int m = lb_clipped_light(L, x, nx, p);
     real e = R(0);
@@ -51,6 +50,6 @@ __kernel void render(__global const real* P, __global const float* lum, __global
             sum += lb_radiance_from(lum, L, p[i]) * fmax(R(0), dot(nx, normalize(p[i])));
         e = lb_polygon_solid_angle(p, m) * sum / (real)(m + 1);
     }
-    out[row * res + col] = e;
+    out[px] = e;
 }
 #endif

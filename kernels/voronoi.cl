@@ -45,13 +45,11 @@ __kernel void render(__global const real* P, __global const float* lum, __global
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
                      __global const float* tab, int tres, real plane_eps)
 {
-    int col = get_global_id(0);
-    int row = row0 + (int)get_global_id(1);
-    int n = (int)P[LB_P_RES];
-    if (col >= n || row >= n)
+    int px;
+    lb_light L;
+    real3 x, nx;
+    if (!lb_work_item_receiver(P, row0, &px, &L, &x, &nx))
         return;
-    lb_light L = lb_scene_light(P);
-    out[row * n + col] =
-        lb_voronoi_irradiance(lum, tab, tres, L, lb_pixel_position(P, row, col), lb_p3(P, LB_P_NX), plane_eps);
+    out[px] = lb_voronoi_irradiance(lum, tab, tres, L, x, nx, plane_eps);
 }
 #endif
