@@ -294,9 +294,9 @@ nlohmann::json indirectTimes(Bench& b)
 // Cubature 0.41 ms at 1080p on an RTX 2080 Ti, 1.9x): `ltc` on the
 // specular scene of the same light over `cubature` on the diffuse scene,
 // in alternating rounds as the goals above; once against the cubature as
-// render() runs it (its fastest, straight-line form where the scene
-// allows) and once against its general kernel, the code path the ltc
-// kernel shares (lb_cubature_setup).
+// render() runs it (both in their straight-line forms where the scene
+// allows: ltc's is kernels/common/ltc_lanes.inc over the same fan) and once
+// against the cubature's general kernel.
 nlohmann::json specularTimes(Bench& b)
 {
     Scene sp = b.scene;
