@@ -8,6 +8,8 @@
  *   LB_CUB_WEIGHT     0 sample (paper Eq. 9) | 1 average (Eq. 10) | 2 dotout
  *   LB_CUB_NORMALIZE  0 none | 1 formfactor (thesis Eq. 5.11)
  *   LB_CUB_DYNAMIC    bit set of dynamic points: 1 cp, 2 np, 4 mrp, 8 barycentre (0: corners only)
+ *   LB_CUB_STATIC     0 .. 4 static samples at the tunables (s_k, t_k) of the light's unit
+ *                     square (general kernel only: the straight-line forms carry none)
  *   LB_CUB_RECT_FAN   nothing clipped, fan around CP or corner 0 (or Delaunay over corners + CP,
  *                     which never flips there):
  *                     the straight-line lb_cub_rect_fan (host/methods/specialize.h
@@ -37,7 +39,7 @@
  * LB_CUB_AREA = n (2 or 3) the n x n Gauss rule of the area form is blended in
  * away from the light and towards its plane (lb_area_weight).
  *
- * @variants: "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL" | "-DLB_CUB_RECT_FAN -DLB_CUB_BLEND" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_CUB_BLEND -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_NORMALIZE=1" | "" | "-DLB_CUB_TRI=1" | "-DLB_CUB_TRI=1 -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=15" | "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_DYNAMIC=0" | "-DLB_LUT" | "-DLB_LUT -DLB_CUB_RECT_FAN" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_RECT_FAN -DLB_CUB_RECT_CLIP -DLB_CUB_BLEND" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_CUB_RECT_CLIP -DLB_LANES=8" | "-DLB_CUB_AREA=2" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_CUB_RECT_CLIP -DLB_CUB_AREA=3 -DLB_LANES=8" | "-DLB_CUB_RECT_DEL -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_AREA=3" | "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=15 -DLB_CUB_RECT_DELALL" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=15 -DLB_CUB_RECT_DELALL -DLB_CUB_BLEND -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_NORMALIZE=1"
+ * @variants: "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL" | "-DLB_CUB_TRI=1 -DLB_CUB_STATIC=4" | "-DLB_CUB_RECT_FAN -DLB_CUB_BLEND" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_CUB_BLEND -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_NORMALIZE=1" | "" | "-DLB_CUB_TRI=1" | "-DLB_CUB_TRI=1 -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=15" | "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_DYNAMIC=0" | "-DLB_LUT" | "-DLB_LUT -DLB_CUB_RECT_FAN" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_RECT_FAN -DLB_CUB_RECT_CLIP -DLB_CUB_BLEND" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_CUB_RECT_CLIP -DLB_LANES=8" | "-DLB_CUB_AREA=2" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_CUB_RECT_CLIP -DLB_CUB_AREA=3 -DLB_LANES=8" | "-DLB_CUB_RECT_DEL -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_AREA=3" | "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=15 -DLB_CUB_RECT_DELALL" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=15 -DLB_CUB_RECT_DELALL -DLB_CUB_BLEND -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_NORMALIZE=1"
  */
 #include "common/lbmath.h"
 
@@ -73,6 +75,7 @@
     opt.weighting = LB_CUB_WEIGHT;                                                                             \
     opt.formfactor = LB_CUB_NORMALIZE;                                                                         \
     opt.dynamic = LB_CUB_DYNAMIC;                                                                              \
+    opt.nstatic = LB_CUB_STATIC;                                                                               \
     lb_cub_tunables tun;                                                                                       \
     LB_CUB_TUNABLES(CUB_TUNABLE_SET)
 

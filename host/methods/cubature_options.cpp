@@ -12,6 +12,20 @@
 
 namespace lb::methods {
 
+namespace {
+
+// s_k / t_k: a static sample's coordinate in the light's unit square.
+Param staticCoordinate(const std::string& name, double def)
+{
+    const bool s = name[0] == 's';
+    return Param::real(name, def, 0.0, 1.0, Scale::Linear,
+                       fmt::format("with static >= {}: static sample {}'s coordinate along the light's {} ({}, "
+                                   "0 .. 1: the light's edges; the whole square is the light)",
+                                   name.substr(1), name.substr(1), s ? "width u" : "length v", s ? "s" : "t"));
+}
+
+}  // namespace
+
 const std::vector<Param>& cubatureParams()
 {
     // Ranges from geometry (a tuner searches them; tune.json "search" and its
@@ -68,6 +82,20 @@ const std::vector<Param>& cubatureParams()
                     "with area: the cubature alone where the light's farthest point is seen at an elevation "
                     "sin(beta) >= area_sin above the light's plane, the area rule alone below area_sin/2 (0: never "
                     "by elevation)"),
+        Param::integer("static", 0, 0, kMaxStaticSamples, Scale::Linear,
+                       "static samples: this many more samples at fixed positions (s_k, t_k) of the light's unit "
+                       "square (s along its width u, t along its length v), inserted into the triangulation after "
+                       "the dynamic points (robustly: a sample on a corner, an edge or another sample merges with it; "
+                       "one outside what the horizon leaves is dropped); structural (-DLB_CUB_STATIC); > 0 runs the "
+                       "general kernel"),
+        staticCoordinate("s1", 0.5),
+        staticCoordinate("t1", 0.5),
+        staticCoordinate("s2", 0.25),
+        staticCoordinate("t2", 0.25),
+        staticCoordinate("s3", 0.75),
+        staticCoordinate("t3", 0.75),
+        staticCoordinate("s4", 0.25),
+        staticCoordinate("t4", 0.75),
         Param::text("preset", "none",
                     "a presets file (JSON: luminaire file name -> SPEC of this method, as `lumibench tune` writes "
                     "with \"presets\": true): each luminaire renders with its entry, the keys given beside preset "
@@ -128,6 +156,12 @@ std::string dynamicSetName(int mask)
 
 CubatureOptions::CubatureOptions() { *this = parse({}); }
 
+bool cubatureParamUnused(const CubatureOptions& o, const std::string& name)
+{
+    if (name.size() != 2 || (name[0] != 's' && name[0] != 't') || name[1] < '1' || name[1] > '9') return false;
+    return name[1] - '0' > o.staticSamples;
+}
+
 CubatureOptions CubatureOptions::parse(const std::map<std::string, std::string>& kv)
 {
     std::map<std::string, std::string> v;  // canonical text of every key
@@ -146,6 +180,7 @@ CubatureOptions CubatureOptions::parse(const std::map<std::string, std::string>&
     o.specialize = v.at("specialize") == "auto";
     o.lanes = v.at("lanes");
     o.area = v.at("area") == "none" ? 0 : v.at("area").back() - '0';  // gaussN
+    o.staticSamples = static_cast<int>(std::stol(v.at("static")));
     return o;
 }
 
@@ -158,8 +193,10 @@ std::vector<std::string> cubatureTunableNames()
 
 std::string CubatureOptions::defines() const
 {
-    return fmt::format("-DLB_CUB_TRI={} -DLB_CUB_WEIGHT={} -DLB_CUB_NORMALIZE={} -DLB_CUB_DYNAMIC={}{}", triangulation,
-                       weighting, formfactor ? 1 : 0, dynamic, area ? fmt::format(" -DLB_CUB_AREA={}", area) : "");
+    return fmt::format("-DLB_CUB_TRI={} -DLB_CUB_WEIGHT={} -DLB_CUB_NORMALIZE={} -DLB_CUB_DYNAMIC={}{}{}",
+                       triangulation, weighting, formfactor ? 1 : 0, dynamic,
+                       area ? fmt::format(" -DLB_CUB_AREA={}", area) : "",
+                       staticSamples ? fmt::format(" -DLB_CUB_STATIC={}", staticSamples) : "");
 }
 
 }  // namespace lb::methods

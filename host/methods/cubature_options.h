@@ -23,10 +23,14 @@ inline constexpr double kDefaultAreaQ = 0.5;
 // amplifies the table at most twofold (the farthest corner at 30 degrees
 // elevation or more).
 inline constexpr double kDefaultAreaSin = 0.5;
+// Static samples at most (the `static` parameter; LB_CUB_STATIC of
+// kernels/common/cubature.h, which sizes the triangulation for them).
+inline constexpr int kMaxStaticSamples = 4;
 
 // The cubature family's parameters, in SPEC order: triangulation, weighting,
 // normalize, dynamic, plane_eps, horizon_eps, corner_inset, dyn_weight,
-// blend_dist, lookup, specialize, lanes, area, area_q, area_sin, preset
+// blend_dist, lookup, specialize, lanes, area, area_q, area_sin, static,
+// s1, t1, .., s4, t4, preset
 // (resolved per luminaire before the options are read: methods/spec.h
 // resolvePreset).
 const std::vector<Param>& cubatureParams();
@@ -48,6 +52,7 @@ struct CubatureOptions {
     bool specialize;  // specialize=auto
     std::string lanes;  // auto | 1 | 8 (lanesFor, methods/straight.h)
     int area;  // Gauss-Legendre points per side: 0 (none), 2 or 3
+    int staticSamples;  // static: 0 .. kMaxStaticSamples (LB_CUB_STATIC)
 
     // The defaults of cubatureParams().
     CubatureOptions();
@@ -56,7 +61,9 @@ struct CubatureOptions {
     // a bad value throws lb::InputError naming the key and what is allowed.
     static CubatureOptions parse(const std::map<std::string, std::string>& kv);
 
-    // "-DLB_CUB_TRI=.. -DLB_CUB_WEIGHT=.. -DLB_CUB_NORMALIZE=.. -DLB_CUB_DYNAMIC=.. [-DLB_CUB_AREA=..]"
+    // "-DLB_CUB_TRI=.. -DLB_CUB_WEIGHT=.. -DLB_CUB_NORMALIZE=.. -DLB_CUB_DYNAMIC=.. [-DLB_CUB_AREA=..]
+    // [-DLB_CUB_STATIC=..]" (the last only with static samples, so that the
+    // programs without them keep their options)
     std::string defines() const;
 
 private:
@@ -68,5 +75,9 @@ private:
 // throws lb::InputError on anything else.
 int parseDynamicSet(const std::string& s);
 std::string dynamicSetName(int mask);
+
+// Whether cubature parameter `name` has no effect under options o: s_k and
+// t_k beyond o.staticSamples (a tuner does not search them).
+bool cubatureParamUnused(const CubatureOptions& o, const std::string& name);
 
 }  // namespace lb::methods

@@ -70,6 +70,12 @@ Family cubatureFamily()
                 "method cubature: triangulation=fan takes at most one dynamic point, got dynamic={} (the fan of "
                 "several points jumps by up to 20% between pixels); use triangulation=delaunay",
                 dynamicSetName(o.dynamic)));
+        // Static samples are inserted like further dynamic points: into a
+        // fan they would jump between pixels in the same way.
+        if (o.triangulation == 0 && o.staticSamples > 0)
+            throw InputError(fmt::format("method {}: static={} needs triangulation=delaunay (inserted into a fan, "
+                                         "a sample jumps between fan triangles from pixel to pixel)",
+                                         s.name, o.staticSamples));
         // A preset file is read and checked where the SPEC is given (exit 2
         // before any render); the luminaire's entry is picked when it renders.
         if (const std::string& file = s.str("preset"); file != "none") try {
@@ -81,6 +87,7 @@ Family cubatureFamily()
             }
     };
     f.defines = [](const MethodSpec& s) { return options(s).defines(); };
+    f.unused = [](const MethodSpec& s, const std::string& name) { return cubatureParamUnused(options(s), name); };
     f.sceneDefines = [](const MethodSpec& s, const Scene& scene, const photometry::Table& t) {
         return analyseCubature(scene, t, options(s)).defines();
     };

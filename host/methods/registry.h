@@ -135,6 +135,9 @@ struct Family {
     // Optional check of a whole spec after its values are parsed (combinations
     // a single parameter cannot reject); throws InputError.
     std::function<void(const MethodSpec&)> validate;
+    // Optional: whether parameter `name` has no effect under spec s (e.g. the
+    // cubature's s3 with static=2); a tuner does not search such a parameter.
+    std::function<bool(const MethodSpec&, const std::string&)> unused;
     // Structural -D options of the program (continuous values are arguments).
     std::function<std::string(const MethodSpec&)> defines;
     // Optional: more defines chosen per scene and luminaire (methods/specialize.h).

@@ -107,6 +107,9 @@ Specialization analyseCubature(const Scene& scene, const photometry::Table& tabl
     s.rectDelAll = delAll && unclipped;
     s.rectClip = clipAlongU;
     s.blend = !noBlend;
+    // The straight-line forms carry no static samples: the general kernel
+    // renders them (honestly slower).
+    if (o.staticSamples > 0) s.rectFan = s.rectDel = s.rectDelAll = s.rectClip = false;
     return s;
 }
 

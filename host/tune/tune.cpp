@@ -143,10 +143,16 @@ void readSearch(const Reader& r, TuneExperiment& e)
                 r.fail("params", fmt::format("'{}' is not a numeric parameter of method {}", n, base.name));
             if (base.given.count(n))
                 r.fail("params", fmt::format("'{}' is searched, so \"method\" must not set it", n));
+            if (fam.unused && fam.unused(base, n))
+                r.fail("params",
+                       fmt::format("'{}' has no effect with method {} (e.g. a static sample's coordinate "
+                                   "beyond \"static\")",
+                                   n, e.method));
         }
     } else {
         for (const auto& p : fam.params)
-            if (p.tunable && numeric(p) && !base.given.count(p.name)) e.params.push_back(p.name);
+            if (p.tunable && numeric(p) && !base.given.count(p.name) && !(fam.unused && fam.unused(base, p.name)))
+                e.params.push_back(p.name);
     }
     if (e.params.empty()) r.fail("params", fmt::format("method {} has no tunable parameter left to search", base.name));
     if (r.has("bounds")) {

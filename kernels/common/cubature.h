@@ -46,8 +46,13 @@
  *      Eq. 5.11; for a Lambertian emitter (L constant) the result is exact.
  */
 
-#define LB_CUB_MAXS 12 /* samples: LB_MAXV polygon vertices + 4 dynamic points */
-#define LB_CUB_MAXT 20 /* triangles: at most 2 S - h - 2 <= 2 * 12 - 3 - 2 = 19 */
+/* Static samples (the cubature's `static` parameter, 0 .. 4): structural, so
+ * that the triangulation is sized for them only where they are used. */
+#ifndef LB_CUB_STATIC
+#define LB_CUB_STATIC 0
+#endif
+#define LB_CUB_MAXS (12 + LB_CUB_STATIC) /* samples: LB_MAXV polygon vertices + 4 dynamic points + static */
+#define LB_CUB_MAXT (20 + 2 * LB_CUB_STATIC) /* triangles: at most 2 S - h - 2 <= 2 * 12 - 3 - 2 = 19, + 2 per static */
 #define LB_CUB_MAXFLIPS 64 /* Lawson flips always end (each flip lowers a lifted volume); a guard anyway */
 
 /* Dynamic point flags (the `dynamic` option, a bit set). The first present in
@@ -72,6 +77,7 @@ typedef struct {
     int weighting;     /* LB_CUB_SAMPLE | LB_CUB_AVERAGE | LB_CUB_DOTOUT */
     int formfactor;    /* normalize: 0 none, 1 formfactor (thesis Eq. 5.11; step 6 above) */
     int dynamic;       /* bit set of LB_CUB_CP, _NP, _MRP, _BARY; 0 = the corners only */
+    int nstatic;       /* static samples 0 .. LB_CUB_STATIC at (s_k, t_k) of lb_cub_tunables */
 } lb_cub_options;
 
 /* The paper's method: a fan around CP, average weights (Eq. 10), no
@@ -83,6 +89,7 @@ LB_FN lb_cub_options lb_cub_paper_options(void)
     o.weighting = LB_CUB_AVERAGE;
     o.formfactor = 0;
     o.dynamic = LB_CUB_CP;
+    o.nstatic = 0;
     return o;
 }
 
@@ -96,8 +103,12 @@ LB_FN lb_cub_options lb_cub_paper_options(void)
  *                (lb_cubature_irradiance; 0 = plain)
  *   dyn_weight   scale of the dynamic samples' weights (1 = plain)
  *   blend_dist   (m) the far-field blend into the 3 x 3 grid MC (lb_blend_weight)
- *   area_q, area_sin  the area form's blend (cubature_lanes.inc lb_area_weight) */
-#define LB_CUB_TUNABLES(X) X(plane_eps) X(horizon_eps) X(corner_inset) X(dyn_weight) X(blend_dist) X(area_q) X(area_sin)
+ *   area_q, area_sin  the area form's blend (cubature_lanes.inc lb_area_weight)
+ *   s1, t1 .. s4, t4  the static samples' positions in the light's unit square
+ *                (s along u, t along v; the first opt.nstatic are used) */
+#define LB_CUB_TUNABLES(X)                                                                                           \
+    X(plane_eps) X(horizon_eps) X(corner_inset) X(dyn_weight) X(blend_dist) X(area_q) X(area_sin) X(s1) X(t1) X(s2) \
+        X(t2) X(s3) X(t3) X(s4) X(t4)
 #define LB_CUB_TUNABLE_FIELD(name) real name;
 typedef struct {
     LB_CUB_TUNABLES(LB_CUB_TUNABLE_FIELD)
@@ -116,6 +127,7 @@ LB_FN lb_cub_tunables lb_cub_plain_tunables(real plane_eps, real horizon_eps)
     t.blend_dist = R(1e30); /* beyond every scene */
     t.area_q = R(1e30);     /* the area rule nowhere by distance */
     t.area_sin = R(0);      /* nor by elevation */
+    t.s1 = t.t1 = t.s2 = t.t2 = t.s3 = t.t3 = t.s4 = t.t4 = R(0.5); /* unused: no static samples */
     return t;
 }
 
@@ -543,6 +555,17 @@ LB_FN real lb_cubature_setup(lb_cub* T, lb_light L, real3 x, real3 nx, lb_cub_op
     }
     for (int i = 1; i < nd; ++i)
         lb_cub_insert(T, dyn[i], L.u, L.v);
+    /* Static samples at fixed points of the light, inserted like further
+     * dynamic points: one on a sample (a corner, a dynamic point) merges with
+     * it, one on an edge splits the edge, one outside what the horizon leaves
+     * is dropped (lb_cub_insert). */
+    if (opt.nstatic > 0) {
+        real st[8] = {tun.s1, tun.t1, tun.s2, tun.t2, tun.s3, tun.t3, tun.s4, tun.t4};
+        for (int k = 0; k < opt.nstatic && k < 4; ++k)
+            lb_cub_insert(T,
+                          L.c + L.u * ((st[2 * k] - R(0.5)) * L.w) + L.v * ((st[2 * k + 1] - R(0.5)) * L.l) - x,
+                          L.u, L.v);
+    }
     if (opt.triangulation == LB_CUB_DELAUNAY)
         lb_cub_delaunay(T);
     return lb_cub_weights(T, L.u, L.v, L.n, nx, opt.weighting, w);

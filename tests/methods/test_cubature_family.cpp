@@ -189,6 +189,100 @@ TEST(CubatureFamily, FanEqualsDelaunayForCornersAndClosestPoint)
         }
 }
 
+// Static samples placed where the triangulation already has a sample merge
+// with it (lb_cub_insert returns that sample, the triangulation and weights
+// are unchanged), so the image is the one without them, bit for bit: on a
+// corner ((0, 0) and (1, 1)), and on the barycentre of an unclipped light
+// (the centre (0.5, 0.5), with dynamic=cp+barycentre). Both general kernels
+// (static > 0 always renders the general one); the sideways luminaire (kinked,
+// asymmetric) so that any change of the weights would show.
+TEST(CubatureFamily, StaticSamplesOnExistingSamplesChangeNothing)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    auto t = methods::loadLuminaire(test::sourceDir() + "/luminaires/sideways.ldt");
+    const std::string base = "cubature:triangulation=delaunay,dynamic=cp+barycentre,specialize=none";
+    for (double h : {0.1, 1.1}) {
+        Scene sc = scene(h, 3 * M_PI / 4, 24);
+        auto plain = run(*rt, t, sc, base, Precision::Float);
+        auto corner = run(*rt, t, sc, base + ",static=1,s1=0,t1=0", Precision::Float);
+        auto corners = run(*rt, t, sc, base + ",static=2,s1=0,t1=0,s2=1,t2=1", Precision::Float);
+        EXPECT_EQ(corner.image.px, plain.image.px) << h;
+        EXPECT_EQ(corners.image.px, plain.image.px) << h;
+        EXPECT_EQ(corner.stats.at("triangles_max"), plain.stats.at("triangles_max")) << h;
+        EXPECT_NE(corner.stats.at("defines").get<std::string>().find("-DLB_CUB_STATIC=1"), std::string::npos);
+    }
+    // At h = 1.1 every corner is above the horizon (the straight-line forms'
+    // condition): the barycentre is the light's centre.
+    Scene sc = scene(1.1, 3 * M_PI / 4, 24);
+    auto plain = run(*rt, t, sc, base, Precision::Float);
+    auto centre = run(*rt, t, sc, base + ",static=1,s1=0.5,t1=0.5", Precision::Float);
+    EXPECT_EQ(centre.image.px, plain.image.px);
+}
+
+// A Lambertian light with normalize=formfactor is exact for any triangulation
+// (LambertFormfactorMatchesReference), so static samples must keep it exact
+// wherever they lie: on an edge (0.5, 0), at the centre, on a corner, four
+// spread over the light; near the light (h = 0.1), far (1.1) and with the
+// light through the receiver plane (h = -0.1: clipped, some samples outside
+// what the horizon leaves and dropped). Same tolerance and reasons as there:
+// 5e-5 relative in float. And where the samples are new (the edge, the
+// centre without a barycentre) they are real samples: more triangles.
+TEST(CubatureFamily, StaticSamplesKeepTheLambertFormfactorExact)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    auto t = methods::loadLuminaire(lambertPath());
+    const std::string base = "cubature:normalize=formfactor,lookup=exact,triangulation=delaunay";
+    for (double h : {-0.1, 0.1, 1.1}) {
+        Scene sc = scene(h, 3 * M_PI / 4, 16);
+        auto ref = run(*rt, t, sc, "reference", rt->fp64() ? Precision::Double : Precision::Float);
+        auto plain = run(*rt, t, sc, base, Precision::Float);
+        for (const char* extra : {",static=1,s1=0.5,t1=0", ",static=1", ",static=1,s1=0,t1=0", ",static=4",
+                                  ",static=4,s1=0,t1=0.5,s2=1,t2=0.5,s3=0.5,t3=1,s4=0.5,t4=0"}) {
+            const std::string spec = base + extra;
+            auto r = run(*rt, t, sc, spec, Precision::Float);
+            EXPECT_EQ(r.nonfinite, 0) << spec << " h=" << h;
+            double worst = 0;
+            for (size_t i = 0; i < r.image.px.size(); ++i) {
+                if (ref.image.px[i] == 0) {
+                    EXPECT_EQ(r.image.px[i], 0) << spec << " pixel " << i;
+                    continue;
+                }
+                worst = std::max(worst, std::fabs(r.image.px[i] / ref.image.px[i] - 1));
+            }
+            std::printf("[ static samples, lambert formfactor ] %s h=%g: max rel. diff %.3g, triangles %.2f (%.2f "
+                        "without)\n",
+                        extra, h, worst, double(r.stats.at("triangles_per_pixel")),
+                        double(plain.stats.at("triangles_per_pixel")));
+            EXPECT_LT(worst, 5e-5) << spec << " h=" << h;
+        }
+        if (h > 0) {  // unclipped light: an edge midpoint is a new sample (two more triangles: one hull edge split)
+            auto edge = run(*rt, t, sc, base + ",static=1,s1=0.5,t1=0", Precision::Float);
+            EXPECT_GT(double(edge.stats.at("triangles_per_pixel")), double(plain.stats.at("triangles_per_pixel")));
+        }
+    }
+}
+
+// static > 0 renders the general kernel (the straight-line forms carry no
+// static samples), where the same spec without them takes a straight-line
+// form; a fan with static samples is refused (exit 2 at the CLI).
+TEST(CubatureFamily, StaticSamplesRunTheGeneralKernelAndNeedDelaunay)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    auto t = methods::loadLuminaire(lambertPath());
+    Scene sc = scene(1.1, M_PI, 16);
+    auto fast = run(*rt, t, sc, "cubature:triangulation=delaunay", Precision::Float);
+    auto withStatic = run(*rt, t, sc, "cubature:triangulation=delaunay,static=2", Precision::Float);
+    EXPECT_EQ(fast.stats.at("form"), "straight-line");
+    EXPECT_EQ(withStatic.stats.at("form"), "general");
+    const auto out = std::filesystem::temp_directory_path() / ("lb_static_fan_" + std::to_string(::getpid()) + ".exr");
+    auto c = cli(fmt::format("render --luminaire {} --method cubature:static=1 --height 1 --rotation pi --res 8 "
+                             "--out {}",
+                             lambertPath(), out.string()));
+    EXPECT_FALSE(std::filesystem::exists(out));
+    EXPECT_EQ(c.code, 2) << c.err;
+    EXPECT_NE(c.err.find("triangulation=delaunay"), std::string::npos) << c.err;
+}
+
 // Voronoi with a light cut by the receiver's horizon (thesis 5.1's
 // limitation): the CLI keeps h >= 0, where the normalized scene never clips,
 // so here the light hangs lower than the receiver plane (h < 0: part of it

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -206,6 +207,35 @@ TEST(Tune, BoundsOutsideTheTableAreRefused)
         EXPECT_NE(msg.find("\"bounds\""), std::string::npos) << msg;
         EXPECT_NE(msg.find(what), std::string::npos) << what << " in: " << msg;
     }
+}
+
+// Static samples' positions are searched only for the samples the method
+// places: by default s1, t1, s2, t2 with static=2, none with static=0; s3
+// named with static=2 is refused (it would be a flat dimension).
+TEST(Tune, SearchesOnlyThePlacedStaticSamples)
+{
+    auto paramsOf = [](const std::string& method) {
+        nlohmann::json e;
+        std::ifstream(test::sourceDir() + "/experiments/tune-smoke.json") >> e;
+        e["luminaire_dir"] = test::sourceDir() + "/luminaires";
+        e["method"] = method;
+        e.erase("params");
+        fs::path p = fs::temp_directory_path() / ("lb_tune_static_" + std::to_string(::getpid()) + ".json");
+        std::ofstream(p) << e.dump();
+        auto x = tune::loadTuneExperiment(p.string());
+        fs::remove(p);
+        return x.params;
+    };
+    auto has = [](const std::vector<std::string>& v, const std::string& n) {
+        return std::find(v.begin(), v.end(), n) != v.end();
+    };
+    auto two = paramsOf("cubature:triangulation=delaunay,static=2");
+    for (const char* n : {"s1", "t1", "s2", "t2", "plane_eps"}) EXPECT_TRUE(has(two, n)) << n;
+    for (const char* n : {"s3", "t3", "s4", "t4"}) EXPECT_FALSE(has(two, n)) << n;
+    auto none = paramsOf("cubature:triangulation=delaunay");
+    for (const char* n : {"s1", "t1", "s4", "t4"}) EXPECT_FALSE(has(none, n)) << n;
+    std::string msg = smokeRefusal({{"method", "cubature:triangulation=delaunay,static=2"}, {"params", {"s3"}}});
+    EXPECT_NE(msg.find("'s3' has no effect"), std::string::npos) << msg;
 }
 
 // "equal_time" only with the equal_time objective, an mc SPEC without n and
