@@ -94,6 +94,7 @@ void matchesHost(ocl::Runtime* rt, bool dbl, double tol)
         ocl::setReal(k, 10, 1e6, dbl);  // blend_dist: the default, no blend
         ocl::setReal(k, 11, 1.0, dbl);  // area_q (unused: no LB_CUB_AREA)
         ocl::setReal(k, 12, 0.5, dbl);  // area_sin (unused)
+        for (cl_uint a = 13; a < 21; ++a) ocl::setReal(k, a, 0.5, dbl);  // s1, t1 .. s4, t4 (unused: no static samples)
         rt->launch2D(k, N, N).wait();
         std::vector<T> out(N * N);
         std::vector<int> st(2 * N * N);
@@ -174,6 +175,8 @@ TEST(CubatureKernel, TimingsTrianglesFlips)
         ocl::setReal(k, 10, 1e6, false);  // blend_dist: the default, no blend
         ocl::setReal(k, 11, 1.0, false);  // area_q (unused: no LB_CUB_AREA)
         ocl::setReal(k, 12, 0.5, false);  // area_sin (unused)
+        for (cl_uint a = 13; a < 21; ++a)
+            ocl::setReal(k, a, 0.5, false);  // s1, t1 .. s4, t4 (unused: no static samples)
         auto t = rt->time([&] { return rt->launch2D(k, N, N); }, 5, 1);
         std::vector<int> st(2 * N * N);
         rt->queue().enqueueReadBuffer(bs, CL_TRUE, 0, st.size() * 4, st.data());
