@@ -11,8 +11,11 @@
  *                      densities in solid angle, p_light = r^2 / (A |n_L . w|)
  * st[2i], st[2i+1]: the light points (host/methods/samples.h); seed: the
  * pixel hash's seed. LB_LUT: the trig-free intensity table (common/lut.h),
- * `lum` is the LUT.
- * @variants: "" | "-DLB_SMC_SAMPLING=1" | "-DLB_SMC_SAMPLING=2" | "-DLB_LUT" | "-DLB_LUT -DLB_SMC_SAMPLING=2"
+ * `lum` is the LUT. LB_SMC_RECT: the straight-line form of sampling=light
+ * (common/smc_lanes.inc), one pixel per work-item or, with LB_LANES=8 (float,
+ * LUT), eight in float8; tests/specular/test_smc_lanes.cpp holds it to the
+ * general kernel.
+ * @variants: "" | "-DLB_LUT -DLB_SMC_RECT" | "-DLB_LUT -DLB_SMC_RECT -DLB_LANES=8" | "-DLB_SMC_RECT" | "-DLB_SMC_SAMPLING=1" | "-DLB_SMC_SAMPLING=2" | "-DLB_LUT" | "-DLB_LUT -DLB_SMC_SAMPLING=2"
  */
 #include "common/lbmath.h"
 
@@ -34,6 +37,32 @@ LB_FN real lb_smc_u01(uint h)
     return (real)(h >> 8) * R(5.9604644775390625e-8); /* 2^-24: < 1 in float */
 }
 
+#if defined(LB_SMC_RECT) && defined(LB_LANES) && LB_LANES == 8 && !defined(LB_DOUBLE)
+#include "common/lanes8.h"
+#include "common/lanes_all.inc"
+#include "common/lanes_end.h"
+
+__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
+                     __global const real* st, int n, int seed)
+{
+    int col0, row, res;
+    float8 ou, ov, on;
+    real au, av, an;
+    if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
+        return;
+    lb_store_x8(out, row * res + col0, res - col0, lb_smc_rect_light_x8(P, lum, st, n, ou, ov, on, au, av, an));
+}
+#elif defined(LB_SMC_RECT)
+__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
+                     __global const real* st, int n, int seed)
+{
+    int col, row, res;
+    real ou, ov, on, au, av, an;
+    if (!lb_work_item_pixels(P, row0, &col, &row, &res, &ou, &ov, &on, &au, &av, &an))
+        return;
+    out[row * res + col] = lb_smc_rect_light(P, lum, st, n, ou, ov, on, au, av, an);
+}
+#else
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
                      __global const real* st, int n, int seed)
 {
@@ -111,3 +140,4 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     }
     out[px] = sum / (real)n;
 }
+#endif

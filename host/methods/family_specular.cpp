@@ -50,16 +50,14 @@ Family specularMc()
                       "light: fixed point set on the light; vndf: GGX visible normals, per pixel; mis: both"),
         Param::choice("pattern", "poisson", {"poisson", "halton", "stratified", "random"}, "point set on the light"),
         Param::integer("seed", 0, 0, 2147483647L, Scale::Linear, "seed of the point set and the VNDF hash"),
-        lookupParam("lut",
-                    "intensity lookup: the trig-free table (photometry/lut.h), as ltc and the diffuse mc, or "
-                    "the exact bilinear one"),
     };
-    f.lumBuffer = lookupBuffer;
+    // The straight-line form of sampling=light (kernels/common/smc_lanes.inc);
+    // the lookup, specialize and lanes parameters as the diffuse families'.
+    addStraightLineOptions(f, "-DLB_SMC_RECT",
+                           [](const Scene&, const MethodSpec& s) { return s.str("sampling") == "light"; });
     f.defines = [](const MethodSpec& s) {
         const std::string& m = s.str("sampling");
-        std::string d = m == "light" ? std::string() : (m == "vndf" ? "-DLB_SMC_SAMPLING=1" : "-DLB_SMC_SAMPLING=2");
-        if (s.str("lookup") == "lut") d += d.empty() ? "-DLB_LUT" : " -DLB_LUT";
-        return d;
+        return m == "light" ? std::string() : (m == "vndf" ? "-DLB_SMC_SAMPLING=1" : "-DLB_SMC_SAMPLING=2");
     };
     f.args = {"st", "n", "seed"};
     f.setArgs = [](LaunchContext& c) {

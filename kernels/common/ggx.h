@@ -18,16 +18,6 @@
  * textbook form cancels against G2). Symmetric in (w_i, w_o) by form
  * (Helmholtz reciprocity; tests/specular checks it and the textbook form). */
 
-/* D(h) of the unnormalised half vector (hx, hy, hz), hz > 0. */
-LB_FN real lb_ggx_d(real hx, real hy, real hz, real alpha)
-{
-    real a2 = alpha * alpha;
-    real t = hx * hx + hy * hy;
-    real h2 = t + hz * hz;
-    real den = a2 * hz * hz + t;
-    return den > R(0) ? a2 * h2 * h2 / (LB_PI * den * den) : R(0);
-}
-
 /* Smith Lambda of the direction (x, y, z), z > 0 (DESIGN 8's form; for the
  * tests and the VNDF sampler; f_r uses S = z (1 + 2 Lambda) directly). */
 LB_FN real lb_ggx_lambda(real x, real y, real z, real alpha)
@@ -36,17 +26,11 @@ LB_FN real lb_ggx_lambda(real x, real y, real z, real alpha)
     return R(0.5) * (sqrt(R(1) + alpha * alpha * t2) - R(1));
 }
 
-/* f_r for unit w_i = (ix, iy, iz), w_o = (ox, oy, oz) in the local frame;
- * 0 unless both lie above the horizon. */
-LB_FN real lb_ggx_brdf(real ix, real iy, real iz, real ox, real oy, real oz, real alpha)
-{
-    if (!(iz > R(0)) || !(oz > R(0)))
-        return R(0);
-    real a2 = alpha * alpha;
-    real si = sqrt(iz * iz + a2 * (ix * ix + iy * iy));
-    real so = sqrt(oz * oz + a2 * (ox * ox + oy * oy));
-    return lb_ggx_d(ix + ox, iy + oy, iz + oz, alpha) / (R(2) * (oz * si + iz * so));
-}
+/* D(h) and f_r, lane-generic (ggx_lanes.inc), here for one pixel: lb_ggx_d,
+ * lb_ggx_brdf. */
+#include "lanes1.h"
+#include "ggx_lanes.inc"
+#include "lanes_end.h"
 
 /* f_r(w_i, w_o) cos_i (unit directions): the integrand of the reflected
  * radiance per unit incident radiance and solid angle. */

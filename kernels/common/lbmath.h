@@ -13,9 +13,10 @@
 #include "ltc.h"
 #include "adaptive.h"
 #include "specref.h"
-/* The point-sample baselines' and the LTC's straight-line forms, one pixel per
- * call (lanes_all.inc lists every form in this order). */
+/* The point-sample baselines', the LTC's and the specular MC's straight-line
+ * forms, one pixel per call (lanes_all.inc lists every form in this order). */
 #include "lanes1.h"
 #include "dynamic_lanes.inc"
 #include "ltc_lanes.inc"
+#include "smc_lanes.inc"
 #include "lanes_end.h"
