@@ -465,6 +465,11 @@ public:
         } else {
             in["kernel"] = kernel(c.parsed.name);
         }
+        // A presets file is an input too: the SPEC its entry for this
+        // luminaire resolves to (an edited entry is a different input; the
+        // other luminaires' entries are not this cell's).
+        if (c.parsed.has("preset") && c.parsed.str("preset") != "none")
+            in["preset_spec"] = methods::resolvePreset(c.parsed, sid.luminaire).canonical();
         return in;
     }
 

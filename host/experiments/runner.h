@@ -10,7 +10,9 @@
 // file's bytes), `reference` (canonical SPEC) and `reference_kernel`,
 // `kernel` (digest of the method's kernel source with every header it
 // includes, ocl::kernelSourceDigest), `reps`, `time_res`; equal-time
-// partners also `target_kernel`, `mc` and `equal_time_tolerance`; `metrics`
+// partners also `target_kernel`, `mc` and `equal_time_tolerance`; a method
+// with a presets file (cubature:preset=FILE) `preset_spec`, the SPEC its
+// entry for the cell's luminaire resolves to; `metrics`
 // names the error metrics computed (metrics.h), so records of a runner
 // that computed fewer are recomputed. Records of
 // older files have none and are recomputed. Stale temporary files of a

@@ -138,7 +138,7 @@ std::string cacheKey(const photometry::Table& table, const Scene& scene, const M
     auto lum = table.packed();
     f.bytes(lum.data(), lum.size() * sizeof(float));
     f.str(precisionName(p));
-    f.str(spec.canonical());
+    f.str(resolvePreset(spec, table.source).canonical());  // a preset: the entry it resolves to
     f.str(ocl::kernelSourceDigest(family(spec.name, spec.kind).file));  // the kernel and every header it includes
     return f.hex();
 }

@@ -245,6 +245,52 @@ TEST(Resume, RecomputesWhatChangedAndSaysSo)
     EXPECT_NE(err.find("recomputed 5 cells whose inputs changed (extent)"), std::string::npos) << err;
 }
 
+// A presets file is an input of the cells that use it: an edited entry for
+// the cell's luminaire recomputes them (and only them); an entry for another
+// luminaire does not.
+TEST(Resume, RecomputesTheCellsWhosePresetChanged)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    fs::path d = tmpDir("resume_preset");
+    ScopedEnv cache("LUMIBENCH_CACHE", (d / "cache").string());
+    fs::copy_file(fs::path(test::sourceDir()) / "luminaires" / "lambert.ldt", d / "lum.ldt");
+    const fs::path presets = d / "presets.json";
+    auto writePresets = [&](const json& p) { std::ofstream(presets) << p.dump(); };
+    writePresets({{"lum.ldt", "cubature:plane_eps=0.01"}});
+    experiments::RunOptions ro;
+    ro.outDir = (d / "out").string();
+    ro.progress = false;
+    json j = tiny(d);
+    const std::string spec = "cubature:preset=" + presets.string();
+    j["methods"] = {"point", spec};
+    j["equal_time"] = {spec};
+    auto runWith = [&] { return experiments::run(experiments::loadExperiment(writeJson(d / "e.json", j)), ro); };
+    // point, the cubature, the curve's N = 1 and 2, the cubature's equal-time partner
+    const size_t cells = 5, presetCells = 2;
+
+    auto s = runWith();
+    EXPECT_EQ(s.computed, cells);
+    auto first = results::load(ro.outDir + "/results.json").records;
+    size_t withPreset = 0;
+    for (const auto& r : first)
+        if (r.inputs.contains("preset_spec")) {
+            ++withPreset;
+            EXPECT_NE(r.inputs["preset_spec"].get<std::string>().find("plane_eps=0.01"), std::string::npos)
+                << r.inputs.dump();
+        }
+    EXPECT_EQ(withPreset, presetCells);
+
+    EXPECT_EQ(runWith().computed, 0u);  // nothing changed
+    writePresets({{"lum.ldt", "cubature:plane_eps=0.01"}, {"other.ldt", "cubature:plane_eps=0.2"}});
+    EXPECT_EQ(runWith().computed, 0u);  // another luminaire's entry is not this cell's input
+    writePresets({{"lum.ldt", "cubature:plane_eps=0.02"}});
+    s = runWith();
+    EXPECT_EQ(s.stale, presetCells);
+    EXPECT_EQ(s.computed, presetCells);
+    EXPECT_EQ(s.skipped, cells - presetCells);
+    EXPECT_EQ(runWith().computed, 0u);
+}
+
 // Before: two runs into one directory, or merged overlapping inputs, left two
 // equal-time partners for one method and scene (with different N).
 TEST(ResultsPartners, OneEqualTimePartnerPerSceneAndMethod)
