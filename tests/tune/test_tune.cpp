@@ -1,11 +1,13 @@
 // lumibench tune: the experiment parser, the parameter mapping and the
 // CI smoke run (experiments/tune-smoke.json).
 #include "methods/render.h"
+#include "methods/samples.h"
 #include "photometry/load.h"
 #include "testutil.h"
 #include "tune/tune.h"
 #include "util/error.h"
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -236,6 +238,64 @@ TEST(Tune, SearchesOnlyThePlacedStaticSamples)
     for (const char* n : {"s1", "t1", "s4", "t4"}) EXPECT_FALSE(has(none, n)) << n;
     std::string msg = smokeRefusal({{"method", "cubature:triangulation=delaunay,static=2"}, {"params", {"s3"}}});
     EXPECT_NE(msg.find("'s3' has no effect"), std::string::npos) << msg;
+}
+
+// mcpoints renders mc's estimate on the points its parameters name: set to
+// an mc point set (unshifted Halton: 1/2, 1/3, 1/4, ... print and parse
+// exactly at 17 digits) it is that mc's image bit for bit, on the same
+// kernel and arithmetic.
+TEST(McPoints, RendersMcOnTheGivenPoints)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    photometry::Table t = photometry::load(test::sourceDir() + "/luminaires/batwing.ldt");
+    Scene sc;
+    sc.height = 0.6;
+    sc.rotation = 2.356194490192345;
+    sc.res = 16;
+    const int n = 5;
+    const auto st = methods::samplePoints("halton", n, 0);
+    std::string spec = fmt::format("mcpoints:n={}", n);
+    for (int k = 1; k <= n; ++k) spec += fmt::format(",s{}={:.17g},t{}={:.17g}", k, st[2 * k - 2], k, st[2 * k - 1]);
+    auto viaPoints = methods::render(*rt, t, sc, methods::parseSpec(spec), methods::Precision::Float);
+    auto mc = methods::render(*rt, t, sc, methods::parseSpec(fmt::format("mc:n={},pattern=halton", n)),
+                              methods::Precision::Float);
+    EXPECT_EQ(viaPoints.image.px, mc.image.px);
+    // Another point moves the image (the test can fail).
+    auto moved = methods::render(*rt, t, sc, methods::parseSpec("mcpoints:n=6" + spec.substr(spec.find(','))),
+                                 methods::Precision::Float);
+    EXPECT_NE(moved.image.px, mc.image.px);
+}
+
+// Tuning the positions of an N-point set: tune searches exactly the 2N
+// coordinates of the placed points, the tuned set beats its start (the R2
+// defaults) on the training scenes, and the search is deterministic (same
+// experiment, same seed: the same tuned SPEC and objective, bit for bit).
+TEST(Tune, PlacesTheMcPointSetReproducibly)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    nlohmann::json e;
+    std::ifstream(test::sourceDir() + "/experiments/tune-smoke.json") >> e;
+    e["luminaire_dir"] = test::sourceDir() + "/luminaires";
+    e["method"] = "mcpoints:n=3";
+    e.erase("params");
+    e["train"]["heights"] = {0.6};
+    e["validation"]["heights"] = {1.1};
+    e["maxeval"] = 40;
+    test::CliResult r1, r2;
+    nlohmann::json a = runTuneCli(e, &r1);
+    ASSERT_EQ(r1.code, 0) << r1.err;
+    nlohmann::json b = runTuneCli(e, &r2);
+    ASSERT_EQ(r2.code, 0) << r2.err;
+    std::vector<std::string> searched;
+    for (const auto& [k, v] : a["tuned"]["params"].items()) searched.push_back(k);
+    EXPECT_EQ(searched, (std::vector<std::string>{"s1", "s2", "s3", "t1", "t2", "t3"}));
+    const double d = a["default"]["train_nmse"].get<double>(), tuned = a["tuned"]["train_nmse"].get<double>();
+    std::printf("mcpoints:n=3 train nmse: R2 defaults %.4g -> tuned %.4g (%s); validation %.4g -> %.4g\n", d, tuned,
+                a["tuned"]["spec"].get<std::string>().c_str(), a["default"]["validation_nmse"].get<double>(),
+                a["tuned"]["validation_nmse"].get<double>());
+    EXPECT_LT(tuned, 0.9 * d);  // measured: see the printout
+    EXPECT_EQ(a["tuned"]["spec"], b["tuned"]["spec"]);
+    EXPECT_EQ(a["tuned"]["train_nmse"].get<double>(), b["tuned"]["train_nmse"].get<double>());
 }
 
 // "equal_time" only with the equal_time objective, an mc SPEC without n and
