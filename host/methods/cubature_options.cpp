@@ -158,6 +158,8 @@ CubatureOptions::CubatureOptions() { *this = parse({}); }
 
 bool cubatureParamUnused(const CubatureOptions& o, const std::string& name)
 {
+    // the area form's distance and elevation switches act only where its Gauss rule is blended in
+    if (name == "area_q" || name == "area_sin") return o.area == 0;
     if (name.size() != 2 || (name[0] != 's' && name[0] != 't') || name[1] < '1' || name[1] > '9') return false;
     return name[1] - '0' > o.staticSamples;
 }

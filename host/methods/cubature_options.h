@@ -77,7 +77,8 @@ int parseDynamicSet(const std::string& s);
 std::string dynamicSetName(int mask);
 
 // Whether cubature parameter `name` has no effect under options o: s_k and
-// t_k beyond o.staticSamples (a tuner does not search them).
+// t_k beyond o.staticSamples, area_q and area_sin without `area` (a tuner
+// does not search them).
 bool cubatureParamUnused(const CubatureOptions& o, const std::string& name);
 
 }  // namespace lb::methods

@@ -236,6 +236,12 @@ TEST(Tune, SearchesOnlyThePlacedStaticSamples)
     for (const char* n : {"s3", "t3", "s4", "t4"}) EXPECT_FALSE(has(two, n)) << n;
     auto none = paramsOf("cubature:triangulation=delaunay");
     for (const char* n : {"s1", "t1", "s4", "t4"}) EXPECT_FALSE(has(none, n)) << n;
+    // The area form's switches only where its rule is blended in (area=gauss2|3, robust's default).
+    for (const char* n : {"area_q", "area_sin"}) {
+        EXPECT_FALSE(has(none, n)) << n;
+        EXPECT_TRUE(has(paramsOf("robust"), n)) << n;
+        EXPECT_TRUE(has(paramsOf("cubature:area=gauss2"), n)) << n;
+    }
     std::string msg = smokeRefusal({{"method", "cubature:triangulation=delaunay,static=2"}, {"params", {"s3"}}});
     EXPECT_NE(msg.find("'s3' has no effect"), std::string::npos) << msg;
 }
