@@ -105,7 +105,7 @@ int chooseDevice(int requested)
     auto devs = listDevices();
     if (devs.empty()) throw Error("no OpenCL device found (install pocl-opencl-icd: scripts/install-deps.sh)");
     int idx = requested;
-    std::string from = "--device";
+    std::string from = "device index";
     if (idx < 0) {
         if (const char* env = std::getenv("LUMIBENCH_DEVICE"); env && *env) {
             char* end = nullptr;

@@ -54,7 +54,14 @@ void runCompare(const CompareArgs& a)
     j["height"] = R.height;
 
     if (!a.png.empty()) {
-        const double k = a.k > 0 ? a.k : tonemap::defaultK(R);
+        double k = a.k;
+        if (!(k > 0)) {
+            try {
+                k = tonemap::defaultK(R);
+            } catch (const InputError& e) {
+                throw InputError(fmt::format("{}; give --k", e.what()));
+            }
+        }
         // The bounds the error picture saturates at; UEB / LEB may be NaN only
         // when every test pixel is non-finite, and then everything is magenta.
         const double over = a.bound > 0 ? a.bound : (std::isfinite(m.ueb) ? m.ueb : 0.0);

@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <iostream>
 
 namespace lb::cli {
@@ -44,12 +45,17 @@ void addRunCommand(CLI::App& app)
     cmd->add_flag("--quiet", o->quiet, "No progress lines on stderr");
     cmd->callback([o, cmd] {
         experiments::Overrides ov;  // range-checked by loadExperiment like the keys they replace
+        ov.name = [](const std::string& key) {  // the flag: "time_res" -> "--time-res"
+            std::string flag = "--" + key;
+            std::replace(flag.begin(), flag.end(), '_', '-');
+            return flag;
+        };
         ov.luminaireDir = o->luminaires;
         if (cmd->count("--res")) ov.res = o->res;
         if (cmd->count("--reps")) ov.reps = o->reps;
         if (cmd->count("--time-res")) ov.timeRes = o->timeRes;
         experiments::RunOptions ro;
-        experiments::parseShard(o->shard, ro.shardK, ro.shardN);
+        experiments::parseShard("--shard", o->shard, ro.shardK, ro.shardN);
         auto e = experiments::loadExperiment(o->exp, ov);
         ro.outDir = o->out;
         ro.device = deviceFlag(*cmd, o->device);

@@ -79,14 +79,16 @@ std::vector<std::string> luminaireFiles(const std::string& dir, const std::strin
 
 using Reader = util::JsonKeys;
 
-// Luminaires: --luminaires DIR takes every file there; otherwise the list
+std::string nameOf(const Overrides& ov, const std::string& key) { return ov.name ? ov.name(key) : overrideName(key); }
+
+// Luminaires: an override directory gives every file there; otherwise the list
 // (or "*") relative to luminaire_dir.
 void readLuminaires(const Reader& r, const Overrides& ov, Experiment& e)
 {
     e.luminaireDir = util::resolveSourceDir(r.has("luminaire_dir") ? r.string("luminaire_dir") : "luminaires");
     if (!ov.luminaireDir.empty()) {
         e.luminaireDir = ov.luminaireDir;
-        e.luminaires = luminaireFiles(ov.luminaireDir, "--luminaires");
+        e.luminaires = luminaireFiles(ov.luminaireDir, nameOf(ov, "luminaires"));
         return;
     }
     auto names =
@@ -140,7 +142,7 @@ void readMethods(const Reader& r, Experiment& e)
 void readSettings(const Reader& r, const Overrides& ov, Experiment& e)
 {
     if (r.has("res")) e.res = static_cast<int>(r.integer("res", 1, kMaxRes));
-    if (ov.res) e.res = util::checkRange("--res", *ov.res, 1, kMaxRes);
+    if (ov.res) e.res = util::checkRange(nameOf(ov, "res"), *ov.res, 1, kMaxRes);
     if (r.has("precision")) {
         e.precisions = r.strings("precision");
         for (const auto& p : e.precisions) try {
@@ -160,9 +162,9 @@ void readSettings(const Reader& r, const Overrides& ov, Experiment& e)
     if (r.has("extent")) e.extent = r.number("extent", 1e-6, kMaxSceneLength);  // 1 um: anything smaller is a typo
     // DESIGN 6: the median of at least 5 timed runs.
     if (r.has("reps")) e.reps = static_cast<int>(r.integer("reps", kMinExperimentReps, ocl::kMaxReps));
-    if (ov.reps) e.reps = util::checkRange("--reps", *ov.reps, kMinExperimentReps, ocl::kMaxReps);
+    if (ov.reps) e.reps = util::checkRange(nameOf(ov, "reps"), *ov.reps, kMinExperimentReps, ocl::kMaxReps);
     if (r.has("time_res")) e.timeRes = static_cast<int>(r.integer("time_res", 0, kMaxRes));
-    if (ov.timeRes) e.timeRes = util::checkRange("--time-res", *ov.timeRes, 0, kMaxRes);
+    if (ov.timeRes) e.timeRes = util::checkRange(nameOf(ov, "time_res"), *ov.timeRes, 0, kMaxRes);
     if (r.has("equal_time_tolerance")) e.equalTimeTolerance = r.number("equal_time_tolerance", 0.001, 10);
     if (r.has("equal_time_rounds"))
         e.equalTimeRounds = static_cast<int>(r.integer("equal_time_rounds", kMinExperimentReps, ocl::kMaxReps));
@@ -239,7 +241,9 @@ std::vector<SceneId> scenes(const Experiment& e)
 
 bool inShard(const SceneId& s, int k, int n) { return static_cast<int>(s.index % n) == k - 1; }
 
-void parseShard(const std::string& text, int& k, int& n)
+std::string overrideName(const std::string& key) { return fmt::format("override of key \"{}\"", key); }
+
+void parseShard(const std::string& name, const std::string& text, int& k, int& n)
 {
     auto sl = text.find('/');
     try {
@@ -249,9 +253,9 @@ void parseShard(const std::string& text, int& k, int& n)
         n = std::stoi(text.substr(sl + 1), &b);
         if (a != sl || b != text.size() - sl - 1) throw std::invalid_argument("");
     } catch (const std::exception&) {
-        throw InputError(fmt::format("--shard: expected K/N (e.g. 2/4), got '{}'", text));
+        throw InputError(fmt::format("{}: expected K/N (e.g. 2/4), got '{}'", name, text));
     }
-    if (n < 1 || k < 1 || k > n) throw InputError(fmt::format("--shard: expected 1 <= K <= N, got '{}'", text));
+    if (n < 1 || k < 1 || k > n) throw InputError(fmt::format("{}: expected 1 <= K <= N, got '{}'", name, text));
 }
 
 }  // namespace lb::experiments

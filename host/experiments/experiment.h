@@ -30,6 +30,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -66,14 +67,20 @@ struct Experiment {
 // DESIGN 6: every time is the median of at least 5 timed runs.
 constexpr int kMinExperimentReps = 5;
 
-// Command-line overrides applied after reading the file (range-checked like
-// the keys they replace; unset = the file's value).
+// Overrides applied after reading the file (range-checked like the keys they
+// replace; unset = the file's value).
 struct Overrides {
-    std::string luminaireDir;  // --luminaires DIR: every .ldt/.ies file in DIR
-    std::optional<int> res;  // --res N
-    std::optional<int> reps;  // --reps K
-    std::optional<int> timeRes;  // --time-res N
+    std::string luminaireDir;  // every .ldt/.ies file in this directory replaces "luminaires"
+    std::optional<int> res;  // replaces "res"
+    std::optional<int> reps;  // replaces "reps"
+    std::optional<int> timeRes;  // replaces "time_res"
+    // How an error names an override, given the key it replaces ("luminaires",
+    // "res", "reps", "time_res"); unset: overrideName(key). A caller names its
+    // own settings here (the CLI its flags).
+    std::function<std::string(const std::string& key)> name;
 };
+// "override of key \"res\"".
+std::string overrideName(const std::string& key);
 
 // Reads and checks an experiment file. Throws lb::InputError naming the file
 // and the key for anything missing, mistyped or out of range; method SPECs are
@@ -103,7 +110,8 @@ std::vector<SceneId> scenes(const Experiment& e);
 // Shard K of N (1-based): the scenes with index % N == K - 1. A whole scene
 // (its reference, methods and equal-time partners) stays on one shard.
 bool inShard(const SceneId& s, int k, int n);
-// Parses "K/N" (1 <= K <= N); InputError otherwise.
-void parseShard(const std::string& text, int& k, int& n);
+// Parses "K/N" (1 <= K <= N); otherwise an InputError naming `name` (the
+// setting the text came from).
+void parseShard(const std::string& name, const std::string& text, int& k, int& n);
 
 }  // namespace lb::experiments

@@ -240,7 +240,7 @@ double albedo(double alpha, double theta, int normPanels)
 
 Table fit(const FitOptions& o, void (*progress)(const Table&, int, int, void*), void* user)
 {
-    if (o.size < 2 || o.size > 1024) throw InputError(fmt::format("ltc fit: --size {} (expected 2..1024)", o.size));
+    if (o.size < 2 || o.size > 1024) throw InputError(fmt::format("ltc fit: table size {} (expected 2..1024)", o.size));
     if (o.samples < 4 || o.normPanels < 4) throw InputError("ltc fit: sample grids need at least 4 points per side");
     Table t;
     t.options = o;

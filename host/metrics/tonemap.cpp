@@ -25,9 +25,8 @@ double defaultK(const Image& reference)
     for (double v : reference.px) sum += v;
     const double mean = sum / static_cast<double>(reference.px.size());
     if (!(mean > 0) || !std::isfinite(mean))
-        throw InputError(fmt::format("cannot choose the tone-mapping scale k = 1/mean(reference): the mean is {}; "
-                                     "give --k",
-                                     mean));
+        throw InputError(
+            fmt::format("cannot choose the tone-mapping scale k = 1/mean(reference): the mean is {}", mean));
     return 1.0 / mean;
 }
 

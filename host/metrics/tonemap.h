@@ -44,7 +44,7 @@ uint8_t toByte(double v);
 
 // Default k of a figure: 1 / mean(reference), so that the mean irradiance of
 // the reference shows as grey 0.5. Throws lb::InputError when the reference
-// mean is not positive (a black reference needs an explicit --k).
+// mean is not positive or not finite (a black reference needs an explicit k).
 double defaultK(const Image& reference);
 
 // Grey picture of E tone mapped with k; non-finite pixels in kNonFinite.

@@ -137,16 +137,17 @@ Table synth(const std::string& kind, const SynthParams& p)
     // Up to 1e9 lm (real luminaires: < 1e6 lm), so that the table's candela stay
     // far below photometry::kMaxCandela, which the readers enforce.
     if (!(p.flux > 0 && p.flux <= 1e9))
-        throw InputError(fmt::format("luminaire synth: expected --flux in (0, 1e9] lm, got {}", p.flux));
+        throw InputError(fmt::format("luminaire synth: expected flux in (0, 1e9] lm, got {}", p.flux));
     if (!(p.n >= 0 && p.n <= 10000))
-        throw InputError(fmt::format("luminaire synth: expected --n in [0, 10000], got {}", p.n));
+        throw InputError(fmt::format("luminaire synth: expected the exponent n in [0, 10000], got {}", p.n));
     const Kind& k = it->second;
     Table t;
     double n = p.n;
     auto shape = k.shape;
     if (k.exact) {
         if (!(p.gammaStep > 0 && p.gammaStep <= 10 && std::abs(90 / p.gammaStep - std::round(90 / p.gammaStep)) < 1e-9))
-            throw InputError(fmt::format("luminaire synth: expected --gamma-step dividing 90, got {}", p.gammaStep));
+            throw InputError(
+                fmt::format("luminaire synth: expected a gamma step dividing 90 degrees, got {}", p.gammaStep));
         // I0 from the closed-form flux: pi I0 (Lambert), 2 pi I0 / (n + 1) (Phong).
         double i0 = kind == "lambert" ? p.flux / kPi : p.flux * (n + 1) / (2 * kPi);
         int ng = static_cast<int>(std::lround(180 / p.gammaStep)) + 1;

@@ -98,14 +98,27 @@ TEST(ExperimentKeys, AreRangeChecked)
     const std::string rot = f + ": key \"rotations\": expected radians in [0, 2pi] as a number or C*pi/D";
     EXPECT_EQ(err("rotations", json::array({"pi/-2"})).substr(0, rot.size()), rot);
     EXPECT_EQ(err("luminaires", "*"), "(no error)");  // the one bare string documented
+    // An override is named by the key it replaces, or as its caller names it
+    // (the CLI: by its flag, tests/cli/test_flags.cpp).
     experiments::Overrides ov;
     ov.reps = 0;
     EXPECT_EQ(inputErrorOf([&] { experiments::loadExperiment(writeJson(d / "e.json", tiny(d)), ov); }),
-              "--reps: expected an integer in [5, 1000], got 0");
+              "override of key \"reps\": expected an integer in [5, 1000], got 0");
+    ov = {};
+    ov.timeRes = -1;
+    EXPECT_EQ(inputErrorOf([&] { experiments::loadExperiment(writeJson(d / "e.json", tiny(d)), ov); }),
+              "override of key \"time_res\": expected an integer in [0, 16384], got -1");
+    ov = {};
+    ov.luminaireDir = d.string() + "/none";
+    EXPECT_EQ(inputErrorOf([&] {
+                  experiments::loadExperiment(writeJson(d / "e.json", tiny(d)), ov);
+              }).rfind("override of key \"luminaires\": ", 0),
+              0u);
     ov = {};
     ov.res = 0;
+    ov.name = [](const std::string& key) { return "setting " + key; };
     EXPECT_EQ(inputErrorOf([&] { experiments::loadExperiment(writeJson(d / "e.json", tiny(d)), ov); }),
-              "--res: expected an integer in [1, 16384], got 0");
+              "setting res: expected an integer in [1, 16384], got 0");
 }
 
 // Before: a rerun after changing the luminaire's content (same name), the

@@ -113,11 +113,17 @@ TEST(Experiment, ShardsPartitionTheScenes)
         EXPECT_EQ(std::set<size_t>(seen.begin(), seen.end()).size(), all.size());
     }
     int k = 0, n = 0;
-    experiments::parseShard("2/4", k, n);
+    experiments::parseShard("shard", "2/4", k, n);
     EXPECT_EQ(k, 2);
     EXPECT_EQ(n, 4);
     for (const char* bad : {"0/4", "5/4", "2", "a/b", "2/4x", "1/0"})
-        EXPECT_THROW(experiments::parseShard(bad, k, n), InputError) << bad;
+        EXPECT_THROW(experiments::parseShard("shard", bad, k, n), InputError) << bad;
+    try {
+        experiments::parseShard("the shard", "2", k, n);
+        ADD_FAILURE() << "2 accepted";
+    } catch (const InputError& err) {  // named as the caller names the setting
+        EXPECT_STREQ(err.what(), "the shard: expected K/N (e.g. 2/4), got '2'");
+    }
     fs::remove_all(d);
 }
 
