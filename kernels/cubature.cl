@@ -121,16 +121,19 @@ CUB_KERNEL
     float8 hc = lb_cub_rect_shift_x8(on, lb_plane_distance_x8(P, (float8)(0, 1, 2, 3, 4, 5, 6, 7) + (float)col0, row), tun.plane_eps);
     float8 v0c = ov, lc = (float8)(P[LB_P_L]);
     LB_CUB_RECT_CLIP_CALL(_x8);
+    /* the pixels as the blends see the light: at their own height (no plane shift) */
+    lb_rect_view_x8 vw = lb_rect_view_at_x8(on, au, av, an, R(1) / (P[LB_P_W] * P[LB_P_L]));
 #ifdef LB_CUB_AREA
     /* the area form's weight; where every lane takes the area form alone the
      * cubature is not evaluated (a far-field row costs only the area rule) */
-    float8 ta = lb_area_weight_x8(ou, v0c, on, P[LB_P_W], lc, tun.area_q, tun.area_sin);
+    lb_rect_span_x8 seen = lb_rect_span_at_x8(ou, v0c, P[LB_P_W], lc);
+    float8 ta = lb_area_weight_x8(seen, on, tun.area_q, tun.area_sin);
     float8 e = (float8)(0.0f);
     nt = (int8)(0);
     nf = (int8)(0);
     if (any(ta < 1.0f))
         e = LB_CUB_RECT_CALL(_x8, nt, nf);
-    e = lb_area_blend_x8(lum, e, ta, ou, v0c, on, P[LB_P_W], lc, au, av, an, R(1) / (P[LB_P_W] * P[LB_P_L]));
+    e = lb_area_blend_x8(lum, e, ta, seen, vw);
     nt = ta >= 1.0f ? 0 : nt;
     nf = ta >= 1.0f ? 0 : nf;
 #else
@@ -138,7 +141,8 @@ CUB_KERNEL
 #endif
 #ifdef LB_CUB_BLEND
     float8 t;
-    e = lb_cub_rect_blend_x8(lum, e, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an, tun.blend_dist, &t);
+    e = lb_cub_rect_blend_x8(lum, e, lb_rect_span_at_x8(ou, ov, P[LB_P_W], (float8)(P[LB_P_L])), vw, tun.blend_dist,
+                             &t);
     nt = t >= 1.0f ? 0 : nt; /* no cubature where the grid MC alone counts */
     nf = t >= 1.0f ? 0 : nf;
 #endif
@@ -172,19 +176,21 @@ CUB_KERNEL
     real hc = lb_cub_rect_shift(on, lb_plane_distance(P, (real)col, row), tun.plane_eps);
     real v0c = ov, lc = P[LB_P_L];
     LB_CUB_RECT_CLIP_CALL();
+    lb_rect_view vw = lb_rect_view_at(on, au, av, an, R(1) / (P[LB_P_W] * P[LB_P_L])); /* as the 8-lane form */
 #ifdef LB_CUB_AREA
-    real ta = lb_area_weight(ou, v0c, on, P[LB_P_W], lc, tun.area_q, tun.area_sin);
+    lb_rect_span seen = lb_rect_span_at(ou, v0c, P[LB_P_W], lc);
+    real ta = lb_area_weight(seen, on, tun.area_q, tun.area_sin);
     real e = R(0);
     nt = nf = 0;
     if (ta < R(1))
         e = LB_CUB_RECT_CALL(, nt, nf);
-    e = lb_area_blend(lum, e, ta, ou, v0c, on, P[LB_P_W], lc, au, av, an, R(1) / (P[LB_P_W] * P[LB_P_L]));
+    e = lb_area_blend(lum, e, ta, seen, vw);
 #else
     real e = LB_CUB_RECT_CALL(, nt, nf);
 #endif
 #ifdef LB_CUB_BLEND
     real t;
-    e = lb_cub_rect_blend(lum, e, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an, tun.blend_dist, &t);
+    e = lb_cub_rect_blend(lum, e, lb_rect_span_at(ou, ov, P[LB_P_W], P[LB_P_L]), vw, tun.blend_dist, &t);
     nt = t >= R(1) ? 0 : nt;
     nf = t >= R(1) ? 0 : nf;
 #endif
@@ -199,14 +205,11 @@ CUB_KERNEL
 CUB_KERNEL
 {
     CUB_PROLOGUE
-    int col = get_global_id(0);
-    int row = row0 + (int)get_global_id(1);
-    int n = (int)P[LB_P_RES];
-    if (col >= n || row >= n)
+    int col, row, px;
+    lb_light L;
+    real3 x, nx;
+    if (!lb_work_item_receiver_cell(P, row0, &col, &row, &px, &L, &x, &nx))
         return;
-    lb_light L = lb_scene_light(P);
-    real3 x = lb_pixel_position(P, row, col);
-    real3 nx = lb_p3(P, LB_P_NX);
     int nt = 0, nf = 0;
     real t = lb_blend_weight(length(x - L.c), tun.blend_dist);
     real e = R(0);
@@ -227,17 +230,17 @@ CUB_KERNEL
             real hc = lb_cub_rect_shift(on, lb_plane_distance(P, (real)col, row), tun.plane_eps);
             lb_cub_rect_clip(ov, hc, P[LB_P_L], av, an, tun.horizon_eps, &v0c, &lc);
         }
-        real ta = lb_area_weight(ou, v0c, on, P[LB_P_W], lc, tun.area_q, tun.area_sin);
-        e = lb_area_blend(lum, e, ta, ou, v0c, on, P[LB_P_W], lc, au, av, an, R(1) / (P[LB_P_W] * P[LB_P_L]));
+        lb_rect_span seen = lb_rect_span_at(ou, v0c, P[LB_P_W], lc);
+        real ta = lb_area_weight(seen, on, tun.area_q, tun.area_sin);
+        e = lb_area_blend(lum, e, ta, seen, lb_rect_view_at(on, au, av, an, R(1) / (P[LB_P_W] * P[LB_P_L])));
         nt = ta >= R(1) ? 0 : nt;
         nf = ta >= R(1) ? 0 : nf;
     }
 #endif
-    int i = row * n + col;
-    out[i] = e;
+    out[px] = e;
     if (want_stats) {
-        stats[2 * i] = nt;
-        stats[2 * i + 1] = nf;
+        stats[2 * px] = nt;
+        stats[2 * px + 1] = nf;
     }
 }
 #endif

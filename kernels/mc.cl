@@ -45,7 +45,8 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     int col = get_global_id(0);
     int row = row0 + (int)get_global_id(1);
     int res = (int)P[LB_P_RES];
-    /* No per-pixel early return: every work-item of a group reaches the
+    /* No per-pixel early return (so not the shared prologue of the other
+     * kernels, lb_work_item_receiver): every work-item of a group reaches the
      * barrier below equally often. */
     bool inside = col < res && row < res;
     /* All scalar (common/scene_lanes.inc): float3 values in the loop body

@@ -75,19 +75,32 @@ LB_FN real3 lb_pixel_position(__global const real* P, int row, int col)
 
 #ifdef __OPENCL_C_VERSION__
 /* The one-pixel kernels' prologue: the work-item's pixel (col, row) of rows
- * row0 .. of the res x res image as its index px = row * res + col in the
+ * row0 .. of the res x res image, its index px = row * res + col in the
  * output image, the scene's light, the pixel's receiver point x and its
- * normal nx; 0 when the work-item has no pixel (a partial last group). */
-LB_FN int lb_work_item_receiver(__global const real* P, int row0, int* px, lb_light* L, real3* x, real3* nx)
+ * normal nx; 0 when the work-item has no pixel (a partial last group).
+ * lb_work_item_receiver drops (col, row); a kernel that also needs the
+ * pixel's offsets in the light's frame (lb_corner_offset) keeps them. The
+ * one kernel that cannot return early (mc.cl: a barrier per sample) has its
+ * own. */
+LB_FN int lb_work_item_receiver_cell(__global const real* P, int row0, int* col, int* row, int* px, lb_light* L,
+                                     real3* x, real3* nx)
 {
-    int col = (int)get_global_id(0), row = row0 + (int)get_global_id(1), res = (int)P[LB_P_RES];
-    if (col >= res || row >= res)
+    *col = (int)get_global_id(0);
+    *row = row0 + (int)get_global_id(1);
+    int res = (int)P[LB_P_RES];
+    if (*col >= res || *row >= res)
         return 0;
-    *px = row * res + col;
+    *px = *row * res + *col;
     *L = lb_scene_light(P);
-    *x = lb_pixel_position(P, row, col);
+    *x = lb_pixel_position(P, *row, *col);
     *nx = lb_p3(P, LB_P_NX);
     return 1;
+}
+
+LB_FN int lb_work_item_receiver(__global const real* P, int row0, int* px, lb_light* L, real3* x, real3* nx)
+{
+    int col, row;
+    return lb_work_item_receiver_cell(P, row0, &col, &row, px, L, x, nx);
 }
 #endif
 
