@@ -269,6 +269,28 @@ Image Prepared::image()
     return img;
 }
 
+namespace {
+
+// An expensive method's one run (no warm-up: minutes at large sizes, and
+// deterministic) in bands of `bandRows` rows (0: all), progress between them;
+// returns the sum of the bands' device times (ms).
+double runInBands(Prepared& prep, int bandRows, const std::string& name, int res, bool progress)
+{
+    int band = bandRows > 0 ? bandRows : res;
+    double total = 0;
+    for (int r0 = 0; r0 < res; r0 += band) {
+        int rows = std::min(band, res - r0);
+        total += ocl::Runtime::eventMs(prep.launch(r0, rows)) + prep.takePassMs();
+        if (progress)
+            std::cerr << fmt::format("\r{}: {:3d}% ({:.1f} s)", name, 100 * (r0 + rows) / res, total / 1e3)
+                      << std::flush;
+    }
+    if (progress) std::cerr << '\n';
+    return total;
+}
+
+}  // namespace
+
 RenderResult render(ocl::Runtime& rt, const photometry::Table& table, const Scene& scene, const MethodSpec& spec,
                     Precision precision, const RenderOptions& opt)
 {
@@ -291,20 +313,7 @@ RenderResult render(ocl::Runtime& rt, const photometry::Table& table, const Scen
     std::string timeDefines;  // the timed kernel's options where they differ from the image's
     nlohmann::json stageMs;  // multi-pass methods: the timed launches' stages
     if (fam.expensive) {
-        // One run (no warm-up: minutes at large sizes, and deterministic) in
-        // bands of rows, progress between them; the time is the sum of the
-        // bands' device times.
-        int band = fam.bandRows > 0 ? fam.bandRows : res;
-        double total = 0;
-        for (int r0 = 0; r0 < res; r0 += band) {
-            int rows = std::min(band, res - r0);
-            total += ocl::Runtime::eventMs(prep.launch(r0, rows)) + prep.takePassMs();
-            if (opt.progress)
-                std::cerr << fmt::format("\r{}: {:3d}% ({:.1f} s)", spec.name, 100 * (r0 + rows) / res, total / 1e3)
-                          << std::flush;
-        }
-        if (opt.progress) std::cerr << '\n';
-        result.timing = ocl::summarize({total});
+        result.timing = ocl::summarize({runInBands(prep, fam.bandRows, spec.name, res, opt.progress)});
         result.timeRes = res;
     } else if (opt.timeRes > 0 && opt.timeRes != res) {
         // Timed at its own resolution (DESIGN 6), so that a small error image
