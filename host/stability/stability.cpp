@@ -382,28 +382,28 @@ struct CaseRun {
                 dbl = row.image;
             else if (!dbl.px.empty())
                 row.fdDiff = maxDiffRel(row.image, dbl, cr.refMax);
-            check(row, point, p == methods::Precision::Double);
+            checkRow(c, s, point, p == methods::Precision::Double, row);
             cr.rows.push_back(std::move(row));
-        }
-    }
-
-    void check(Row& row, const Image& point, bool dbl) const
-    {
-        if (row.err.nonfinite > 0) row.failures.push_back(fmt::format("{} non-finite pixels", row.err.nonfinite));
-        if (c.expect == Expect::Zero && row.maxAbs != 0)
-            row.failures.push_back(fmt::format("not exactly zero: max {} lx", row.maxAbs));
-        if (!(row.fdDiff <= c.maxFd))
-            row.failures.push_back(fmt::format("float vs double {:.3g} > {:.3g}", row.fdDiff, c.maxFd));
-        if (c.expect == Expect::PointLimit) {
-            row.pointDiff = maxDiffRel(row.image, point, maxAbs(point));
-            double b = pointBound(s, dbl);
-            if (!(row.pointDiff <= b))
-                row.failures.push_back(fmt::format("point limit {:.3g} > bound {:.3g}", row.pointDiff, b));
         }
     }
 };
 
 }  // namespace
+
+void checkRow(const Case& c, const Scene& s, const Image& point, bool dbl, Row& row)
+{
+    if (row.err.nonfinite > 0) row.failures.push_back(fmt::format("{} non-finite pixels", row.err.nonfinite));
+    if (c.expect == Expect::Zero && row.maxAbs != 0)
+        row.failures.push_back(fmt::format("not exactly zero: max {} lx", row.maxAbs));
+    if (!(row.fdDiff <= c.maxFd))
+        row.failures.push_back(fmt::format("float vs double {:.3g} > {:.3g}", row.fdDiff, c.maxFd));
+    if (c.expect == Expect::PointLimit) {
+        row.pointDiff = maxDiffRel(row.image, point, maxAbs(point));
+        double b = pointBound(s, dbl);
+        if (!(row.pointDiff <= b))
+            row.failures.push_back(fmt::format("point limit {:.3g} > bound {:.3g}", row.pointDiff, b));
+    }
+}
 
 std::vector<CaseResult> run(ocl::Runtime& rt, const Options& opt)
 {

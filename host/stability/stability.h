@@ -115,6 +115,12 @@ std::vector<CaseResult> run(ocl::Runtime& rt, const Options& opt);
 Scene sceneOf(const Case& c, int res);
 // Far-field bound on max|A - P| / max(P), P the point light (derivation in stability.cpp).
 double pointBound(const Scene& s, bool dbl);
+// The checks of one row of case c on its scene s, failures appended to
+// row.failures: non-finite pixels; a Zero case not exactly 0 (row.maxAbs);
+// float vs double (row.fdDiff, NaN included) over c.maxFd; a PointLimit case
+// farther than pointBound from `point` (the point light's image; sets
+// row.pointDiff). `dbl`: the row is the double one.
+void checkRow(const Case& c, const Scene& s, const Image& point, bool dbl, Row& row);
 
 nlohmann::json toJson(const std::vector<CaseResult>& results, const ocl::Runtime& rt, const Options& opt);
 // DIR/stability.json, DIR/report.md and DIR/png/<case>_{ref,test,err}.png of the

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -208,6 +209,46 @@ TEST(Stability, PointBoundValues)
     double a = std::sqrt(0.5), d = 1000.5;
     EXPECT_NEAR(stability::pointBound(s, true), 4 * a / d + 32 * 0x1p-53 * d / a, 1e-15);
     EXPECT_NEAR(stability::pointBound(s, false), 4 * a / d + 32 * 0x1p-24 * d / a, 1e-15);
+}
+
+// Each check of a row fires on a row that breaks it, and only then: a far
+// case (PointLimit) whose image is the point light's scaled by 1 + 2 bound
+// fails the point limit, by 1 + bound / 2 passes; a Zero case fails on any
+// non-zero pixel; NaN float-vs-double and non-finite pixels fail.
+TEST(Stability, RowChecksFireOnBrokenRows)
+{
+    const auto& cat = stability::catalogue();
+    auto far =
+        std::find_if(cat.begin(), cat.end(), [](const auto& c) { return c.expect == stability::Expect::PointLimit; });
+    ASSERT_NE(far, cat.end());
+    const Scene s = stability::sceneOf(*far, 4);
+    const double b = stability::pointBound(s, false);
+    const Image point(4, 4, 2.0);
+    auto failuresOf = [&](const stability::Case& c, double scale, auto&& edit) {
+        stability::Row row;
+        row.image = Image(4, 4, 2.0 * scale);
+        row.maxAbs = 2.0 * scale;
+        edit(row);
+        stability::checkRow(c, s, point, false, row);
+        return row.failures;
+    };
+    auto none = [](stability::Row&) {};
+    EXPECT_TRUE(failuresOf(*far, 1 + b / 2, none).empty());
+    auto f = failuresOf(*far, 1 + 2 * b, none);
+    ASSERT_EQ(f.size(), 1u);
+    EXPECT_EQ(f[0].rfind("point limit", 0), 0u) << f[0];
+    f = failuresOf(*far, 1, [](stability::Row& r) { r.fdDiff = NAN; });
+    ASSERT_EQ(f.size(), 1u);
+    EXPECT_EQ(f[0].rfind("float vs double", 0), 0u) << f[0];
+    f = failuresOf(*far, 1, [](stability::Row& r) { r.err.nonfinite = 2; });
+    ASSERT_EQ(f.size(), 1u);
+    EXPECT_EQ(f[0], "2 non-finite pixels");
+    stability::Case zero = *far;
+    zero.expect = stability::Expect::Zero;
+    EXPECT_TRUE(failuresOf(zero, 0, none).empty());
+    f = failuresOf(zero, 1e-30, none);
+    ASSERT_EQ(f.size(), 1u);
+    EXPECT_EQ(f[0].rfind("not exactly zero", 0), 0u) << f[0];
 }
 
 }  // namespace
