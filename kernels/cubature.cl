@@ -83,16 +83,14 @@
  * barycentre; (e, triangles, flips) of one pixel or eight. */
 /* On the rectangle [ou, ou + W] x [v0c, v0c + lc] at height hc: the light, or
  * with LB_CUB_RECT_CLIP what the horizon leaves of it (lb_cub_rect_clip). */
+/* rect: that rectangle (lb_rect_span), view: the receiver at hc (lb_rect_view). */
 #if defined(LB_CUB_RECT_DELALL)
-#define LB_CUB_RECT_CALL(s, nt, nf)                                                                             \
-    lb_cub_rect_delall##s(lum, ou, v0c, hc, P[LB_P_W], lc, R(1) / (P[LB_P_W] * P[LB_P_L]), au, av, an, opt, tun, \
-                          want_stats, &nt, &nf)
+#define LB_CUB_RECT_CALL(s, nt, nf) lb_cub_rect_delall##s(lum, &rect, &view, opt, tun, want_stats, &nt, &nf)
 #elif defined(LB_CUB_RECT_DEL)
-#define LB_CUB_RECT_CALL(s, nt, nf)                                                                             \
-    lb_cub_rect_del##s(lum, ou, v0c, hc, P[LB_P_W], lc, R(1) / (P[LB_P_W] * P[LB_P_L]), au, av, an, opt, tun, &nt, &nf)
+#define LB_CUB_RECT_CALL(s, nt, nf) lb_cub_rect_del##s(lum, &rect, &view, opt, tun, &nt, &nf)
 #elif defined(LB_CUB_RECT_FAN)
 #define LB_CUB_RECT_CALL(s, nt, nf)                                                                             \
-    lb_cub_rect_fan##s(lum, ou, v0c, hc, P[LB_P_W], lc, R(1) / (P[LB_P_W] * P[LB_P_L]), au, av, an, opt, tun, &nt); \
+    lb_cub_rect_fan##s(lum, &rect, &view, opt, tun, &nt);                                                       \
     nf = 0
 #endif
 #ifdef LB_CUB_RECT_CLIP
@@ -121,19 +119,21 @@ CUB_KERNEL
     float8 hc = lb_cub_rect_shift_x8(on, lb_plane_distance_x8(P, (float8)(0, 1, 2, 3, 4, 5, 6, 7) + (float)col0, row), tun.plane_eps);
     float8 v0c = ov, lc = (float8)(P[LB_P_L]);
     LB_CUB_RECT_CLIP_CALL(_x8);
+    const real inv_area = R(1) / (P[LB_P_W] * P[LB_P_L]);
+    lb_rect_span_x8 rect = lb_rect_span_at_x8(ou, v0c, P[LB_P_W], lc);
+    lb_rect_view_x8 view = lb_rect_view_at_x8(hc, au, av, an, inv_area);
     /* the pixels as the blends see the light: at their own height (no plane shift) */
-    lb_rect_view_x8 vw = lb_rect_view_at_x8(on, au, av, an, R(1) / (P[LB_P_W] * P[LB_P_L]));
+    lb_rect_view_x8 vw = lb_rect_view_at_x8(on, au, av, an, inv_area);
 #ifdef LB_CUB_AREA
     /* the area form's weight; where every lane takes the area form alone the
      * cubature is not evaluated (a far-field row costs only the area rule) */
-    lb_rect_span_x8 seen = lb_rect_span_at_x8(ou, v0c, P[LB_P_W], lc);
-    float8 ta = lb_area_weight_x8(seen, on, tun.area_q, tun.area_sin);
+    float8 ta = lb_area_weight_x8(rect, on, tun.area_q, tun.area_sin);
     float8 e = (float8)(0.0f);
     nt = (int8)(0);
     nf = (int8)(0);
     if (any(ta < 1.0f))
         e = LB_CUB_RECT_CALL(_x8, nt, nf);
-    e = lb_area_blend_x8(lum, e, ta, seen, vw);
+    e = lb_area_blend_x8(lum, e, ta, rect, vw);
     nt = ta >= 1.0f ? 0 : nt;
     nf = ta >= 1.0f ? 0 : nf;
 #else
@@ -176,15 +176,17 @@ CUB_KERNEL
     real hc = lb_cub_rect_shift(on, lb_plane_distance(P, (real)col, row), tun.plane_eps);
     real v0c = ov, lc = P[LB_P_L];
     LB_CUB_RECT_CLIP_CALL();
-    lb_rect_view vw = lb_rect_view_at(on, au, av, an, R(1) / (P[LB_P_W] * P[LB_P_L])); /* as the 8-lane form */
+    const real inv_area = R(1) / (P[LB_P_W] * P[LB_P_L]); /* as the 8-lane form */
+    lb_rect_span rect = lb_rect_span_at(ou, v0c, P[LB_P_W], lc);
+    lb_rect_view view = lb_rect_view_at(hc, au, av, an, inv_area);
+    lb_rect_view vw = lb_rect_view_at(on, au, av, an, inv_area);
 #ifdef LB_CUB_AREA
-    lb_rect_span seen = lb_rect_span_at(ou, v0c, P[LB_P_W], lc);
-    real ta = lb_area_weight(seen, on, tun.area_q, tun.area_sin);
+    real ta = lb_area_weight(rect, on, tun.area_q, tun.area_sin);
     real e = R(0);
     nt = nf = 0;
     if (ta < R(1))
         e = LB_CUB_RECT_CALL(, nt, nf);
-    e = lb_area_blend(lum, e, ta, seen, vw);
+    e = lb_area_blend(lum, e, ta, rect, vw);
 #else
     real e = LB_CUB_RECT_CALL(, nt, nf);
 #endif
