@@ -61,8 +61,7 @@ struct Bench {
         pa.setLocal(opt.lx, opt.ly);
         pb.setLocal(opt.lx, opt.ly);
         const int rounds = std::max(opt.reps, 11);
-        auto t =
-            rt.timeInterleaved({[&] { return pa.launch(0, sa.res); }, [&] { return pb.launch(0, sb.res); }}, rounds, 1);
+        auto t = rt.timeInterleaved({[&] { return pa.launchMs(); }, [&] { return pb.launchMs(); }}, rounds, 1);
         std::vector<double> q;
         for (size_t i = 0; i < t[0].samples_ms.size(); ++i) q.push_back(t[0].samples_ms[i] / t[1].samples_ms[i]);
         return {ocl::summarize(q).median_ms, ocl::summarize(t[0].samples_ms).median_ms,

@@ -88,11 +88,13 @@ public:
 
     // One warm-up, then `reps` timed launches (median, min, max kept).
     Timing time(const std::function<cl::Event()>& launch, int reps = 5, int warmup = 1);
-    // Several kernels timed in alternation: `warmup` launches of each, then
-    // `reps` rounds launching each in turn. Timing::samples_ms keeps the
-    // rounds in order, so ratios can be taken round by round and a shared
-    // machine's drift hits every kernel alike.
-    std::vector<Timing> timeInterleaved(const std::vector<std::function<cl::Event()>>& launches, int reps = 5,
+    // Several launches timed in alternation: `warmup` of each, then `reps`
+    // rounds launching each in turn; each launch returns its own device time
+    // in ms (a multi-pass method: its passes plus its render kernel, see
+    // methods::Prepared::launchMs). Timing::samples_ms keeps the rounds in
+    // order, so ratios can be taken round by round and a shared machine's
+    // drift hits every launch alike.
+    std::vector<Timing> timeInterleaved(const std::vector<std::function<double()>>& launches, int reps = 5,
                                         int warmup = 1);
 
 private:

@@ -271,8 +271,9 @@ struct EqualTimeSearch {
     // The method and each of mcs launched in alternation (DESIGN 6: ratios within one run).
     std::vector<ocl::Timing> pairedRounds(const std::vector<methods::Prepared*>& mcs)
     {
-        std::vector<std::function<cl::Event()>> launches = {[&] { return pm.launch(0, ts.res); }};
-        for (methods::Prepared* p : mcs) launches.push_back([p, this] { return p->launch(0, ts.res); });
+        // whole frames: a multi-pass method's passes count as in its cell
+        std::vector<std::function<double()>> launches = {[&] { return pm.launchMs(); }};
+        for (methods::Prepared* p : mcs) launches.push_back([p] { return p->launchMs(); });
         return sr.rt.timeInterleaved(launches, sr.e.equalTimeRounds, 1);
     }
     // The median of the rounds' ratios of MC k (1-based in tt) over the method.

@@ -83,7 +83,7 @@ nlohmann::json runSequence(ocl::Runtime& rt, const photometry::Table& table, con
         for (size_t m = 0; m < parsed.size(); ++m) {
             auto& prep = *preps[m];
             if (f > 0) prep.setScene(sc);
-            double ms = ocl::Runtime::eventMs(prep.launch(0, sc.res)) + prep.takePassMs();
+            double ms = prep.launchMs();
             Image img = prep.image();
             metrics::Metrics mt = metrics::compare(ref, img);
             nlohmann::json j = mt;

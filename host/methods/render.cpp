@@ -202,6 +202,12 @@ cl::Event Prepared::launch(int row0, int rows)
     return ctx_->rt.launch2D(ctx_->kernel, cols, rows, lx_, ly_);
 }
 
+double Prepared::launchMs()
+{
+    const double ms = ocl::Runtime::eventMs(launch(0, scene_.res));
+    return ms + takePassMs();
+}
+
 ocl::Timing Prepared::time(int reps)
 {
     statsSwitch(false);

@@ -34,6 +34,10 @@ public:
     // Rows row0 .. row0 + rows of the image (statistics as last switched),
     // work-groups of lx x ly (setLocal; default 8 x 8).
     cl::Event launch(int row0, int rows);
+    // One launch of the whole image and its device time in ms: the render
+    // kernel plus, for multi-pass methods, the pre-passes it ran (RSM,
+    // clustering). What a frame costs; the paired equal-time rounds use it.
+    double launchMs();
     void setLocal(size_t lx, size_t ly) { lx_ = lx, ly_ = ly; }
     // One warm-up, then `reps` launches of the whole image with statistics
     // off: exactly the kernel a renderer runs (profiling-event times).
