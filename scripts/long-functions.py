@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
 """List C++ functions (and lambdas) longer than LIMIT lines, longest first:
-    scripts/long-functions.py LIMIT FILE...   e.g. 80 host/*/*.cpp host/*/*.h
+    scripts/long-functions.py [--check] LIMIT FILE...   e.g. 80 host/*/*.cpp host/*/*.h
 A brace counter over comment- and string-stripped source: a '{' opens a
 function body when the code before it ends with ')' plus optional qualifiers
 and its enclosing scope is a namespace, a class or the file; a lambda when ']'
 or '](...)' comes before it, at any depth. Lines are counted from the body's
-'{' to its '}'. Exit code 0 always (a report, not a check)."""
+'{' to its '}'. Exit code 0, or with --check 1 when any function is longer
+(CI runs it so on host/: scripts/run-tests.sh)."""
 import re, sys, pathlib
 
 def strip(src):
@@ -33,7 +34,10 @@ def strip(src):
 
 QUAL = r'(\s*(const|override|noexcept|final|mutable|->\s*[\w:<>,\s\*&]+))*\s*$'
 def main():
-    limit = int(sys.argv[1]); files = sys.argv[2:]
+    args = sys.argv[1:]
+    check = bool(args) and args[0] == '--check'
+    args = args[1:] if check else args
+    limit = int(args[0]); files = args[1:]
     rows = []
     for f in files:
         s = strip(pathlib.Path(f).read_text())
@@ -81,4 +85,7 @@ def main():
                         rows.append((n, f, start, kind, name))
     for n, f, line, kind, name in sorted(rows, reverse=True):
         print(f'{n:4d}  {f}:{line}  {kind} {name}')
+    if check and rows:
+        print(f'long-functions: {len(rows)} function(s) over {limit} lines; split them', file=sys.stderr)
+        sys.exit(1)
 main()

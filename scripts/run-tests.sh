@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
-# Installs the dependencies, checks the C++ formatting (scripts/check-format.sh),
-# builds, and runs the whole test suite on the
-# default OpenCL device (PoCL). Tests that need a device fail rather than skip.
+# Installs the dependencies, checks the C++ formatting (scripts/check-format.sh)
+# and that no host function exceeds 80 lines (scripts/long-functions.py),
+# builds, and runs the whole test suite on the default OpenCL device (PoCL).
+# Tests that need a device fail rather than skip.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 bash scripts/check-format.sh
+python3 scripts/long-functions.py --check 80 $(git ls-files 'host/*.cpp' 'host/*.h')
 bash scripts/build.sh
 export LUMIBENCH_REQUIRE_DEVICE=1
 export POCL_MAX_PTHREAD_COUNT="${POCL_MAX_PTHREAD_COUNT:-$(nproc)}"
