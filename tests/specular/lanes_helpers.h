@@ -1,13 +1,15 @@
 // lanes_helpers.h -- shared by the tests that hold the specular scene's
-// straight-line forms (ltc, mc) to their general kernels: the scene list and
-// the per-pixel relative difference with a floor.
+// straight-line forms (ltc, mc) to their general kernels: the scene list, the
+// per-pixel relative difference with a floor, and the comparison itself.
 #pragma once
 
 #include "methods/render_helpers.h"
+#include "photometry/table.h"
 #include "testutil.h"
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <string>
 #include <vector>
 
@@ -57,6 +59,50 @@ inline std::vector<Scene> straightLineScenes()
     v.push_back(specular(-0.2, 5 * M_PI / 8, 0.25));  // the light crosses the floor: the fan's clip along u
     v.push_back(specular(0.0, M_PI, 0.25));  // the light lying on the floor: the plane shift
     return v;
+}
+
+// Bounds of a straight-line form against its general kernel, per pixel and
+// relative, each with a floor (a fraction of the image's peak): double within
+// `dbl` (floor `dblFloor`); float within twice the general float kernel's own
+// error against double, at least 1e-5 (floor `fltFloor`).
+struct LanesBounds {
+    double dbl, dblFloor, fltFloor;
+};
+
+// Holds `spec` of `family` (the straight-line form: its scene defines must
+// contain `define`) to `spec` with specialize=none on every
+// straightLineScenes() scene, in double and in float at 1 and 8 lanes.
+inline void expectStraightLineEqualsGeneral(ocl::Runtime& rt, const photometry::Table& t, const char* family,
+                                            const std::string& spec, const char* define, LanesBounds b)
+{
+    using methods::Precision;
+    const bool fp64 = rt.fp64();
+    const std::string sep = spec.find(':') == std::string::npos ? ":" : ",";
+    const std::string general = spec + sep + "specialize=none";
+    double worstF = 0, worstD = 0;
+    for (const Scene& s : straightLineScenes()) {
+        const std::string what = spec + " " + s.describe();
+        ASSERT_NE(methods::family(family, SceneKind::Specular)
+                      .sceneDefines(methods::parseSpec(spec, SceneKind::Specular), s, t)
+                      .find(define),
+                  std::string::npos)
+            << what;
+        Image ref = run(rt, t, s, general, fp64 ? Precision::Double : Precision::Float).image;
+        double bound = 1e-5;
+        if (fp64) {
+            Image genF = run(rt, t, s, general, Precision::Float).image;
+            bound = std::max(bound, 2 * worstRel(ref, genF, 1.0, what + " general float", b.fltFloor));
+            Image d = run(rt, t, s, spec, Precision::Double).image;
+            worstD = std::max(worstD, worstRel(ref, d, b.dbl, what + " double", b.dblFloor));
+        }
+        for (const char* lanes : {"lanes=1", "lanes=8"}) {
+            Image f = run(rt, t, s, spec + sep + lanes, Precision::Float).image;
+            worstF = std::max(worstF, worstRel(ref, f, bound, what + " float " + lanes, b.fltFloor));
+        }
+        if (::testing::Test::HasFailure()) return;
+    }
+    std::cout << spec << ": straight-line form against the general kernel: float " << worstF << ", double " << worstD
+              << "\n";
 }
 
 }  // namespace lb::test

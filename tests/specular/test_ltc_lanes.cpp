@@ -34,37 +34,9 @@ using test::worstRel;
 TEST(LtcLanes, StraightLineFormEqualsGeneral)
 {
     LB_REQUIRE_RUNTIME(rt);
-    const bool fp64 = rt->fp64();
     auto t = photometry::synth("batwing");
-    for (const std::string spec : {"ltc:radiance=point", "ltc"}) {
-        const std::string sep = spec.find(':') == std::string::npos ? ":" : ",";
-        const std::string general = spec + sep + "specialize=none";
-        double worstF = 0, worstD = 0;
-        for (const Scene& s : test::straightLineScenes()) {
-            const std::string what = spec + " " + s.describe();
-            ASSERT_NE(methods::family("ltc", SceneKind::Specular)
-                          .sceneDefines(methods::parseSpec(spec, SceneKind::Specular), s, t)
-                          .find("-DLB_LTC_RECT"),
-                      std::string::npos)
-                << what;
-            Precision refP = fp64 ? Precision::Double : Precision::Float;
-            Image ref = test::run(*rt, t, s, general, refP).image;
-            double bound = 1e-5;
-            if (fp64) {
-                Image genF = test::run(*rt, t, s, general, Precision::Float).image;
-                bound = std::max(bound, 2 * worstRel(ref, genF, 1.0, what + " general float", 1e-5));
-                Image d = test::run(*rt, t, s, spec, Precision::Double).image;
-                worstD = std::max(worstD, worstRel(ref, d, 1e-10, what + " double", 1e-4));
-            }
-            for (const char* lanes : {"lanes=1", "lanes=8"}) {
-                Image f = test::run(*rt, t, s, spec + sep + lanes, Precision::Float).image;
-                worstF = std::max(worstF, worstRel(ref, f, bound, what + " float " + lanes, 1e-5));
-            }
-            if (HasFailure()) return;
-        }
-        std::cout << spec << ": straight-line form against the general kernel: float " << worstF << ", double "
-                  << worstD << "\n";
-    }
+    for (const char* spec : {"ltc:radiance=point", "ltc"})
+        test::expectStraightLineEqualsGeneral(*rt, t, "ltc", spec, "-DLB_LTC_RECT", {1e-10, 1e-4, 1e-5});
 }
 
 // The rule: the straight-line form for radiance=point and for the fan (the

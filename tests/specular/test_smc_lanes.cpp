@@ -26,36 +26,9 @@ using test::worstRel;
 TEST(SmcLanes, StraightLineFormEqualsGeneral)
 {
     LB_REQUIRE_RUNTIME(rt);
-    const bool fp64 = rt->fp64();
     auto t = photometry::synth("batwing");
-    for (const std::string spec : {"mc:n=16", "mc:n=7,pattern=halton"}) {
-        const std::string general = spec + ",specialize=none";
-        double worstF = 0, worstD = 0;
-        for (const Scene& s : test::straightLineScenes()) {
-            const std::string what = spec + " " + s.describe();
-            ASSERT_NE(methods::family("mc", SceneKind::Specular)
-                          .sceneDefines(methods::parseSpec(spec, SceneKind::Specular), s, t)
-                          .find("-DLB_SMC_RECT"),
-                      std::string::npos)
-                << what;
-            Precision refP = fp64 ? Precision::Double : Precision::Float;
-            Image ref = test::run(*rt, t, s, general, refP).image;
-            double bound = 1e-5;
-            if (fp64) {
-                Image genF = test::run(*rt, t, s, general, Precision::Float).image;
-                bound = std::max(bound, 2 * worstRel(ref, genF, 1.0, what + " general float", 1e-6));
-                Image d = test::run(*rt, t, s, spec, Precision::Double).image;
-                worstD = std::max(worstD, worstRel(ref, d, 1e-12, what + " double", 1e-6));
-            }
-            for (const char* lanes : {"lanes=1", "lanes=8"}) {
-                Image f = test::run(*rt, t, s, spec + "," + lanes, Precision::Float).image;
-                worstF = std::max(worstF, worstRel(ref, f, bound, what + " float " + lanes, 1e-6));
-            }
-            if (HasFailure()) return;
-        }
-        std::cout << spec << ": straight-line form against the general kernel: float " << worstF << ", double "
-                  << worstD << "\n";
-    }
+    for (const char* spec : {"mc:n=16", "mc:n=7,pattern=halton"})
+        test::expectStraightLineEqualsGeneral(*rt, t, "mc", spec, "-DLB_SMC_RECT", {1e-12, 1e-6, 1e-6});
 }
 
 // The rule: the straight-line form for sampling=light only.
