@@ -13,7 +13,8 @@
  * work with ?:, && and ||), LB_VFN(name), LB_TO_I / LB_TO_V conversions
  * (float -> int truncates, as (int)), LB_GATHER(p, i) = p[i] per lane, and
  * LB_VINTENSITY3(lum, x, y, z) the intensity lookup of the lane type,
- * LB_NLANES the pixels per call and LB_LANE_INDEX their column offsets.
+ * LB_NLANES the pixels per call and LB_LANE_INDEX their column offsets,
+ * LB_ANY(m) whether any lane's m holds (a branch uniform over the lanes).
  * lanes_end.h undefines them again. */
 #define LB_V real
 #define LB_I int
@@ -24,4 +25,5 @@
 #define LB_GATHER(p, i) ((real)(p)[(i)])
 #define LB_VINTENSITY3(lum, x, y, z) LB_INTENSITY3((lum), (x), (y), (z))
 #define LB_NLANES 1
+#define LB_ANY(m) (m)
 #define LB_LANE_INDEX R(0)

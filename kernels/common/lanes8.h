@@ -12,4 +12,5 @@
               (p)[(i).s7]))
 #define LB_VINTENSITY3(lum, x, y, z) lb_lut_intensity3_x8((lum), (x), (y), (z))
 #define LB_NLANES 8
+#define LB_ANY(m) any(m)
 #define LB_LANE_INDEX ((float8)(0, 1, 2, 3, 4, 5, 6, 7))

@@ -8,4 +8,5 @@
 #undef LB_GATHER
 #undef LB_VINTENSITY3
 #undef LB_NLANES
+#undef LB_ANY
 #undef LB_LANE_INDEX

@@ -33,6 +33,11 @@ typedef float3 real3;
 #endif
 
 #define LB_FN static inline
+/* A helper PoCL would keep out of line although inlining it pays: a lane
+ * struct returned by value goes through the stack, and every call spills the
+ * caller's live vectors (measured: the 8-lane fan 15 % faster with its five
+ * lookups inlined). */
+#define LB_FN_INLINE static inline __attribute__((always_inline))
 #define LB_CONSTANT __constant
 #define R3(x, y, z) ((real3)((x), (y), (z)))
 #define R2(x, y) ((real2)((x), (y)))
@@ -42,6 +47,7 @@ typedef float3 real3;
 #else /* C++ host: the includer has defined real, real2, real3 and LB_REAL_IS_DOUBLE */
 
 #define LB_FN inline
+#define LB_FN_INLINE inline
 #define LB_CONSTANT static const
 #define R3(x, y, z) (real3((x), (y), (z)))
 #define R2(x, y) (real2((x), (y)))
