@@ -9,7 +9,8 @@
  *   LB_CUB_NORMALIZE  0 none | 1 formfactor (thesis Eq. 5.11)
  *   LB_CUB_DYNAMIC    bit set of dynamic points: 1 cp, 2 np, 4 mrp, 8 barycentre (0: corners only)
  *   LB_CUB_STATIC     0 .. 4 static samples at the tunables (s_k, t_k) of the light's unit
- *                     square (general kernel only: the straight-line forms carry none)
+ *                     square (the straight-line form LB_CUB_RECT_DELST carries one; more
+ *                     run the general kernel)
  *   LB_CUB_RECT_FAN   nothing clipped, fan around CP or corner 0 (or Delaunay over corners + CP,
  *                     which never flips there):
  *                     the straight-line lb_cub_rect_fan (host/methods/specialize.h
@@ -19,6 +20,8 @@
  *   LB_CUB_RECT_DELALL nothing clipped, receiver normal perpendicular to u, Delaunay over
  *                     corners + CP + NP + MRP + barycentre: the straight-line
  *                     lb_cub_rect_delall
+ *   LB_CUB_RECT_DELST nothing clipped, Delaunay over corners + CP + one static sample
+ *                     (at least 1 % inside the light): the straight-line lb_cub_rect_delst
  *   LB_CUB_RECT_CLIP  with LB_CUB_RECT_FAN or _DEL: the horizon cuts the light, along
  *                     its u edges (receiver normal perpendicular to u, as in every
  *                     normalized scene): the forms run on the rectangle it leaves
@@ -39,7 +42,7 @@
  * LB_CUB_AREA = n (2 or 3) the n x n Gauss rule of the area form is blended in
  * away from the light and towards its plane (lb_area_weight).
  *
- * @variants: "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL" | "-DLB_CUB_TRI=1 -DLB_CUB_STATIC=4" | "-DLB_CUB_RECT_FAN -DLB_CUB_BLEND" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_CUB_BLEND -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_NORMALIZE=1" | "" | "-DLB_CUB_TRI=1" | "-DLB_CUB_TRI=1 -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=15" | "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_DYNAMIC=0" | "-DLB_LUT" | "-DLB_LUT -DLB_CUB_RECT_FAN" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_RECT_FAN -DLB_CUB_RECT_CLIP -DLB_CUB_BLEND" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_CUB_RECT_CLIP -DLB_LANES=8" | "-DLB_CUB_AREA=2" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_CUB_RECT_CLIP -DLB_CUB_AREA=3 -DLB_LANES=8" | "-DLB_CUB_RECT_DEL -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_AREA=3" | "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=15 -DLB_CUB_RECT_DELALL" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=15 -DLB_CUB_RECT_DELALL -DLB_CUB_BLEND -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_NORMALIZE=1"
+ * @variants: "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL" | "-DLB_CUB_TRI=1 -DLB_CUB_STATIC=4" | "-DLB_CUB_RECT_FAN -DLB_CUB_BLEND" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_CUB_BLEND -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_NORMALIZE=1" | "" | "-DLB_CUB_TRI=1" | "-DLB_CUB_TRI=1 -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=15" | "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_DYNAMIC=0" | "-DLB_LUT" | "-DLB_LUT -DLB_CUB_RECT_FAN" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_RECT_FAN -DLB_CUB_RECT_CLIP -DLB_CUB_BLEND" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_CUB_RECT_CLIP -DLB_LANES=8" | "-DLB_CUB_AREA=2" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_CUB_RECT_CLIP -DLB_CUB_AREA=3 -DLB_LANES=8" | "-DLB_CUB_RECT_DEL -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_AREA=3" | "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=15 -DLB_CUB_RECT_DELALL" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=15 -DLB_CUB_RECT_DELALL -DLB_CUB_BLEND -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_TRI=1 -DLB_CUB_STATIC=1 -DLB_CUB_RECT_DELST" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_STATIC=1 -DLB_CUB_RECT_DELST -DLB_CUB_BLEND -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_NORMALIZE=1"
  */
 #include "common/lbmath.h"
 
@@ -86,6 +89,8 @@
 /* rect: that rectangle (lb_rect_span), view: the receiver at hc (lb_rect_view). */
 #if defined(LB_CUB_RECT_DELALL)
 #define LB_CUB_RECT_CALL(s, nt, nf) lb_cub_rect_delall##s(lum, &rect, &view, opt, tun, want_stats, &nt, &nf)
+#elif defined(LB_CUB_RECT_DELST)
+#define LB_CUB_RECT_CALL(s, nt, nf) lb_cub_rect_delst##s(lum, &rect, &view, opt, tun, want_stats, &nt, &nf)
 #elif defined(LB_CUB_RECT_DEL)
 #define LB_CUB_RECT_CALL(s, nt, nf) lb_cub_rect_del##s(lum, &rect, &view, opt, tun, &nt, &nf)
 #elif defined(LB_CUB_RECT_FAN)
@@ -133,18 +138,21 @@ CUB_KERNEL
     nf = (int8)(0);
     if (any(ta < 1.0f))
         e = LB_CUB_RECT_CALL(_x8, nt, nf);
-    e = lb_area_blend_x8(lum, e, ta, rect, vw);
-    nt = ta >= 1.0f ? 0 : nt;
-    nf = ta >= 1.0f ? 0 : nf;
 #else
     float8 e = LB_CUB_RECT_CALL(_x8, nt, nf);
 #endif
+    /* the blends in the general kernel's order: the grid MC's, then the area form's */
 #ifdef LB_CUB_BLEND
     float8 t;
     e = lb_cub_rect_blend_x8(lum, e, lb_rect_span_at_x8(ou, ov, P[LB_P_W], (float8)(P[LB_P_L])), vw, tun.blend_dist,
                              &t);
     nt = t >= 1.0f ? 0 : nt; /* no cubature where the grid MC alone counts */
     nf = t >= 1.0f ? 0 : nf;
+#endif
+#ifdef LB_CUB_AREA
+    e = lb_area_blend_x8(lum, e, ta, rect, vw);
+    nt = ta >= 1.0f ? 0 : nt;
+    nf = ta >= 1.0f ? 0 : nf;
 #endif
     int i = row * res + col0;
     lb_store_x8(out, i, res - col0, e);
@@ -186,7 +194,6 @@ CUB_KERNEL
     nt = nf = 0;
     if (ta < R(1))
         e = LB_CUB_RECT_CALL(, nt, nf);
-    e = lb_area_blend(lum, e, ta, rect, vw);
 #else
     real e = LB_CUB_RECT_CALL(, nt, nf);
 #endif
@@ -195,6 +202,11 @@ CUB_KERNEL
     e = lb_cub_rect_blend(lum, e, lb_rect_span_at(ou, ov, P[LB_P_W], P[LB_P_L]), vw, tun.blend_dist, &t);
     nt = t >= R(1) ? 0 : nt;
     nf = t >= R(1) ? 0 : nf;
+#endif
+#ifdef LB_CUB_AREA
+    e = lb_area_blend(lum, e, ta, rect, vw);
+    nt = ta >= R(1) ? 0 : nt;
+    nf = ta >= R(1) ? 0 : nf;
 #endif
     int i = row * res + col;
     out[i] = e;

@@ -113,10 +113,12 @@ Family cubatureFamily()
         LB_CUB_TUNABLES(LB_BIND_TUNABLE)
 #undef LB_BIND_TUNABLE
     };
-    f.straightDefines = {"-DLB_CUB_RECT_FAN", "-DLB_CUB_RECT_DEL", "-DLB_CUB_RECT_DELALL"};
-    f.benchSpecs = {"cubature:lanes=1", "cubature:specialize=none,lookup=exact",
+    f.straightDefines = {"-DLB_CUB_RECT_FAN", "-DLB_CUB_RECT_DEL", "-DLB_CUB_RECT_DELALL", "-DLB_CUB_RECT_DELST"};
+    f.benchSpecs = {"cubature:lanes=1",
+                    "cubature:specialize=none,lookup=exact",
                     "cubature:triangulation=delaunay,dynamic=cp+barycentre",
                     "cubature:triangulation=delaunay,dynamic=cp+np+mrp+barycentre",
+                    "cubature:triangulation=delaunay,static=1,s1=0.485,t1=0.11",
                     "cubature:normalize=formfactor,weighting=sample"};
     f.finish = cubatureStats;
     return f;

@@ -19,8 +19,9 @@ std::string Specialization::defines() const
     if (rectFan) d += " -DLB_CUB_RECT_FAN";
     if (rectDel) d += " -DLB_CUB_RECT_DEL";
     if (rectDelAll) d += " -DLB_CUB_RECT_DELALL";
-    if ((rectFan || rectDel || rectDelAll) && rectClip) d += " -DLB_CUB_RECT_CLIP";
-    if ((rectFan || rectDel || rectDelAll) && blend) d += " -DLB_CUB_BLEND";
+    if (rectDelStatic) d += " -DLB_CUB_RECT_DELST";
+    if (rectForm() && rectClip) d += " -DLB_CUB_RECT_CLIP";
+    if (rectForm() && blend) d += " -DLB_CUB_BLEND";
     return d;
 }
 
@@ -33,7 +34,8 @@ nlohmann::json Specialization::json() const
             {"rect_fan", rectFan},
             {"rect_del", rectDel},
             {"rect_del_all", rectDelAll},
-            {"rect_clip", (rectFan || rectDel || rectDelAll) && rectClip},
+            {"rect_del_static", rectDelStatic},
+            {"rect_clip", rectForm() && rectClip},
             {"blend", blend}};
 }
 
@@ -107,9 +109,14 @@ Specialization analyseCubature(const Scene& scene, const photometry::Table& tabl
     s.rectDelAll = delAll && unclipped;
     s.rectClip = clipAlongU;
     s.blend = !noBlend;
-    // The straight-line forms carry no static samples: the general kernel
-    // renders them (honestly slower).
+    // Static samples: one, beside corners + CP, in its own form (its
+    // position at least 1 % inside the light: no merge with a corner, no
+    // split of a hull edge, whatever the pixel); with more, or with other
+    // dynamic points, the general kernel renders them (honestly slower).
     if (o.staticSamples > 0) s.rectFan = s.rectDel = s.rectDelAll = s.rectClip = false;
+    auto inside = [](double a) { return a >= 0.01 && a <= 0.99; };
+    s.rectDelStatic = o.staticSamples == 1 && o.triangulation == 1 && o.dynamic == 1 && unclipped &&
+        inside(o.tunables.s1) && inside(o.tunables.t1);
     return s;
 }
 
@@ -130,7 +137,7 @@ namespace lb::methods {
 
 int cubatureLanes(const Specialization& s, const CubatureOptions& o, const std::string& deviceType, bool dbl)
 {
-    if (!(s.rectFan || s.rectDel || s.rectDelAll) || !s.lut || dbl) return 1;
+    if (!s.rectForm() || !s.lut || dbl) return 1;
     return lanesFor(o.lanes, deviceType);
 }
 

@@ -79,6 +79,13 @@
 //              lb_cub_rect_delall of common/cubature_lanes.inc (two ladders
 //              of two decisions each and the barycentre's cavity; the
 //              structure and its brute-force checks are described there).
+//   rectDelStatic (cubature) triangulation=delaunay with dynamic=cp and one
+//              static sample where nothing is clipped and the sample lies at
+//              least 1 % of the light's size inside it (so that it never
+//              merges with a corner or splits a hull edge):
+//              LB_CUB_RECT_DELST, lb_cub_rect_delst of
+//              common/cubature_lanes.inc (the fan around CP and the static
+//              sample's cavity).
 #pragma once
 
 #include "methods/cubature_options.h"
@@ -100,10 +107,13 @@ struct Specialization {
     bool rectFan = false;  // LB_CUB_RECT_FAN (cubature only)
     bool rectDel = false;  // LB_CUB_RECT_DEL (cubature only)
     bool rectDelAll = false;  // LB_CUB_RECT_DELALL (cubature only)
+    bool rectDelStatic = false;  // LB_CUB_RECT_DELST (cubature only)
     bool rectClip = false;  // LB_CUB_RECT_CLIP: with rectFan / rectDel, the horizon cuts along u
     bool blend = false;  // LB_CUB_BLEND: some pixel blends (with a straight-line form)
 
     std::string defines() const;  // " -DLB_LUT ..." (leading space when not empty)
+    // Whether a straight-line cubature form runs (any rect* rule but rectClip).
+    bool rectForm() const { return rectFan || rectDel || rectDelAll || rectDelStatic; }
     nlohmann::json json() const;
 };
 
@@ -116,7 +126,7 @@ Specialization analyse(const Scene& scene, const photometry::Table& table, bool 
 Specialization analyseCubature(const Scene& scene, const photometry::Table& table, const CubatureOptions& o);
 
 // Pixels per work-item for the cubature: o.lanes (lanesFor, methods/straight.h)
-// where a straight-line form (rectFan, rectDel, rectDelAll) runs in float with the LUT, else 1.
+// where a straight-line form (rectForm) runs in float with the LUT, else 1.
 int cubatureLanes(const Specialization& s, const CubatureOptions& o, const std::string& deviceType, bool dbl);
 
 // Whether the receiver normal is perpendicular to the light's u axis, exactly

@@ -322,6 +322,7 @@ TEST(Specialize, CubatureRectFanEqualsGeneral)
                            "cubature:triangulation=delaunay,weighting=dotout,normalize=formfactor,dyn_weight=2",
                            "cubature:area=gauss2",
                            "cubature:area=gauss3,area_q=0.5,weighting=sample",
+                           "cubature:area=gauss2,blend_dist=1.5",  // both blends, in the general kernel's order
                            "robust"};
     // Without double on the device: float against float, 2e-5 (the general
     // float kernel's own error, 8.7e-6, plus the fan's, with margin).
@@ -539,6 +540,49 @@ TEST(Specialize, CubatureRectDelaunayEqualsGeneral)
               << " (general float kernel against its double result: " << w.general << "), double " << w.d << "\n";
 }
 
+// The check of a Delaunay form that counts flips its own way (define: its
+// -D), for delaunayAgainstGeneral: the worst relative difference of the
+// images, the form's define in use, triangle counts equal and flips within 5 %
+// (the form reports the edges its final triangulation does not share with
+// the general code's start: the general count up to the sweep's
+// intermediate edges; on the host never above it, the Cubature*
+// RectDelaunay*EqualsGeneral tests; a kernel's rounding decides a few
+// exactly cocircular quadrilaterals of the symmetric scenes otherwise).
+// flipRatio gets the smallest ratio of the two counts.
+auto ownFlipsDiff(ocl::Runtime& rt, const photometry::Table& t, std::string define, double& flipRatio)
+{
+    return [&rt, &t, define, &flipRatio](const Scene& s, const std::string& spec, Precision p, const std::string& lanes,
+                                         Precision pr, double bound) {
+        RenderOptions opt;
+        opt.reps = 1;
+        auto gen = render(rt, t, s, parseSpec(spec + ",specialize=none"), pr, opt);
+        auto sp = render(rt, t, s, parseSpec(spec + ",lanes=" + lanes), p, opt);
+        EXPECT_NE(sp.stats.value("defines", std::string()).find(define), std::string::npos);
+        double w = worstRelDiff(gen.image.px, sp.image.px, bound, spec + " lanes=" + lanes + " " + s.describe());
+        if (p != pr) gen = render(rt, t, s, parseSpec(spec + ",specialize=none"), p, opt);
+        EXPECT_EQ(gen.stats["triangles_per_pixel"], sp.stats["triangles_per_pixel"]) << spec << " " << s.describe();
+        double gf = gen.stats["flips_per_pixel"], sf = sp.stats["flips_per_pixel"];
+        EXPECT_NEAR(sf, gf, 0.05 * gf) << spec << " " << s.describe();
+        if (gf > 0) flipRatio = std::min(flipRatio, std::min(sf / gf, gf / sf));
+        return w;
+    };
+}
+
+// A Delaunay form that counts flips its own way against the general kernel
+// over delaunayScenes() x specs (delaunayAgainstGeneral with ownFlipsDiff).
+void ownFlipsForm(ocl::Runtime& rt, const photometry::Table& t, const std::vector<std::string>& specs,
+                  const std::string& define, const std::string& name)
+{
+    Precision ref = rt.fp64() ? Precision::Double : Precision::Float;
+    double flipRatio = 1;
+    FormWorst w =
+        delaunayAgainstGeneral(rt, t, specs, ref, rt.fp64() ? 1e-6 : 2e-5, ownFlipsDiff(rt, t, define, flipRatio));
+    if (::testing::Test::HasFailure()) return;
+    std::cout << name << ", straight-line against the general kernel: float " << w.f
+              << " (general float kernel against its double result: " << w.general << "), double " << w.d
+              << "; flips per pixel within a factor " << flipRatio << " of the general kernel's\n";
+}
+
 // The straight-line Delaunay over corners + CP + NP + MRP + barycentre
 // (rule rectDelAll) against the general kernel, with the bounds of the forms
 // above: double 1e-12; float 1e-6 of the double general kernel or twice the
@@ -570,33 +614,39 @@ TEST(Specialize, CubatureRectDelaunayAllEqualsGeneral)
     EXPECT_FALSE(delAll(scenes[0], d + ",specialize=none"));
     EXPECT_FALSE(delAll(scenes[0], "cubature:triangulation=delaunay,dynamic=cp+np+barycentre"));
     EXPECT_FALSE(delAll(scene(-0.2, 5 * M_PI / 8, 45), d));
-    Precision ref = rt->fp64() ? Precision::Double : Precision::Float;
-    double flipRatio = 1;
-    RenderOptions opt;
-    opt.reps = 1;
-    // worst relative difference; triangle counts equal, flips close
-    auto diff = [&](const Scene& s, const std::string& spec, Precision p, const std::string& lanes, Precision pr,
-                    double bound) {
-        auto gen = render(*rt, asym, s, parseSpec(spec + ",specialize=none"), pr, opt);
-        auto sp = render(*rt, asym, s, parseSpec(spec + ",lanes=" + lanes), p, opt);
-        EXPECT_NE(sp.stats.value("defines", std::string()).find("-DLB_CUB_RECT_DELALL"), std::string::npos);
-        double w = worstRelDiff(gen.image.px, sp.image.px, bound, spec + " lanes=" + lanes + " " + s.describe());
-        if (p != pr) gen = render(*rt, asym, s, parseSpec(spec + ",specialize=none"), p, opt);
-        EXPECT_EQ(gen.stats["triangles_per_pixel"], sp.stats["triangles_per_pixel"]) << spec << " " << s.describe();
-        double gf = gen.stats["flips_per_pixel"], sf = sp.stats["flips_per_pixel"];
-        // (on the host the form's count is never above the general code's,
-        // RectDelaunayAllEqualsGeneral; a kernel's rounding decides a few
-        // exactly cocircular quadrilaterals of these symmetric scenes
-        // otherwise)
-        EXPECT_NEAR(sf, gf, 0.05 * gf) << spec << " " << s.describe();
-        if (gf > 0) flipRatio = std::min(flipRatio, std::min(sf / gf, gf / sf));
-        return w;
+    ownFlipsForm(*rt, asym, specs, "-DLB_CUB_RECT_DELALL", "Delaunay cp + np + mrp + barycentre");
+}
+
+// The straight-line Delaunay over corners + CP + one static sample (rule
+// rectDelStatic) against the general kernel, with the bounds of the forms
+// above: double 1e-12; float 1e-6 of the double general kernel or twice the
+// general float kernel's own worst error on the scene (formfactor 1e-4), on
+// delaunayScenes() (pixels on the light's diagonals, edges and corners), with
+// the sample at a tuned position, 2 % from a corner and at the centre (on
+// the spokes of the pixels on the diagonals). Triangle counts equal; flips
+// as the form of every dynamic point (the general count up to its sweep's
+// intermediate edges). The rule: one sample, dynamic=cp, nothing clipped,
+// the sample at least 1 % inside.
+TEST(Specialize, CubatureRectDelaunayStaticEqualsGeneral)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    auto asym = asymmetric();
+    std::vector<Scene> scenes = delaunayScenes();
+    const std::string d = "cubature:triangulation=delaunay,static=1";
+    const std::vector<std::string> specs = {
+        d + ",s1=0.485,t1=0.11", d + ",s1=0.02,t1=0.98,weighting=dotout,corner_inset=0.3,dyn_weight=2",
+        d + ",s1=0.5,t1=0.5,weighting=sample", d + ",s1=0.7,t1=0.4,normalize=formfactor",
+        d + ",s1=0.485,t1=0.11,blend_dist=1.5,area=gauss2"};
+    auto delSt = [&](const Scene& s, const std::string& spec) {
+        return analyseCubature(s, asym, CubatureOptions::parse(parseSpec(spec).values)).rectDelStatic;
     };
-    FormWorst w = delaunayAgainstGeneral(*rt, asym, specs, ref, rt->fp64() ? 1e-6 : 2e-5, diff);
-    if (HasFailure()) return;
-    std::cout << "Delaunay cp + np + mrp + barycentre, straight-line against the general kernel: float " << w.f
-              << " (general float kernel against its double result: " << w.general << "), double " << w.d
-              << "; flips per pixel within a factor " << flipRatio << " of the general kernel's\n";
+    for (const auto& s : scenes) EXPECT_TRUE(delSt(s, specs[0])) << s.describe();
+    EXPECT_FALSE(delSt(scenes[0], specs[0] + ",specialize=none"));
+    EXPECT_FALSE(delSt(scenes[0], d + ",s1=0.005"));
+    EXPECT_FALSE(delSt(scenes[0], "cubature:triangulation=delaunay,static=2"));
+    EXPECT_FALSE(delSt(scenes[0], "cubature:triangulation=delaunay,dynamic=cp+barycentre,static=1"));
+    EXPECT_FALSE(delSt(scene(-0.2, 5 * M_PI / 8, 45), specs[0]));
+    ownFlipsForm(*rt, asym, specs, "-DLB_CUB_RECT_DELST", "Delaunay cp + one static sample");
 }
 
 }  // namespace
