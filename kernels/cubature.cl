@@ -9,8 +9,7 @@
  *   LB_CUB_NORMALIZE  0 none | 1 formfactor (thesis Eq. 5.11)
  *   LB_CUB_DYNAMIC    bit set of dynamic points: 1 cp, 2 np, 4 mrp, 8 barycentre (0: corners only)
  *   LB_CUB_STATIC     0 .. 4 static samples at the tunables (s_k, t_k) of the light's unit
- *                     square (the straight-line form LB_CUB_RECT_DELST carries one; more
- *                     run the general kernel)
+ *                     square (with dynamic=cp also in the straight-line form LB_CUB_RECT_DELST)
  *   LB_CUB_RECT_FAN   nothing clipped, fan around CP or corner 0 (or Delaunay over corners + CP,
  *                     which never flips there):
  *                     the straight-line lb_cub_rect_fan (host/methods/specialize.h
@@ -20,8 +19,9 @@
  *   LB_CUB_RECT_DELALL nothing clipped, receiver normal perpendicular to u, Delaunay over
  *                     corners + CP + NP + MRP + barycentre: the straight-line
  *                     lb_cub_rect_delall
- *   LB_CUB_RECT_DELST nothing clipped, Delaunay over corners + CP + one static sample
- *                     (at least 1 % inside the light): the straight-line lb_cub_rect_delst
+ *   LB_CUB_RECT_DELST nothing clipped, Delaunay over corners + CP + LB_CUB_STATIC static
+ *                     samples (each at least 1 % inside the light): the straight-line
+ *                     lb_cub_rect_delst (one) or lb_cub_rect_delstk (2 to 4)
  *   LB_CUB_RECT_CLIP  with LB_CUB_RECT_FAN or _DEL: the horizon cuts the light, along
  *                     its u edges (receiver normal perpendicular to u, as in every
  *                     normalized scene): the forms run on the rectangle it leaves
@@ -42,7 +42,7 @@
  * LB_CUB_AREA = n (2 or 3) the n x n Gauss rule of the area form is blended in
  * away from the light and towards its plane (lb_area_weight).
  *
- * @variants: "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL" | "-DLB_CUB_TRI=1 -DLB_CUB_STATIC=4" | "-DLB_CUB_RECT_FAN -DLB_CUB_BLEND" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_CUB_BLEND -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_NORMALIZE=1" | "" | "-DLB_CUB_TRI=1" | "-DLB_CUB_TRI=1 -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=15" | "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_DYNAMIC=0" | "-DLB_LUT" | "-DLB_LUT -DLB_CUB_RECT_FAN" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_RECT_FAN -DLB_CUB_RECT_CLIP -DLB_CUB_BLEND" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_CUB_RECT_CLIP -DLB_LANES=8" | "-DLB_CUB_AREA=2" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_CUB_RECT_CLIP -DLB_CUB_AREA=3 -DLB_LANES=8" | "-DLB_CUB_RECT_DEL -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_AREA=3" | "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=15 -DLB_CUB_RECT_DELALL" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=15 -DLB_CUB_RECT_DELALL -DLB_CUB_BLEND -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_TRI=1 -DLB_CUB_STATIC=1 -DLB_CUB_RECT_DELST" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_STATIC=1 -DLB_CUB_RECT_DELST -DLB_CUB_BLEND -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_NORMALIZE=1"
+ * @variants: "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL" | "-DLB_CUB_TRI=1 -DLB_CUB_STATIC=4" | "-DLB_CUB_RECT_FAN -DLB_CUB_BLEND" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_CUB_BLEND -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_NORMALIZE=1" | "" | "-DLB_CUB_TRI=1" | "-DLB_CUB_TRI=1 -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=15" | "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_DYNAMIC=0" | "-DLB_LUT" | "-DLB_LUT -DLB_CUB_RECT_FAN" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0" | "-DLB_CUB_RECT_FAN -DLB_CUB_WEIGHT=0 -DLB_CUB_NORMALIZE=1" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_DYNAMIC=0 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_RECT_FAN -DLB_CUB_RECT_CLIP -DLB_CUB_BLEND" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_RECT_DEL -DLB_CUB_RECT_CLIP -DLB_LANES=8" | "-DLB_CUB_AREA=2" | "-DLB_LUT -DLB_CUB_RECT_FAN -DLB_CUB_RECT_CLIP -DLB_CUB_AREA=3 -DLB_LANES=8" | "-DLB_CUB_RECT_DEL -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=9 -DLB_CUB_AREA=3" | "-DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=15 -DLB_CUB_RECT_DELALL" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_DYNAMIC=15 -DLB_CUB_RECT_DELALL -DLB_CUB_BLEND -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_TRI=1 -DLB_CUB_STATIC=1 -DLB_CUB_RECT_DELST" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_STATIC=1 -DLB_CUB_RECT_DELST -DLB_CUB_BLEND -DLB_LANES=8 -DLB_CUB_WEIGHT=2 -DLB_CUB_NORMALIZE=1" | "-DLB_CUB_TRI=1 -DLB_CUB_STATIC=3 -DLB_CUB_RECT_DELST" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_CUB_STATIC=4 -DLB_CUB_RECT_DELST -DLB_LANES=8"
  */
 #include "common/lbmath.h"
 
@@ -89,8 +89,10 @@
 /* rect: that rectangle (lb_rect_span), view: the receiver at hc (lb_rect_view). */
 #if defined(LB_CUB_RECT_DELALL)
 #define LB_CUB_RECT_CALL(s, nt, nf) lb_cub_rect_delall##s(lum, &rect, &view, opt, tun, want_stats, &nt, &nf)
-#elif defined(LB_CUB_RECT_DELST)
+#elif defined(LB_CUB_RECT_DELST) && LB_CUB_STATIC == 1
 #define LB_CUB_RECT_CALL(s, nt, nf) lb_cub_rect_delst##s(lum, &rect, &view, opt, tun, want_stats, &nt, &nf)
+#elif defined(LB_CUB_RECT_DELST)
+#define LB_CUB_RECT_CALL(s, nt, nf) lb_cub_rect_delstk##s(lum, &rect, &view, opt, tun, want_stats, &nt, &nf)
 #elif defined(LB_CUB_RECT_DEL)
 #define LB_CUB_RECT_CALL(s, nt, nf) lb_cub_rect_del##s(lum, &rect, &view, opt, tun, &nt, &nf)
 #elif defined(LB_CUB_RECT_FAN)

@@ -9,7 +9,8 @@ column times the static samples at the plain straight-line time scaled by the ge
 kernel's ratio (static=2 over static=0): an estimate, two static samples have no
 straight-line form. The second table, from
 experiments/results/tune-placement-static1-equal-time-{train,validation}-pocl-xeon.json.xz,
-measures one static sample (default and tuned) in its straight-line form.
+and the third (static2) measure one and two static samples (default and tuned) in their
+straight-line forms.
 usage: experiments/tune/placement_table.py"""
 import os
 import json, math, collections, sys, lzma
@@ -65,36 +66,39 @@ for setn in ['train','validation']:
     for (lum,h),v in groups.items(): line(setn,lum,h,v)
     line(setn,'**all**','',allrows[setn])
 
-# One static sample, measured: its straight-line form (LB_CUB_RECT_DELST) where nothing
-# is clipped, the general kernel elsewhere, all timed in the same runs
-# (experiments/results/tune-placement-static1-equal-time-{train,validation}-pocl-xeon.json.xz).
+# Static samples, measured: their straight-line forms (LB_CUB_RECT_DELST) where nothing is
+# clipped, the general kernel elsewhere, all timed in the same runs
+# (experiments/results/tune-placement-static{1,2}-equal-time-{train,validation}-pocl-xeon.json.xz).
 S1='cubature:corner_inset=0.47474030406641377,dyn_weight=0.4438203675431775,horizon_eps=0.15770996468832849,plane_eps=0.0962521955082793,s1=0.5298553466796876,static=1,t1=0.35039991350465294,triangulation=delaunay'
-S1D='cubature:triangulation=delaunay,static=1'
-print()
-print('| set | luminaire | h | plain default | plain tuned | static=1 default | static=1 tuned | NMSE gain of placement | plain tuned: ms / log / wins | static=1 default: ms / log / wins | static=1 tuned: ms / log / wins |')
-print('|---|---|---|---|---|---|---|---|---|---|---|')
-allrows=collections.defaultdict(list)
-for setn in ['train','validation']:
-    path=os.path.join(RES, f'tune-placement-static1-equal-time-{setn}-pocl-xeon.json.xz')
-    if not os.path.exists(path): continue
-    scenes=collections.OrderedDict()
-    for r in load(path): scenes.setdefault(r['scene'],[]).append(r)
-    groups=collections.OrderedDict()
-    for sc,rs in scenes.items():
-        curve=[(r.get('n') or r['params']['n'], r['time_ms']['median'], r['nmse']) for r in rs if r['role']=='mci_curve']
-        by={r['spec']:r for r in rs if r['role']=='method'}
-        lum=rs[0]['luminaire'].split('_')[0]; h=rs[0]['height']
-        p,sd,st=by[P],by[S1D],by[S1]
-        row=dict(d=by['cubature']['nmse'],p=p['nmse'],sd=sd['nmse'],s=st['nmse'],
-                 tp=p['time_ms']['median'],tsd=sd['time_ms']['median'],ts=st['time_ms']['median'])
-        for k,t,n in (('lp','tp','p'),('lsd','tsd','sd'),('ls','ts','s')):
-            row[k]=math.log(row[n]/curve_at(curve,row[t])[0])
-        groups.setdefault((lum,h),[]).append(row); allrows[setn].append(row)
-    def line1(setn,lum,h,v):
-        m=lambda k: sum(x[k] for x in v)/len(v)
-        med=lambda k: sorted(x[k] for x in v)[len(v)//2]
-        w=lambda k: sum(x[k]<0 for x in v)
-        cell=lambda t,l: f"{med(t):.2g} / {m(l):+.2f} / {w(l)} of {len(v)}"
-        print(f"| {setn} | {lum} | {h} | {m('d'):.3g} | {m('p'):.3g} | {m('sd'):.3g} | {m('s'):.3g} | {m('p')/m('s'):.2f}x | {cell('tp','lp')} | {cell('tsd','lsd')} | {cell('ts','ls')} |")
-    for (lum,h),v in groups.items(): line1(setn,lum,h,v)
-    line1(setn,'**all**','',allrows[setn])
+def measured(k, tuned):
+    default=f'cubature:triangulation=delaunay,static={k}'
+    print()
+    print(f'| set | luminaire | h | plain default | plain tuned | static={k} default | static={k} tuned | NMSE gain of placement | plain tuned: ms / log / wins | static={k} default: ms / log / wins | static={k} tuned: ms / log / wins |')
+    print('|---|---|---|---|---|---|---|---|---|---|---|')
+    allrows=collections.defaultdict(list)
+    for setn in ['train','validation']:
+        path=os.path.join(RES, f'tune-placement-static{k}-equal-time-{setn}-pocl-xeon.json.xz')
+        if not os.path.exists(path): continue
+        scenes=collections.OrderedDict()
+        for r in load(path): scenes.setdefault(r['scene'],[]).append(r)
+        groups=collections.OrderedDict()
+        for sc,rs in scenes.items():
+            curve=[(r.get('n') or r['params']['n'], r['time_ms']['median'], r['nmse']) for r in rs if r['role']=='mci_curve']
+            by={r['spec']:r for r in rs if r['role']=='method'}
+            lum=rs[0]['luminaire'].split('_')[0]; h=rs[0]['height']
+            p,sd,st=by[P],by[default],by[tuned]
+            row=dict(d=by['cubature']['nmse'],p=p['nmse'],sd=sd['nmse'],s=st['nmse'],
+                     tp=p['time_ms']['median'],tsd=sd['time_ms']['median'],ts=st['time_ms']['median'])
+            for key,t,n in (('lp','tp','p'),('lsd','tsd','sd'),('ls','ts','s')):
+                row[key]=math.log(row[n]/curve_at(curve,row[t])[0])
+            groups.setdefault((lum,h),[]).append(row); allrows[setn].append(row)
+        def line1(setn,lum,h,v):
+            m=lambda key: sum(x[key] for x in v)/len(v)
+            med=lambda key: sorted(x[key] for x in v)[len(v)//2]
+            w=lambda key: sum(x[key]<0 for x in v)
+            cell=lambda t,l: f"{med(t):.2g} / {m(l):+.2f} / {w(l)} of {len(v)}"
+            print(f"| {setn} | {lum} | {h} | {m('d'):.3g} | {m('p'):.3g} | {m('sd'):.3g} | {m('s'):.3g} | {m('p')/m('s'):.2f}x | {cell('tp','lp')} | {cell('tsd','lsd')} | {cell('ts','ls')} |")
+        for (lum,h),v in groups.items(): line1(setn,lum,h,v)
+        line1(setn,'**all**','',allrows[setn])
+measured(1, S1)
+measured(2, S)

@@ -109,14 +109,16 @@ Specialization analyseCubature(const Scene& scene, const photometry::Table& tabl
     s.rectDelAll = delAll && unclipped;
     s.rectClip = clipAlongU;
     s.blend = !noBlend;
-    // Static samples: one, beside corners + CP, in its own form (its
-    // position at least 1 % inside the light: no merge with a corner, no
-    // split of a hull edge, whatever the pixel); with more, or with other
-    // dynamic points, the general kernel renders them (honestly slower).
+    // Static samples beside corners + CP: their own form, each at least 1 %
+    // inside the light (no merge with a corner, no split of a hull edge,
+    // whatever the pixel); beside other dynamic points, or on a clipped
+    // light, the general kernel renders them (honestly slower).
     if (o.staticSamples > 0) s.rectFan = s.rectDel = s.rectDelAll = s.rectClip = false;
-    auto inside = [](double a) { return a >= 0.01 && a <= 0.99; };
-    s.rectDelStatic = o.staticSamples == 1 && o.triangulation == 1 && o.dynamic == 1 && unclipped &&
-        inside(o.tunables.s1) && inside(o.tunables.t1);
+    const double st[8] = {o.tunables.s1, o.tunables.t1, o.tunables.s2, o.tunables.t2,
+                          o.tunables.s3, o.tunables.t3, o.tunables.s4, o.tunables.t4};
+    bool inside = true;
+    for (int i = 0; i < 2 * std::min(o.staticSamples, 4); ++i) inside = inside && st[i] >= 0.01 && st[i] <= 0.99;
+    s.rectDelStatic = o.staticSamples >= 1 && o.triangulation == 1 && o.dynamic == 1 && unclipped && inside;
     return s;
 }
 

@@ -79,13 +79,13 @@
 //              lb_cub_rect_delall of common/cubature_lanes.inc (two ladders
 //              of two decisions each and the barycentre's cavity; the
 //              structure and its brute-force checks are described there).
-//   rectDelStatic (cubature) triangulation=delaunay with dynamic=cp and one
-//              static sample where nothing is clipped and the sample lies at
-//              least 1 % of the light's size inside it (so that it never
+//   rectDelStatic (cubature) triangulation=delaunay with dynamic=cp and 1 to 4
+//              static samples where nothing is clipped and each sample lies
+//              at least 1 % of the light's size inside it (so that it never
 //              merges with a corner or splits a hull edge):
-//              LB_CUB_RECT_DELST, lb_cub_rect_delst of
-//              common/cubature_lanes.inc (the fan around CP and the static
-//              sample's cavity).
+//              LB_CUB_RECT_DELST, lb_cub_rect_delst (one sample) and
+//              lb_cub_rect_delstk of common/cubature_lanes.inc (the fan
+//              around CP and each sample's cavity in turn).
 #pragma once
 
 #include "methods/cubature_options.h"

@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <random>
+#include <type_traits>
 #include <string>
 #include <vector>
 

@@ -194,7 +194,7 @@ TEST(CubatureFamily, FanEqualsDelaunayForCornersAndClosestPoint)
 // are unchanged), so the image is the one without them, bit for bit: on a
 // corner ((0, 0) and (1, 1)), and on the barycentre of an unclipped light
 // (the centre (0.5, 0.5), with dynamic=cp+barycentre). Both general kernels
-// (static > 0 always renders the general one); the sideways luminaire (kinked,
+// (specialize=none); the sideways luminaire (kinked,
 // asymmetric) so that any change of the weights would show.
 TEST(CubatureFamily, StaticSamplesOnExistingSamplesChangeNothing)
 {
@@ -262,18 +262,26 @@ TEST(CubatureFamily, StaticSamplesKeepTheLambertFormfactorExact)
     }
 }
 
-// static > 0 renders the general kernel (the straight-line forms carry no
-// static samples), where the same spec without them takes a straight-line
-// form; a fan with static samples is refused (exit 2 at the CLI).
-TEST(CubatureFamily, StaticSamplesRunTheGeneralKernelAndNeedDelaunay)
+// Static samples beside CP take their own straight-line form (one:
+// lb_cub_rect_delst, more: lb_cub_rect_delstk; held to the general kernel in
+// test_specialize.cpp); beside the barycentre they render the general kernel,
+// where the same spec without them takes a straight-line form; a fan with
+// static samples is refused (exit 2 at the CLI).
+TEST(CubatureFamily, StaticSamplesPickTheirKernelAndNeedDelaunay)
 {
     LB_REQUIRE_RUNTIME(rt);
     auto t = methods::loadLuminaire(lambertPath());
     Scene sc = scene(1.1, M_PI, 16);
-    auto fast = run(*rt, t, sc, "cubature:triangulation=delaunay", Precision::Float);
-    auto withStatic = run(*rt, t, sc, "cubature:triangulation=delaunay,static=2", Precision::Float);
+    const std::string bary = "cubature:triangulation=delaunay,dynamic=cp+barycentre";
+    auto fast = run(*rt, t, sc, bary, Precision::Float);
+    auto withStatic = run(*rt, t, sc, bary + ",static=2", Precision::Float);
     EXPECT_EQ(fast.stats.at("form"), "straight-line");
     EXPECT_EQ(withStatic.stats.at("form"), "general");
+    for (const char* k : {"1", "2", "4"}) {
+        auto r = run(*rt, t, sc, std::string("cubature:triangulation=delaunay,static=") + k, Precision::Float);
+        EXPECT_EQ(r.stats.at("form"), "straight-line") << k;
+        EXPECT_NE(r.stats.at("defines").get<std::string>().find("-DLB_CUB_RECT_DELST"), std::string::npos) << k;
+    }
     const auto out = std::filesystem::temp_directory_path() / ("lb_static_fan_" + std::to_string(::getpid()) + ".exr");
     auto c = cli(fmt::format("render --luminaire {} --method cubature:static=1 --height 1 --rotation pi --res 8 "
                              "--out {}",

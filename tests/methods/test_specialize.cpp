@@ -617,33 +617,38 @@ TEST(Specialize, CubatureRectDelaunayAllEqualsGeneral)
     ownFlipsForm(*rt, asym, specs, "-DLB_CUB_RECT_DELALL", "Delaunay cp + np + mrp + barycentre");
 }
 
-// The straight-line Delaunay over corners + CP + one static sample (rule
+// The straight-line Delaunay over corners + CP + 1 to 4 static samples (rule
 // rectDelStatic) against the general kernel, with the bounds of the forms
 // above: double 1e-12; float 1e-6 of the double general kernel or twice the
 // general float kernel's own worst error on the scene (formfactor 1e-4), on
 // delaunayScenes() (pixels on the light's diagonals, edges and corners), with
-// the sample at a tuned position, 2 % from a corner and at the centre (on
-// the spokes of the pixels on the diagonals). Triangle counts equal; flips
-// as the form of every dynamic point (the general count up to its sweep's
-// intermediate edges). The rule: one sample, dynamic=cp, nothing clipped,
-// the sample at least 1 % inside.
+// one sample at a tuned position, 2 % from a corner and at the centre (on
+// the spokes of the pixels on the diagonals), and two to four (the defaults
+// and moved ones). Triangle counts equal; flips as the form of every dynamic
+// point (the general count up to its sweep's intermediate edges). The rule:
+// dynamic=cp, nothing clipped, every sample at least 1 % inside.
 TEST(Specialize, CubatureRectDelaunayStaticEqualsGeneral)
 {
     LB_REQUIRE_RUNTIME(rt);
     auto asym = asymmetric();
     std::vector<Scene> scenes = delaunayScenes();
     const std::string d = "cubature:triangulation=delaunay,static=1";
-    const std::vector<std::string> specs = {
-        d + ",s1=0.485,t1=0.11", d + ",s1=0.02,t1=0.98,weighting=dotout,corner_inset=0.3,dyn_weight=2",
-        d + ",s1=0.5,t1=0.5,weighting=sample", d + ",s1=0.7,t1=0.4,normalize=formfactor",
-        d + ",s1=0.485,t1=0.11,blend_dist=1.5,area=gauss2"};
+    const std::vector<std::string> specs = {d + ",s1=0.485,t1=0.11",
+                                            d + ",s1=0.02,t1=0.98,weighting=dotout,corner_inset=0.3,dyn_weight=2",
+                                            d + ",s1=0.5,t1=0.5,weighting=sample",
+                                            d + ",s1=0.7,t1=0.4,normalize=formfactor",
+                                            d + ",s1=0.485,t1=0.11,blend_dist=1.5,area=gauss2",
+                                            "cubature:triangulation=delaunay,static=2,s1=0.485,t1=0.11",
+                                            "cubature:triangulation=delaunay,static=3,weighting=dotout,dyn_weight=0.5",
+                                            "cubature:triangulation=delaunay,static=4,s2=0.6,t2=0.2,corner_inset=0.3"};
     auto delSt = [&](const Scene& s, const std::string& spec) {
         return analyseCubature(s, asym, CubatureOptions::parse(parseSpec(spec).values)).rectDelStatic;
     };
     for (const auto& s : scenes) EXPECT_TRUE(delSt(s, specs[0])) << s.describe();
     EXPECT_FALSE(delSt(scenes[0], specs[0] + ",specialize=none"));
     EXPECT_FALSE(delSt(scenes[0], d + ",s1=0.005"));
-    EXPECT_FALSE(delSt(scenes[0], "cubature:triangulation=delaunay,static=2"));
+    EXPECT_TRUE(delSt(scenes[0], "cubature:triangulation=delaunay,static=4"));
+    EXPECT_FALSE(delSt(scenes[0], "cubature:triangulation=delaunay,static=2,s2=0.995"));
     EXPECT_FALSE(delSt(scenes[0], "cubature:triangulation=delaunay,dynamic=cp+barycentre,static=1"));
     EXPECT_FALSE(delSt(scene(-0.2, 5 * M_PI / 8, 45), specs[0]));
     ownFlipsForm(*rt, asym, specs, "-DLB_CUB_RECT_DELST", "Delaunay cp + one static sample");
