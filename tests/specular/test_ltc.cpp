@@ -172,7 +172,9 @@ TEST(Ltc, PolygonErrorWithinTheFitsL1Distance)
             double B = l1Bound(c, alpha, theta);
             // the fit is a fit up to 70 degrees (L1 < 0.5 norm); towards grazing
             // the horizon cuts the GGX lobe, which no LTC follows (L1 -> norm)
-            if (theta < 1.25) EXPECT_LT(B, 0.5 * c[4]) << "alpha " << alpha << " theta " << theta;
+            if (theta < 1.25) {
+                EXPECT_LT(B, 0.5 * c[4]) << "alpha " << alpha << " theta " << theta;
+            }
             for (int r = 0; r < 3; ++r, ++k) {
                 Poly P = randomPoly(g);
                 // aim a third of them at the specular lobe
@@ -238,7 +240,9 @@ TEST(Ltc, SmallTableNodesAreTheCommittedTablesNodes)
             glm::dvec3 mirror(-std::sin(th), 0, std::cos(th));
             double da = ltc::ltcDensity(a, mirror.x, mirror.y, mirror.z);
             double db = ltc::ltcDensity(b, mirror.x, mirror.y, mirror.z);
-            if (th < 1.0) EXPECT_NEAR(da, db, 1e-3 * db) << i << "," << j;
+            if (th < 1.0) {
+                EXPECT_NEAR(da, db, 1e-3 * db) << i << "," << j;
+            }
         }
 }
 
