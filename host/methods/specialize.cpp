@@ -99,14 +99,15 @@ Specialization analyseCubature(const Scene& scene, const photometry::Table& tabl
     // Not for normalize=formfactor: the clipped rectangle's Lambert edge sum
     // lost float accuracy at grazing receivers (2.2e-4 against the general
     // kernel's own 5.4e-5 at h = -0.2, R = 5pi/8).
-    bool clipAlongU = !unclipped && horizonAlongU(scene) && (fanCp || delCpBary) && o.dynamic != 0 && !o.formfactor;
-    s.rectFan = fanCp && (unclipped || clipAlongU);
-    s.rectDel = delCpBary && (unclipped || clipAlongU);
     // Delaunay over corners + CP + NP + MRP + barycentre: the three dynamic
     // points on one line of constant u needs the receiver normal
     // perpendicular to u (exactly, as the clip along u does).
     bool delAll = o.triangulation == 1 && o.dynamic == (1 | 2 | 4 | 8) && horizonAlongU(scene);
-    s.rectDelAll = delAll && unclipped;
+    bool clipAlongU =
+        !unclipped && horizonAlongU(scene) && (fanCp || delCpBary || delAll) && o.dynamic != 0 && !o.formfactor;
+    s.rectFan = fanCp && (unclipped || clipAlongU);
+    s.rectDel = delCpBary && (unclipped || clipAlongU);
+    s.rectDelAll = delAll && (unclipped || clipAlongU);
     s.rectClip = clipAlongU;
     s.blend = !noBlend;
     // Static samples beside corners + CP: their own form, each at least 1 %

@@ -57,13 +57,13 @@
 //              most of them within a few eps of an edge or corner, and
 //              tests/methods/test_specialize.cpp holds the images and flip
 //              counts to the general kernel.
-//   rectClip   (cubature) rectFan and rectDel also where the horizon cuts the
-//              light (h < 0, or horizon_eps + plane_eps above the lowest
-//              corner), if it cuts along the light's u edges: the receiver
-//              normal is perpendicular to u (au = 0 exactly, as in every
-//              normalized scene), so n_x . p does not depend on u and what is
-//              left is again a rectangle, on which the same straight-line
-//              code runs (LB_CUB_RECT_CLIP, lb_cub_rect_clip of
+//   rectClip   (cubature) rectFan, rectDel and rectDelAll also where the
+//              horizon cuts the light (h < 0, or horizon_eps + plane_eps
+//              above the lowest corner), if it cuts along the light's u
+//              edges: the receiver normal is perpendicular to u (au = 0
+//              exactly, as in every normalized scene), so n_x . p does not
+//              depend on u and what is left is again a rectangle, on which
+//              the same straight-line code runs (LB_CUB_RECT_CLIP, lb_cub_rect_clip of
 //              common/cubature_lanes.inc). Not for dynamic=none (its fan
 //              starts at the clipped polygon's first vertex), nor for
 //              normalize=formfactor (the clipped Lambert edge sum in float
@@ -73,9 +73,12 @@
 //              common/cubature_lanes.inc (the two edges that can flip decided
 //              by the same in-circle test, no loops).
 //   rectDelAll (cubature) triangulation=delaunay with dynamic=cp+np+mrp+
-//              barycentre where nothing is clipped and the receiver normal is
-//              perpendicular to the light's u axis (horizonAlongU: then NP,
-//              MRP and CP lie on one line of constant u): LB_CUB_RECT_DELALL,
+//              barycentre where the receiver normal is perpendicular to the
+//              light's u axis (horizonAlongU: then NP, MRP and CP lie on one
+//              line of constant u), on the light or on what rectClip leaves
+//              of it (the barycentre and NP's clamp are the clipped
+//              rectangle's, as the general code's clipped polygon):
+//              LB_CUB_RECT_DELALL,
 //              lb_cub_rect_delall of common/cubature_lanes.inc (two ladders
 //              of two decisions each and the barycentre's cavity; the
 //              structure and its brute-force checks are described there).
@@ -108,7 +111,7 @@ struct Specialization {
     bool rectDel = false;  // LB_CUB_RECT_DEL (cubature only)
     bool rectDelAll = false;  // LB_CUB_RECT_DELALL (cubature only)
     bool rectDelStatic = false;  // LB_CUB_RECT_DELST (cubature only)
-    bool rectClip = false;  // LB_CUB_RECT_CLIP: with rectFan / rectDel, the horizon cuts along u
+    bool rectClip = false;  // LB_CUB_RECT_CLIP: with rectFan / rectDel / rectDelAll, the horizon cuts along u
     bool blend = false;  // LB_CUB_BLEND: some pixel blends (with a straight-line form)
 
     std::string defines() const;  // " -DLB_LUT ..." (leading space when not empty)
