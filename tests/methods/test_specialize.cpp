@@ -548,21 +548,25 @@ TEST(Specialize, CubatureRectDelaunayEqualsGeneral)
 // intermediate edges; on the host never above it, the Cubature*
 // RectDelaunay*EqualsGeneral tests; a kernel's rounding decides a few
 // exactly cocircular quadrilaterals of the symmetric scenes otherwise).
-// flipRatio gets the smallest ratio of the two counts.
-auto ownFlipsDiff(ocl::Runtime& rt, const photometry::Table& t, std::string define, double& flipRatio)
+// flipRatio gets the smallest ratio of the two counts. flipsAtRef: flips
+// against the general kernel in the reference precision (not the form's),
+// within flipTol.
+auto ownFlipsDiff(ocl::Runtime& rt, const photometry::Table& t, std::string define, double& flipRatio,
+                  bool flipsAtRef = false, double flipTol = 0.05)
 {
-    return [&rt, &t, define, &flipRatio](const Scene& s, const std::string& spec, Precision p, const std::string& lanes,
-                                         Precision pr, double bound) {
+    return [&rt, &t, define, &flipRatio, flipsAtRef, flipTol](const Scene& s, const std::string& spec, Precision p,
+                                                              const std::string& lanes, Precision pr, double bound) {
         RenderOptions opt;
         opt.reps = 1;
         auto gen = render(rt, t, s, parseSpec(spec + ",specialize=none"), pr, opt);
         auto sp = render(rt, t, s, parseSpec(spec + ",lanes=" + lanes), p, opt);
         EXPECT_NE(sp.stats.value("defines", std::string()).find(define), std::string::npos);
         double w = worstRelDiff(gen.image.px, sp.image.px, bound, spec + " lanes=" + lanes + " " + s.describe());
+        double gf = gen.stats["flips_per_pixel"], sf = sp.stats["flips_per_pixel"];
         if (p != pr) gen = render(rt, t, s, parseSpec(spec + ",specialize=none"), p, opt);
         EXPECT_EQ(gen.stats["triangles_per_pixel"], sp.stats["triangles_per_pixel"]) << spec << " " << s.describe();
-        double gf = gen.stats["flips_per_pixel"], sf = sp.stats["flips_per_pixel"];
-        EXPECT_NEAR(sf, gf, 0.05 * gf) << spec << " " << s.describe();
+        if (!flipsAtRef) gf = gen.stats["flips_per_pixel"];
+        EXPECT_NEAR(sf, gf, flipTol * gf) << spec << " " << s.describe();
         if (gf > 0) flipRatio = std::min(flipRatio, std::min(sf / gf, gf / sf));
         return w;
     };
@@ -669,16 +673,22 @@ namespace {
 // nothing). Bounds as the unclipped forms above (double 1e-12; float 1e-6 of
 // the double general kernel or twice the general float kernel's own error),
 // and the triangle and flip counts of every pixel equal.
+// The clipped scenes of the tests below, each with the tunables that clip it.
+std::vector<std::pair<Scene, std::string>> clippedCases()
+{
+    return {{scene(-0.2, 5 * M_PI / 8, 45), ""},
+            {scene(-0.3, M_PI / 2, 45), ""},
+            {scene(-0.5, 3 * M_PI / 4, 45), ""},
+            {scene(0.0, M_PI / 2, 45), ""},
+            {scene(0.1, M_PI / 2, 45), "horizon_eps=0.1"}};
+}
+
 TEST(Specialize, CubatureRectClipEqualsGeneral)
 {
     LB_REQUIRE_RUNTIME(rt);
     auto asym = asymmetric();
     Scene below = scene(-1.0, M_PI, 45);
-    std::vector<std::pair<Scene, std::string>> cases = {{scene(-0.2, 5 * M_PI / 8, 45), ""},
-                                                        {scene(-0.3, M_PI / 2, 45), ""},
-                                                        {scene(-0.5, 3 * M_PI / 4, 45), ""},
-                                                        {scene(0.0, M_PI / 2, 45), ""},
-                                                        {scene(0.1, M_PI / 2, 45), "horizon_eps=0.1"}};
+    auto cases = clippedCases();
     const std::vector<std::string> specs = {"cubature",
                                             "cubature:weighting=sample",
                                             "cubature:weighting=dotout,corner_inset=0.3,dyn_weight=2",
@@ -741,35 +751,15 @@ TEST(Specialize, CubatureRectDelaunayAllClipEqualsGeneral)
 {
     LB_REQUIRE_RUNTIME(rt);
     auto asym = asymmetric();
-    std::vector<std::pair<Scene, std::string>> cases = {{scene(-0.2, 5 * M_PI / 8, 45), ""},
-                                                        {scene(-0.3, M_PI / 2, 45), ""},
-                                                        {scene(-0.5, 3 * M_PI / 4, 45), ""},
-                                                        {scene(0.0, M_PI / 2, 45), ""},
-                                                        {scene(0.1, M_PI / 2, 45), "horizon_eps=0.1"}};
+    auto cases = clippedCases();
     const std::string d = "cubature:triangulation=delaunay,dynamic=cp+np+mrp+barycentre";
     const std::vector<std::string> specs = {d, d + ",weighting=dotout,corner_inset=0.3,dyn_weight=2",
                                             d + ",weighting=sample"};
     Precision ref = rt->fp64() ? Precision::Double : Precision::Float;
     double rel = rt->fp64() ? 1e-6 : 2e-5;
     double flipRatio = 1, worst = 0, worstD = 0, worstGeneral = 0;
-    const double flipTol = rt->fp64() ? 0.05 : 0.12;
-    auto diff = [&](const Scene& s, const std::string& spec, Precision p, const std::string& lanes, Precision pr,
-                    double bound) {
-        RenderOptions opt;
-        opt.reps = 1;
-        auto gen = render(*rt, asym, s, parseSpec(spec + ",specialize=none"), pr, opt);
-        auto sp = render(*rt, asym, s, parseSpec(spec + ",lanes=" + lanes), p, opt);
-        EXPECT_NE(sp.stats.value("defines", std::string()).find("-DLB_CUB_RECT_DELALL"), std::string::npos);
-        EXPECT_NE(sp.stats.value("defines", std::string()).find("-DLB_CUB_RECT_CLIP"), std::string::npos);
-        double w = worstRelDiff(gen.image.px, sp.image.px, bound, spec + " lanes=" + lanes + " " + s.describe());
-        double gf = gen.stats["flips_per_pixel"], sf = sp.stats["flips_per_pixel"];
-        EXPECT_NEAR(sf, gf, flipTol * gf) << spec << " " << s.describe();
-        if (gf > 0) flipRatio = std::min(flipRatio, std::min(sf / gf, gf / sf));
-        // triangles: the general kernel's merges in the form's precision
-        if (p != pr) gen = render(*rt, asym, s, parseSpec(spec + ",specialize=none"), p, opt);
-        EXPECT_EQ(gen.stats["triangles_per_pixel"], sp.stats["triangles_per_pixel"]) << spec << " " << s.describe();
-        return w;
-    };
+    auto diff =
+        ownFlipsDiff(*rt, asym, "-DLB_CUB_RECT_DELALL -DLB_CUB_RECT_CLIP", flipRatio, true, rt->fp64() ? 0.05 : 0.12);
     for (const auto& [s, kv] : cases)
         for (const auto& base : specs) {
             std::string spec = kv.empty() ? base : base + "," + kv;
