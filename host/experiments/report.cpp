@@ -8,10 +8,12 @@
 #include "metrics/tonemap.h"
 #include "util/error.h"
 #include "util/fileio.h"
+#include "util/process.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -102,21 +104,42 @@ std::string htmlEscape(const std::string& s)
     return o;
 }
 
-// The Markdown the notes use (`code`, **bold**), as HTML.
+// Text from the records (luminaire names, SPECs, the run's context) as
+// literal Markdown: every character Markdown or HTML would read as markup
+// is backslash-escaped (CommonMark), line breaks become spaces (a table row
+// is one line). report.md shows it as written; inlineHtml() undoes the
+// escapes and HTML-escapes the character.
+std::string mdLiteral(const std::string& s)
+{
+    std::string o;
+    for (char c : s) {
+        if (c == '\n' || c == '\r') {
+            o += ' ';
+            continue;
+        }
+        if (std::strchr("\\`*_[]<>&|~#", c) && c != '\0') o += '\\';
+        o += c;
+    }
+    return o;
+}
+
+// The Markdown the notes use (`code`, **bold**, backslash escapes), as HTML.
 std::string inlineHtml(const std::string& md)
 {
-    std::string e = htmlEscape(md), o;
+    std::string o;
     bool code = false, bold = false;
-    for (size_t i = 0; i < e.size(); ++i) {
-        if (e[i] == '`') {
+    for (size_t i = 0; i < md.size(); ++i) {
+        if (!code && md[i] == '\\' && i + 1 < md.size() && std::ispunct(static_cast<unsigned char>(md[i + 1]))) {
+            o += htmlEscape(std::string(1, md[++i]));
+        } else if (md[i] == '`') {
             o += code ? "</code>" : "<code>";
             code = !code;
-        } else if (!code && e.compare(i, 2, "**") == 0) {
+        } else if (!code && md.compare(i, 2, "**") == 0) {
             o += bold ? "</b>" : "<b>";
             bold = !bold;
             ++i;
         } else {
-            o += e[i];
+            o += htmlEscape(std::string(1, md[i]));
         }
     }
     return o;
@@ -285,10 +308,9 @@ std::string makePlots(const std::string& dir)
     std::string python = py && *py ? py : "/usr/bin/python3";
     if (!fs::exists(python)) return fmt::format("no Python at {} (set LUMIBENCH_PYTHON)", python);
     std::string script = (fs::path(LB_SOURCE_DIR) / "plots" / "experiment.py").string();
-    std::string cmd = fmt::format("'{}' '{}' '{}'", python, script, dir);
-    int rc = std::system(cmd.c_str());
-    if (rc == -1) return "could not start " + python;
-    int code = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+    std::string why;
+    int code = util::runProcess({python, script, dir}, {}, &why);
+    if (code == -1) return fmt::format("could not start {}: {}", python, why);
     if (code == 3) return fmt::format("{} has no matplotlib (Debian: apt-get install python3-matplotlib)", python);
     if (code != 0) return fmt::format("{} failed (exit {})", script, code);
     return "";
@@ -303,13 +325,14 @@ Table runInfo(const results::Results& doc)
     Table info{"Run", "", {"", ""}, {}, ""};
     for (const char* k : {"device", "driver", "platform", "commit", "date", "host", "os", "lumibench_version", "shard",
                           "experiment_file", "luminaire_dir"})
-        if (c.contains(k)) info.rows.push_back({{k}, {c[k].is_string() ? c[k].get<std::string>() : c[k].dump()}});
+        if (c.contains(k))
+            info.rows.push_back({{k}, {mdLiteral(c[k].is_string() ? c[k].get<std::string>() : c[k].dump())}});
     std::set<std::string> devices;
     for (const auto& r : doc.records) devices.insert(r.device);
     if (devices.size() > 1) {
         std::string d;
         for (const auto& x : devices) d += x + "; ";
-        info.rows.push_back({{"devices in the records"}, {d}});
+        info.rows.push_back({{"devices in the records"}, {mdLiteral(d)}});
     }
     if (c.contains("merged_from"))
         info.rows.push_back({{"merged from"}, {fmt::format("{} files", c["merged_from"].size())}});
@@ -380,11 +403,12 @@ Table mainTable(const results::Results& doc, const std::vector<std::string>& col
         return t;
     }
     t.note += "MCI=M is Monte Carlo at the time of method M (its mean N over the rotations in brackets).";
-    for (const auto& col : cols) t.head.push_back(col);
+    for (const auto& col : cols) t.head.push_back(mdLiteral(col));
     for (const auto& [k, m] : rows) {
-        std::vector<Cell> row = {
-            {std::get<0>(k)}, {std::get<2>(k)}, num(std::get<3>(k), fmt::format("{}", std::get<3>(k)))};
-        if (kinds) row.insert(row.begin() + 1, Cell{std::get<1>(k)});
+        std::vector<Cell> row = {{mdLiteral(std::get<0>(k))},
+                                 {mdLiteral(std::get<2>(k))},
+                                 num(std::get<3>(k), fmt::format("{}", std::get<3>(k)))};
+        if (kinds) row.insert(row.begin() + 1, Cell{mdLiteral(std::get<1>(k))});
         for (const auto& col : cols) {
             auto it = m.find(col);
             if (it == m.end()) {
@@ -443,7 +467,7 @@ Table timesTable(const results::Results& doc, const std::vector<std::string>& co
                                         : fmt::format("**general** in {} of {} scenes", general, straight + general);
         const double ms = a.second ? a.first / a.second : NAN;
         const double relv = rr != rel.end() && rr->second.second ? std::exp(rr->second.first / rr->second.second) : NAN;
-        times.rows.push_back({{col},
+        times.rows.push_back({{mdLiteral(col)},
                               num(ms, fmt::format("{:.4f}", ms)),
                               num(relv, std::isfinite(relv) ? fmt::format("{:.2f}", relv) : "n/a"),
                               {form}});
@@ -473,10 +497,10 @@ Table pairsTable(const results::Results& doc)
         const double tm = r.extra.value("equal_time_target_ms", NAN), ratio = r.extra.value("equal_time_ratio", NAN);
         const double n = r.n ? r.extra.value("equal_time_n", double(*r.n)) : 0;  // N + extra
         pairs.rows.push_back(
-            {{r.luminaire},
+            {{mdLiteral(r.luminaire)},
              num(r.height, fmt::format("{}", r.height)),
              num(r.rotation, fmt::format("{:.4f}", r.rotation)),
-             {m},
+             {mdLiteral(m)},
              num(tm, fmt::format("{:.4f}", tm)),
              num(n, fmt::format("{:g}", n)),
              num(r.time_ms.median, fmt::format("{:.4f}", r.time_ms.median)),
@@ -521,7 +545,7 @@ std::vector<std::string> plotFiles(const fs::path& pd)
 ReportContent reportContent(const std::string& dir, const results::Results& doc, const std::string& plotNote)
 {
     ReportContent c;
-    c.title = fmt::format("Experiment `{}`", str(doc.context, "experiment", "?"));
+    c.title = "Experiment " + mdLiteral(str(doc.context, "experiment", "?"));
     c.info = runInfo(doc);
     const std::vector<std::string> cols = columns(doc, &c.summary);
     const std::string pooledNote =
@@ -584,7 +608,7 @@ std::string reportHtml(const ReportContent& c, const json& viewer, size_t shown,
       << "</title>\n<style>" << report_page::kCss << "</style></head>\n<body>\n<h1>" << inlineHtml(c.title)
       << "</h1>\n<table class=\"info\">";
     for (const auto& row : c.info.rows)
-        o << "<tr><th>" << htmlEscape(row[0].text) << "</th><td>" << htmlEscape(row[1].text) << "</td></tr>";
+        o << "<tr><th>" << inlineHtml(row[0].text) << "</th><td>" << inlineHtml(row[1].text) << "</td></tr>";
     o << "</table>\n<p>" << inlineHtml(c.summary) << " Click a column head to sort.</p>\n";
     o << "<nav>Sections: <a href=\"#viewer\">pictures</a>";
     for (size_t i = 0; i < c.tables.size(); ++i)
@@ -599,9 +623,12 @@ std::string reportHtml(const ReportContent& c, const json& viewer, size_t shown,
         o << "<figure><img alt=\"" << htmlEscape(p) << "\" src=\"" << dataUri(c.plotDir / p) << "\"><figcaption>"
           << htmlEscape(p) << "</figcaption></figure>\n";
     o << "</section>\n";
-    // JSON inside <script>: "</" would end the element; JSON allows "<\/".
     std::string data = viewer.dump();
-    for (size_t pos = 0; (pos = data.find("</", pos)) != std::string::npos; pos += 3) data.replace(pos, 2, "<\\/");
+    // JSON inside <script>: "</script" would end the element and "<!--" opens
+    // an HTML comment state that can swallow it. '<' and '>' occur only inside
+    // JSON strings, where \u003c and \u003e mean the same characters.
+    for (size_t pos = 0; (pos = data.find_first_of("<>", pos)) != std::string::npos;)
+        data.replace(pos, 1, data[pos] == '<' ? "\\u003c" : "\\u003e");
     o << "<script type=\"application/json\" id=\"lbdata\">" << data << "</script>\n<script>" << report_page::kScript
       << "</script>\n</body></html>\n";
     return o.str();

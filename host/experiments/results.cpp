@@ -3,11 +3,13 @@
 #include "util/error.h"
 #include "util/fileio.h"
 #include "util/json_file.h"
+#include "util/process.h"
 
 #include <fmt/format.h>
 
 #include <array>
 #include <cerrno>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -74,16 +76,16 @@ const std::set<std::string> kKnownKeys = {
 // The scene-kind keys (scene/scene_keys.h), collected into Record::sceneKeys.
 const std::set<std::string> kSceneKeys = {"scene_kind", "alpha", "eye", "albedo"};
 
-// Output of a shell command with surrounding white space trimmed, "" on failure.
-std::string capture(const std::string& cmd)
+// Standard output of git with white space around it trimmed, "" on failure.
+std::string gitOutput(const std::vector<std::string>& args)
 {
-    std::unique_ptr<FILE, int (*)(FILE*)> p(popen(cmd.c_str(), "r"), pclose);
-    if (!p) return "";
+    std::vector<std::string> argv{"git"};
+    argv.insert(argv.end(), args.begin(), args.end());
     std::string out;
-    std::array<char, 256> buf;
-    size_t n;
-    while ((n = fread(buf.data(), 1, buf.size(), p.get())) > 0) out.append(buf.data(), n);
-    if (pclose(p.release()) != 0) return "";
+    util::ProcessOptions opt;
+    opt.out = &out;
+    opt.quietStderr = true;
+    if (util::runProcess(argv, opt) != 0) return "";
     auto b = out.find_first_not_of(" \t\r\n"), e = out.find_last_not_of(" \t\r\n");
     return b == std::string::npos ? "" : out.substr(b, e - b + 1);
 }
@@ -219,11 +221,10 @@ json makeContext(const std::string& device, const std::string& driver, const jso
     c["device"] = device;
     c["driver"] = driver;
     const std::string dir = LB_SOURCE_DIR;
-    std::string commit = capture("git -C '" + dir + "' rev-parse HEAD 2>/dev/null");
+    std::string commit = gitOutput({"-C", dir, "rev-parse", "HEAD"});
     c["commit"] = commit.empty() ? "unknown" : commit;
     if (!commit.empty())
-        c["commit_dirty"] =
-            !capture("git -C '" + dir + "' status --porcelain --untracked-files=no 2>/dev/null").empty();
+        c["commit_dirty"] = !gitOutput({"-C", dir, "status", "--porcelain", "--untracked-files=no"}).empty();
 
     std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
     std::tm tm{};
@@ -253,10 +254,13 @@ bool exists(const std::string& path)
 
 namespace {
 
+// A record carries its experiment file inside its context: twice an input's depth.
+constexpr int kResultsDepth = 2 * util::kMaxJsonDepth;
+
 Results loadDocument(const std::string& path)
 {
     // 1 GiB: a results file of a million records is ~1 GB; anything larger is not one.
-    const json j = util::readJson(path, "a results file (JSON)", size_t(1) << 30);
+    const json j = util::readJson(path, "a results file (JSON)", size_t(1) << 30, kResultsDepth);
     try {
         return j.get<Results>();
     } catch (const InputError& e) {
@@ -272,7 +276,7 @@ void foldJournal(const std::string& jpath, Results& doc)
     for (size_t end; (end = text.find('\n', begin)) != std::string::npos; begin = end + 1) {
         ++line;
         try {
-            json j = json::parse(text.substr(begin, end - begin));
+            json j = util::parseJson(text.substr(begin, end - begin), fmt::format("{}:{}", jpath, line), kResultsDepth);
             if (j.contains("record"))
                 doc.records.push_back(j.at("record").get<Record>());
             else if (j.contains("context") && doc.context.empty())
@@ -408,6 +412,29 @@ void compact(const std::string& path, const json& context)
     compactLocked(path, context);
 }
 
+size_t retain(const std::string& path, const std::function<bool(const Record&)>& keep, const std::string& sidePath)
+{
+    if (!exists(path)) return 0;
+    FileLock lock(path);
+    Results doc = loadUnlocked(path);
+    Results side;
+    side.context = doc.context;
+    std::vector<Record> kept;
+    for (auto& r : doc.records) (keep(r) ? kept : side.records).push_back(std::move(r));
+    if (side.records.empty()) return 0;
+    if (exists(sidePath)) {  // earlier moves stay: the new ones replace those of the same cell
+        Results old = load(sidePath);
+        old.records.insert(old.records.end(), side.records.begin(), side.records.end());
+        dedupe(old.records);
+        side.records = std::move(old.records);
+    }
+    const size_t moved = doc.records.size() - kept.size();
+    save(sidePath, side);  // first: a crash between the two saves keeps both copies, loses none
+    doc.records = std::move(kept);
+    save(path, doc);
+    return moved;
+}
+
 Results mergeResults(const std::vector<std::string>& paths, MergeStats* stats)
 {
     Results out;
@@ -430,9 +457,21 @@ Results mergeResults(const std::vector<std::string>& paths, MergeStats* stats)
 
 namespace {
 
-std::string csvField(const std::string& s)
+// Text a spreadsheet would run as a formula: a cell starting with = + - @
+// (or a tab or carriage return) that is not a plain number. Prefixed with
+// ' (OWASP's advice), which spreadsheets show and do not evaluate.
+bool formulaLike(const std::string& s)
 {
-    if (s.find_first_of(",\"\r\n") == std::string::npos) return s;
+    if (s.empty() || std::string("=+-@\t\r").find(s[0]) == std::string::npos) return false;
+    double v;
+    auto r = std::from_chars(s.data() + (s[0] == '+'), s.data() + s.size(), v);
+    return !(r.ec == std::errc() && r.ptr == s.data() + s.size());
+}
+
+std::string csvField(const std::string& in)
+{
+    const std::string s = formulaLike(in) ? "'" + in : in;
+    if (s.find_first_of(",\"\r\n'") == std::string::npos) return s;
     std::string q = "\"";
     for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
     return q + '"';

@@ -10,6 +10,7 @@
 #include "util/error.h"
 #include "util/fileio.h"
 #include "util/json_file.h"
+#include "util/process.h"
 
 #include <fmt/format.h>
 #include <nlopt.hpp>
@@ -857,10 +858,9 @@ json runTune(const TuneExperiment& e, const TuneOptions& opt)
         fs::path script = fs::path(LB_SOURCE_DIR) / "plots" / "tune.py";
         fs::path png = fs::path(opt.outDir) / "tune.png";
         if (fs::exists("/usr/bin/python3") && fs::exists(script)) {
-            std::string cmd =
-                fmt::format("/usr/bin/python3 '{}' '{}' '{}'", script.string(), out.string(), png.string());
-            if (std::system(cmd.c_str()) != 0)
-                fmt::print(stderr, "tune: warning: the convergence plot failed ({})\n", cmd);
+            if (util::runProcess({"/usr/bin/python3", script.string(), out.string(), png.string()}) != 0)
+                fmt::print(stderr, "tune: warning: the convergence plot failed ({} {} {})\n", script.string(),
+                           out.string(), png.string());
         }
     }
     return doc;
