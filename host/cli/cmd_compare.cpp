@@ -118,7 +118,8 @@ void addCompareCommand(CLI::App& app)
                   "flip is null when flip-evaluator cannot be imported");
     cmd->add_option("--png", a->png,
                     "Write PREFIX_ref.png, PREFIX_test.png (tone mapped) and PREFIX_err.png "
-                    "(orange too bright, blue too dark, white no error, magenta non-finite)");
+                    "(orange too bright, blue too dark, white no error, magenta non-finite)")
+        ->check(outFilePath());
     cmd->add_option("--k", a->k,
                     "Tone-mapping scale: display L/(1+L) of L = k E (default 1/mean(reference); "
                     "give one k to every row of a figure; positive and finite)");

@@ -40,7 +40,7 @@ void addLtcCommand(CLI::App& app)
     auto o = std::make_shared<ltc::FitOptions>();
     auto out = std::make_shared<std::string>();
     auto quiet = std::make_shared<bool>(false);
-    fit->add_option("--out", *out, "table file to write (JSON)")->required();
+    fit->add_option("--out", *out, "table file to write (JSON)")->required()->check(outFilePath());
     fit->add_option("--size", o->size, "cells per side (roughness x view angle)")->check(CLI::Range(2, 1024));
     fit->add_option("--samples", o->samples, "sample grid per side of the fit error")->check(CLI::Range(4, 1024));
     fit->add_option("--norm-panels", o->normPanels, "Gauss-Legendre panels per side of the albedo")

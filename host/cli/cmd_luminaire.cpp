@@ -122,7 +122,8 @@ void addLuminaireCommand(CLI::App& app)
     std::string kinds;
     for (const auto& k : photometry::synthKinds()) kinds += "\n  " + k + ": " + photometry::synthDescription(k);
     syn->add_option("kind", *kind, "Profile:" + kinds)->required();
-    syn->add_option("--out", *out, "Output file, FILE.ldt or FILE.ies (default: print the summary only)");
+    syn->add_option("--out", *out, "Output file, FILE.ldt or FILE.ies (default: print the summary only)")
+        ->check(outFilePath());
     syn->add_option("--flux", params->flux, "Luminous flux in lm")->capture_default_str();
     syn->add_option("--n", params->n, "Phong exponent")->capture_default_str();
     syn->add_option("--gamma-step", params->gammaStep, "Gamma step in degrees of the exact profiles")

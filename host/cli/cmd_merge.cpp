@@ -33,7 +33,8 @@ void addMergeCommand(CLI::App& app)
         "keeps one partner per scene: the later input's.");
     cmd->add_option("inputs", o->inputs, "Result directories (with results.json) or results files")->required();
     cmd->add_option("--out", o->out, "Output directory (DIR/results.json, results.csv, report.md, report.html, plots/)")
-        ->required();
+        ->required()
+        ->check(outDirPath());
     cmd->add_flag("--no-report", o->noReport, "Do not write report.md, report.html and plots");
     cmd->add_flag("--force", o->force, "Write into a non-empty --out directory (its results.json is replaced)");
     cmd->callback([o] {
@@ -55,7 +56,7 @@ void addMergeCommand(CLI::App& app)
         }
         std::vector<std::string> files;
         for (const auto& in : o->inputs)
-            files.push_back(fs::is_directory(in) ? (fs::path(in) / "results.json").string() : in);
+            files.push_back(fs::is_directory(in, ec) ? (fs::path(in) / "results.json").string() : in);
         results::MergeStats st;
         auto doc = results::mergeResults(files, &st);
         fs::create_directories(o->out);
@@ -65,9 +66,8 @@ void addMergeCommand(CLI::App& app)
         // Saved pictures come along, so the merged report can show them.
         for (const auto& in : o->inputs) {
             fs::path img = fs::path(in) / "images";
-            if (fs::is_directory(in) && fs::is_directory(img) && fs::absolute(in) != fs::absolute(o->out))
-                fs::copy(img, fs::path(o->out) / "images",
-                         fs::copy_options::recursive | fs::copy_options::overwrite_existing);
+            if (fs::is_directory(in, ec) && fs::is_directory(img, ec) && fs::absolute(in) != fs::absolute(o->out))
+                util::copyTreeAtomic(img.string(), (fs::path(o->out) / "images").string());
         }
         std::cerr << fmt::format("merged {} files: {} records in, {} out ({} replaced by a later one of the same "
                                  "cell) -> {}/results.json\n",

@@ -135,7 +135,9 @@ void addRenderOptions(CLI::App* cmd, RenderOpts& o)
     cmd->add_option("--extent", o.extent, "Side S of the imaged square (m, > 0, <= 1e4)")->capture_default_str();
     cmd->add_option("--precision", o.precision, "float or double")->capture_default_str();
     cmd->add_option("--device", o.device, "OpenCL device index >= 0 (lumibench devices)");
-    cmd->add_option("--out", o.out, "Output .exr (channel Y, lux); the reference also writes FILE.err.exr")->required();
+    cmd->add_option("--out", o.out, "Output .exr (channel Y, lux); the reference also writes FILE.err.exr")
+        ->required()
+        ->check(outFilePath());
     cmd->add_option("--reps", o.reps, "Timed runs after one warm-up (1 .. 1000)")->capture_default_str();
     cmd->add_flag("--json", o.json, "Print one JSON object describing the result");
     cmd->add_flag("--no-cache", o.noCache, "Do not read or write the reference cache ($LUMIBENCH_CACHE)");

@@ -30,7 +30,8 @@ void addRunCommand(CLI::App& app)
                     "a rerun resumes: it skips the cells already there and recomputes those "
                     "whose inputs changed (scene, method, reference, luminaire file content, "
                     "kernel sources, reps, time_res)")
-        ->required();
+        ->required()
+        ->check(outDirPath());
     cmd->add_option("--luminaires", o->luminaires,
                     "Use every .ldt/.ies file in this directory instead of the "
                     "experiment's list");
@@ -63,9 +64,13 @@ void addRunCommand(CLI::App& app)
         auto s = experiments::run(e, ro);
         std::cerr << fmt::format("[{}] shard {}/{}: {} scenes, {} cells ({} computed, {} of them recomputed because "
                                  "their inputs changed, {} already done), {} equal-time partners off, {:.1f} s -> "
-                                 "{}/results.json and results.csv\n",
+                                 "{}/results.json and results.csv{}\n",
                                  e.name, ro.shardK, ro.shardN, s.scenes, s.cells, s.computed, s.stale, s.skipped,
-                                 s.equalTimeOff, s.seconds, o->out);
+                                 s.equalTimeOff, s.seconds, o->out,
+                                 s.dropped ? fmt::format(" ({} records of cells no longer in the experiment moved to "
+                                                         "results.dropped.json)",
+                                                         s.dropped)
+                                           : "");
         if (!o->noReport) {
             std::string note = experiments::makePlots(o->out);
             if (!note.empty()) std::cerr << "lumibench: warning: plots not made: " << note << '\n';

@@ -45,7 +45,7 @@ void addSequenceCommand(CLI::App& app)
     cmd->add_option("--reference", o->reference, "Reference SPEC")->capture_default_str();
     cmd->add_option("--precision", o->precision, "float or double")->capture_default_str();
     cmd->add_option("--device", o->device, "OpenCL device index >= 0");
-    cmd->add_option("--out", o->out, "Output JSON file")->required();
+    cmd->add_option("--out", o->out, "Output JSON file")->required()->check(outFilePath());
     cmd->add_flag("--no-cache", o->noCache, "Do not read or write the reference cache");
     cmd->callback([o, cmd] {
         Scene base = sceneFromFlags(o->height, o->rotation, "1x1", 5.0, o->res);

@@ -31,7 +31,8 @@ void addStabilityCommand(CLI::App& app)
     cmd->add_flag("--quick", o->run.quick, "Only the quick subset of the catalogue (CI)");
     cmd->add_option("--case", o->run.cases, "Only these cases (repeatable)");
     cmd->add_option("--method", o->run.methods, "Only these method families (repeatable)");
-    cmd->add_option("--out", o->out, "Write DIR/stability.json, DIR/report.md and DIR/png/ (worst error images)");
+    cmd->add_option("--out", o->out, "Write DIR/stability.json, DIR/report.md and DIR/png/ (worst error images)")
+        ->check(outDirPath());
     cmd->add_option("--device", o->device, "OpenCL device index >= 0 (lumibench devices)");
     cmd->add_flag("--json", o->json, "Print the whole result as one JSON object");
     cmd->callback([o, cmd] {

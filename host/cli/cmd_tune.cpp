@@ -22,7 +22,7 @@ void addTuneCommand(CLI::App& app)
     auto o = std::make_shared<Opts>();
     auto* cmd = app.add_subcommand("tune", "Tune epsilons and sample placement with nlopt against NMSE");
     cmd->add_option("experiment", o->exp, "Tune experiment file, e.g. experiments/tune-smoke.json")->required();
-    cmd->add_option("--out", o->out, "Output directory (tune.json, tune.png)")->required();
+    cmd->add_option("--out", o->out, "Output directory (tune.json, tune.png)")->required()->check(outDirPath());
     cmd->add_option("--maxeval", o->maxeval, "Override the experiment's evaluation budget (1 .. 1e6)");
     cmd->add_option("--maxtime", o->maxtime, "Override the experiment's time budget (seconds, 0 .. 1e7, 0 = none)");
     cmd->add_option("--device", o->device, "OpenCL device index >= 0 (lumibench devices)");

@@ -25,6 +25,17 @@ void addBenchCommand(CLI::App& app);
 void addLtcCommand(CLI::App& app);
 void addSequenceCommand(CLI::App& app);
 
+// Every numeric flag of `app` and its subcommands parsed strictly: a plain
+// decimal number, the whole value (no empty value, no 0x10, no nan); call
+// after every command is registered.
+void strictNumericFlags(CLI::App& app);
+// Checks of an --out flag: a non-empty path that is a regular file or does
+// not exist yet (outFilePath), or a directory or does not exist yet
+// (outDirPath). A FIFO or device (/dev/null) is refused: it would block or
+// be replaced.
+CLI::Validator outFilePath();
+CLI::Validator outDirPath();
+
 // The normalized scene from the flags render and bench share, each
 // range-checked with a message naming the flag (limits in scene/scene.h;
 // cmd_render.cpp).

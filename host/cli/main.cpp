@@ -27,6 +27,7 @@ int main(int argc, char** argv)
     lb::cli::addBenchCommand(app);
     lb::cli::addLtcCommand(app);
     lb::cli::addSequenceCommand(app);
+    lb::cli::strictNumericFlags(app);
     try {
         // CLI11 reads "--opt=" as "--opt" and takes the next argument as its
         // value ("--method= --out x.exr" complained about --out): an empty

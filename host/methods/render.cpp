@@ -4,6 +4,7 @@
 #include "util/digest.h"
 #include "util/error.h"
 #include "util/fileio.h"
+#include "util/json_file.h"
 
 #include <fmt/format.h>
 
@@ -42,7 +43,7 @@ bool loadCached(const std::string& base, const std::string& key, int res, Render
     const std::string meta = base + ".json";
     if (!fs::exists(meta)) return false;
     try {
-        nlohmann::json j = nlohmann::json::parse(util::readFile(meta, "a reference cache entry", 1u << 20));
+        nlohmann::json j = util::readJson(meta, "a reference cache entry", 1u << 20);
         if (j.value("key", std::string()) != key || !j.contains("images"))
             throw Error("written by another version (no key and image digests)");
         auto readChecked = [&](const std::string& name) {

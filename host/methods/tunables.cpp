@@ -1,6 +1,7 @@
 #include "methods/tunables.h"
 
 #include "methods/registry.h"
+#include "util/check.h"
 #include "util/error.h"
 
 #include <fmt/format.h>
@@ -82,11 +83,14 @@ std::string Param::canonical(const std::string& method, const std::string& value
         throw InputError(fmt::format("method {}: bad value '{}' for {}: expected {}", method, value, name, allowed()));
     };
     if (kind == Kind::Real || kind == Kind::Int) {
-        if (value.empty()) bad();
-        errno = 0;
-        char* end = nullptr;
-        double v = std::strtod(value.c_str(), &end);
-        if (errno != 0 || end != value.c_str() + value.size() || !std::isfinite(v) || v < lo || v > hi) bad();
+        // Decimal only, the whole value (no 0x10, no empty value, no nan).
+        double v = 0;
+        try {
+            v = util::parseReal(name, value);
+        } catch (const InputError&) {
+            bad();
+        }
+        if (v < lo || v > hi) bad();
         if (kind == Kind::Int) {
             if (v != std::floor(v)) bad();
             return fmt::format("{}", static_cast<long>(v));

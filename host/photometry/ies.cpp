@@ -106,11 +106,23 @@ TokenCursor readTilt(const TextFile& f, IesExtra& x)
         int n = in.integer("the number of TILT angle-factor pairs", 1, kMaxAngles);
         x.tiltAngles.resize(n);
         x.tiltFactors.resize(n);
-        for (int k = 0; k < n; ++k) x.tiltAngles[k] = in.number(fmt::format("TILT angle {} of {}", k + 1, n));
+        // Lamp tilt angles in degrees: 0 .. 180, strictly increasing (a table
+        // interpolated in them).
+        for (int k = 0; k < n; ++k) {
+            size_t l = in.lineNo();
+            x.tiltAngles[k] = in.number(fmt::format("TILT angle {} of {}", k + 1, n));
+            if (!(x.tiltAngles[k] >= 0 && x.tiltAngles[k] <= 180))
+                f.fail(l, "a TILT angle in [0, 180] degrees", fmt::format("{}", x.tiltAngles[k]));
+            if (k > 0 && !(x.tiltAngles[k] > x.tiltAngles[k - 1]))
+                f.fail(l, fmt::format("TILT angles strictly increasing (after {})", x.tiltAngles[k - 1]),
+                       fmt::format("{}", x.tiltAngles[k]));
+        }
         for (int k = 0; k < n; ++k) {
             size_t l = in.lineNo();
             x.tiltFactors[k] = in.number(fmt::format("TILT factor {} of {}", k + 1, n));
-            if (x.tiltFactors[k] < 0) f.fail(l, "a TILT factor >= 0", fmt::format("{}", x.tiltFactors[k]));
+            // A multiplier of the candela values: 0 .. 10 (real tables stay near 1).
+            if (!(x.tiltFactors[k] >= 0 && x.tiltFactors[k] <= 10))
+                f.fail(l, "a TILT factor in [0, 10]", fmt::format("{}", x.tiltFactors[k]));
         }
     } else {
         f.fail(i + 1, "TILT=NONE or TILT=INCLUDE (a TILT file is not supported)", quote(tiltLine));

@@ -75,10 +75,17 @@ LdtHeader readHeader(LineCursor& in, const TextFile& f)
     h.ng = in.integer("the number of gamma angles Ng", 2, kMaxAngles);
     in.number("the gamma distance Dg");
     for (int i = 8; i <= 12; ++i) in.text(fmt::format("text field {}", i));
-    for (int i = 13; i <= 15; ++i) in.number(fmt::format("a luminaire dimension in mm (field {})", i));
-    h.lenMm = in.number("the length / diameter of the luminous area in mm (field 16)");
-    h.widMm = in.number("the width of the luminous area in mm (field 17)");
-    for (int i = 18; i <= 21; ++i) in.number(fmt::format("a luminous area height in mm (field {})", i));
+    // Fields 13-21 are lengths: a negative one is a damaged file, not a shape.
+    auto length = [&](const std::string& what) {
+        size_t l = in.lineNo();
+        double v = in.number(what);
+        if (v < 0) f.fail(l, what + " >= 0", fmt::format("{}", v));
+        return v;
+    };
+    for (int i = 13; i <= 15; ++i) length(fmt::format("a luminaire dimension in mm (field {})", i));
+    h.lenMm = length("the length / diameter of the luminous area in mm (field 16)");
+    h.widMm = length("the width of the luminous area in mm (field 17)");
+    for (int i = 18; i <= 21; ++i) length(fmt::format("a luminous area height in mm (field {})", i));
     in.number("the downward flux fraction DFF in % (field 22)");
     size_t lorLine = in.lineNo();
     h.lor = in.number("the light output ratio LOR in % (field 23)");

@@ -18,9 +18,12 @@ Table load(const std::string& pathIn)
     std::string path = pathIn;
     // The suite's own luminaires by short name: "lambert" -> luminaires/lambert.ldt.
     namespace fs = std::filesystem;
-    if (!fs::exists(path) && fs::path(path).extension().empty() && path.find('/') == std::string::npos) {
+    // error_code forms: a link loop or an unreadable directory is the reader's
+    // complaint (naming the file, exit 2), not an exception from here.
+    std::error_code ec;
+    if (!fs::exists(path, ec) && fs::path(path).extension().empty() && path.find('/') == std::string::npos) {
         fs::path own = fs::path(LB_SOURCE_DIR) / "luminaires" / (path + ".ldt");
-        if (fs::exists(own)) path = own.string();
+        if (fs::exists(own, ec)) path = own.string();
     }
     TextFile f = TextFile::read(path);
     std::string ext = fs::path(path).extension().string();

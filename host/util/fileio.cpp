@@ -26,6 +26,29 @@ TempOpener& opener()
     return o;
 }
 
+// "a FIFO", "a directory", ... for messages.
+std::string fileKind(const fs::file_status& st)
+{
+    switch (st.type()) {
+    case fs::file_type::regular:
+        return "a regular file";
+    case fs::file_type::directory:
+        return "a directory";
+    case fs::file_type::fifo:
+        return "a FIFO (named pipe)";
+    case fs::file_type::character:
+        return "a character device";
+    case fs::file_type::block:
+        return "a block device";
+    case fs::file_type::socket:
+        return "a socket";
+    case fs::file_type::not_found:
+        return "nothing (no such file)";
+    default:
+        return "not a regular file";
+    }
+}
+
 int openTemp(const std::string& tmp)
 {
     if (opener()) return opener()(tmp);
@@ -82,10 +105,18 @@ void syncDirectory(const std::string& path)
 
 std::string readFile(const std::string& path, const std::string& what, size_t maxBytes)
 {
-    std::error_code ec;
-    if (fs::is_directory(path, ec)) throw InputError(fmt::format("{}: expected {}, got a directory", path, what));
-    int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    // O_NONBLOCK: opening a FIFO without a writer would block; fstat then
+    // refuses everything but a regular file (FIFOs, devices such as
+    // /dev/zero, sockets), so no read can wait forever.
+    int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
     if (fd < 0) throw InputError(fmt::format("{}: cannot open {}: {}", path, what, std::strerror(errno)));
+    struct stat st {};
+    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        ::close(fd);
+        std::error_code ec;
+        throw InputError(fmt::format("{}: expected {}, got {}", path, what, fileKind(fs::status(path, ec))));
+    }
+    ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
     std::string out;
     char buf[65536];
     for (;;) {
@@ -110,33 +141,22 @@ std::string readFile(const std::string& path, const std::string& what, size_t ma
 namespace {
 
 // Where the bytes for `path` go: a symbolic link is followed (its target is
-// replaced, the link stays); an existing device, FIFO or socket (--out
-// /dev/null, a pipe) is written in place, since renaming a temporary over it
-// would replace the device node with a plain file.
-struct Target {
-    std::string path;
-    bool special = false;
-};
-
-Target resolveTarget(const std::string& path)
+// replaced, the link stays). An existing device, FIFO or socket is refused:
+// opening a FIFO for writing blocks until a reader comes, and renaming a
+// temporary over a device node would replace the node with a plain file.
+std::string resolveTarget(const std::string& path)
 {
     std::error_code ec;
-    Target t{path, false};
+    if (path.empty()) throw InputError("an output path is empty; expected a file path");
+    std::string real = path;
     if (fs::is_symlink(fs::symlink_status(path, ec))) {
-        fs::path real = fs::weakly_canonical(path, ec);
-        if (!ec) t.path = real.string();
+        fs::path p = fs::weakly_canonical(path, ec);
+        if (!ec) real = p.string();
     }
-    fs::file_status st = fs::status(t.path, ec);
-    t.special = !ec && fs::exists(st) && !fs::is_regular_file(st) && !fs::is_directory(st);
-    return t;
-}
-
-void writeInPlace(const std::string& path, const std::string& bytes)
-{
-    int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
-    if (fd < 0) throw Error(fmt::format("{}: cannot write: {}", path, std::strerror(errno)));
-    if (!writeAllAndClose(fd, bytes))
-        throw Error(fmt::format("{}: cannot write {} bytes: {}", path, bytes.size(), std::strerror(errno)));
+    fs::file_status st = fs::status(real, ec);
+    if (!ec && fs::exists(st) && !fs::is_regular_file(st))
+        throw InputError(fmt::format("{}: expected a regular file path for an output, got {}", path, fileKind(st)));
+    return real;
 }
 
 }  // namespace
@@ -144,14 +164,7 @@ void writeInPlace(const std::string& path, const std::string& bytes)
 void writeFilesAtomic(const std::vector<std::pair<std::string, std::string>>& input)
 {
     std::vector<std::pair<std::string, std::string>> files;
-    std::vector<std::pair<std::string, const std::string*>> special;
-    for (const auto& [path, bytes] : input) {
-        Target t = resolveTarget(path);
-        if (t.special)
-            special.push_back({t.path, &bytes});
-        else
-            files.push_back({t.path, bytes});
-    }
+    for (const auto& [path, bytes] : input) files.push_back({resolveTarget(path), bytes});
     std::vector<std::string> temps;
     auto removeTemps = [&] {
         for (const auto& t : temps) ::unlink(t.c_str());
@@ -180,34 +193,63 @@ void writeFilesAtomic(const std::vector<std::pair<std::string, std::string>>& in
                 fmt::format("{}: cannot write: rename from {} failed: {}", files[i].first, temps[i], std::strerror(e)));
         }
     for (const auto& f : files) syncDirectory(f.first);
-    for (const auto& [path, bytes] : special) writeInPlace(path, *bytes);
 }
 
 void writeFileAtomic(const std::string& path, const std::string& bytes) { writeFilesAtomic({{path, bytes}}); }
+
+namespace {
+
+// Whether `name` is NAME.tmp.PID or NAME.tmp.PID.SEQ (older lumibench wrote
+// the first) of a process that no longer runs.
+bool staleTemporary(const std::string& name)
+{
+    auto k = name.rfind(".tmp.");
+    if (k == std::string::npos || k == 0) return false;
+    std::string rest = name.substr(k + 5);
+    auto dot = rest.find('.');
+    std::string pid = rest.substr(0, dot), seq = dot == std::string::npos ? "1" : rest.substr(dot + 1);
+    auto digits = [](const std::string& s) {
+        return !s.empty() && s.size() <= 10 && s.find_first_not_of("0123456789") == std::string::npos;
+    };
+    if (!digits(pid) || !digits(seq)) return false;
+    long p = std::stol(pid);
+    return p <= 0 || (::kill(static_cast<pid_t>(p), 0) != 0 && errno == ESRCH);
+}
+
+}  // namespace
 
 size_t removeStaleTemporaries(const std::string& dir)
 {
     size_t removed = 0;
     std::error_code ec;
-    for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-        const std::string name = it->path().filename().string();
-        // NAME.tmp.PID or NAME.tmp.PID.SEQ (older lumibench wrote the first)
-        auto k = name.rfind(".tmp.");
-        if (k == std::string::npos || k == 0) continue;
-        std::string rest = name.substr(k + 5);
-        auto dot = rest.find('.');
-        std::string pid = rest.substr(0, dot), seq = dot == std::string::npos ? "1" : rest.substr(dot + 1);
-        auto digits = [](const std::string& s) {
-            return !s.empty() && s.size() <= 10 && s.find_first_not_of("0123456789") == std::string::npos;
-        };
-        if (!digits(pid) || !digits(seq)) continue;
-        long p = std::stol(pid);
-        if (p <= 0 || (::kill(static_cast<pid_t>(p), 0) != 0 && errno == ESRCH)) {
-            std::error_code rec;
-            if (fs::remove(it->path(), rec)) ++removed;
-        }
+    // Every level below: a killed run leaves them in images/SCENE/ too. Links
+    // are not followed, so nothing outside `dir` is touched.
+    for (fs::recursive_directory_iterator it(dir, fs::directory_options::none, ec), end; !ec && it != end;
+         it.increment(ec)) {
+        std::error_code sec;
+        if (!it->is_regular_file(sec) || !staleTemporary(it->path().filename().string())) continue;
+        if (fs::remove(it->path(), sec)) ++removed;
     }
     return removed;
+}
+
+void copyTreeAtomic(const std::string& from, const std::string& to)
+{
+    std::error_code ec;
+    fs::recursive_directory_iterator it(from, fs::directory_options::none, ec), end;
+    if (ec) throw Error(fmt::format("{}: cannot read the directory: {}", from, ec.message()));
+    for (; it != end; it.increment(ec)) {
+        if (ec) throw Error(fmt::format("{}: cannot read the directory: {}", from, ec.message()));
+        std::error_code sec;
+        if (it->is_symlink(sec) || !it->is_regular_file(sec)) continue;
+        const fs::path target = fs::path(to) / fs::relative(it->path(), from, sec);
+        fs::create_directories(target.parent_path(), sec);
+        if (sec)
+            throw Error(
+                fmt::format("{}: cannot create the directory: {}", target.parent_path().string(), sec.message()));
+        // Images are at most a few hundred MiB (16384^2 floats is 1 GiB: allow 4).
+        writeFileAtomic(target.string(), readFile(it->path().string(), "a file to copy", size_t(4) << 30));
+    }
 }
 
 void setTempOpenerForTesting(TempOpener o) { opener() = std::move(o); }

@@ -1,8 +1,9 @@
 // fileio.h -- the one way lumibench reads input files and writes output files.
 //
-// Reading: readFile() refuses directories and anything larger than a stated
-// limit before holding it in memory (a /dev/zero is stopped at the limit, a
-// directory says "is a directory"), with messages naming the file.
+// Reading: readFile() refuses anything but a regular file (directories,
+// FIFOs, devices such as /dev/zero, sockets: opened without blocking and
+// checked) and anything larger than a stated limit before holding it in
+// memory, with messages naming the file.
 //
 // Writing: every output (EXR, PNG, JSON, Markdown, LDT/IES, cache entries) is
 // written to a temporary file in the target directory, flushed to disk
@@ -14,8 +15,9 @@
 // leaves none of them.
 //
 // A symbolic link is followed (its target is replaced, the link kept); an
-// existing device, FIFO or socket (--out /dev/null) is written in place: a
-// rename would replace the device node itself.
+// existing device, FIFO or socket (--out /dev/null) is refused with an
+// lb::InputError: a FIFO would block until a reader comes, and a rename
+// would replace the device node itself. So is an empty path.
 //
 // Temporary files are named TARGET.tmp.PID.SEQ. One left behind by a killed
 // process (kill -9 cannot be caught) is removed by removeStaleTemporaries(),
@@ -45,9 +47,17 @@ void writeFileAtomic(const std::string& path, const std::string& bytes);
 // renamed. Throws lb::Error naming the path that failed.
 void writeFilesAtomic(const std::vector<std::pair<std::string, std::string>>& files);
 
-// Removes TARGET.tmp.PID[.SEQ] files in `dir` whose PID is not a running
-// process; returns how many were removed. Errors are ignored (best effort).
+// Removes TARGET.tmp.PID[.SEQ] files in `dir` and every directory below it
+// (links not followed) whose PID is not a running process; returns how many
+// were removed. Errors are ignored (best effort).
 size_t removeStaleTemporaries(const std::string& dir);
+
+// Copies every regular file below directory `from` to the same place below
+// `to` (directories created, existing files replaced), each file written
+// atomically as above: a full disk or a kill leaves each target whole or as
+// it was, never a 0-byte or truncated copy. Links and special files are
+// skipped. Throws lb::Error naming the file that failed.
+void copyTreeAtomic(const std::string& from, const std::string& to);
 
 // Tests: replaces how a temporary file is opened. The opener gets the
 // temporary path and returns a writable file descriptor (or -1 with errno

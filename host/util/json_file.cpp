@@ -14,14 +14,77 @@ namespace lb::util {
 
 using nlohmann::json;
 
-json readJson(const std::string& path, const std::string& what, size_t maxBytes)
+namespace {
+
+// A SAX pass over the text that checks what nlohmann's DOM parser accepts
+// silently (a repeated key: the last wins) or recurses on (nesting), before
+// the DOM is built.
+class StrictJson : public nlohmann::json_sax<json> {
+public:
+    StrictJson(std::string name, int maxDepth) : name_(std::move(name)), maxDepth_(maxDepth) {}
+
+    bool null() override { return true; }
+    bool boolean(bool) override { return true; }
+    bool number_integer(number_integer_t) override { return true; }
+    bool number_unsigned(number_unsigned_t) override { return true; }
+    bool number_float(number_float_t, const string_t&) override { return true; }
+    bool string(string_t&) override { return true; }
+    bool binary(binary_t&) override { return true; }
+    bool start_object(std::size_t) override { return open(true); }
+    bool start_array(std::size_t) override { return open(false); }
+    bool end_object() override { return close(); }
+    bool end_array() override { return close(); }
+    bool key(string_t& k) override
+    {
+        if (!keys_.back().insert(k).second)
+            throw InputError(fmt::format("{}: the key \"{}\" appears twice in one object (JSON leaves it to the "
+                                         "reader which one counts; give it once)",
+                                         name_, k));
+        return true;
+    }
+    bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& e) override
+    {
+        throw InputError(fmt::format("{}: not valid JSON: {}", name_, e.what()));
+    }
+
+private:
+    bool open(bool object)
+    {
+        if (static_cast<int>(keys_.size()) >= maxDepth_)
+            throw InputError(fmt::format("{}: JSON nested deeper than {} levels (objects and arrays inside each "
+                                         "other); the suite's files need far fewer",
+                                         name_, maxDepth_));
+        keys_.emplace_back();  // an array's set stays empty: key() is never called inside it
+        (void)object;
+        return true;
+    }
+    bool close()
+    {
+        keys_.pop_back();
+        return true;
+    }
+
+    std::string name_;
+    int maxDepth_;
+    std::vector<std::set<std::string>> keys_;  // per open object or array: the keys seen so far
+};
+
+}  // namespace
+
+json parseJson(const std::string& text, const std::string& name, int maxDepth)
 {
-    const std::string text = readFile(path, what, maxBytes);
+    StrictJson check(name, maxDepth);
+    json::sax_parse(text, &check);
     try {
         return json::parse(text);
-    } catch (const json::parse_error& e) {
-        throw InputError(fmt::format("{}: not valid JSON: {}", path, e.what()));
+    } catch (const json::exception& e) {  // the strict pass refuses all of these first
+        throw InputError(fmt::format("{}: not valid JSON: {}", name, e.what()));
     }
+}
+
+json readJson(const std::string& path, const std::string& what, size_t maxBytes, int maxDepth)
+{
+    return parseJson(readFile(path, what, maxBytes), path, maxDepth);
 }
 
 json readJsonObject(const std::string& path, const std::string& what, size_t maxBytes)

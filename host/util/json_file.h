@@ -14,9 +14,22 @@
 
 namespace lb::util {
 
+// How deep the suite's JSON may nest: objects and arrays inside each other.
+// Input files need a handful of levels; results files carry an experiment
+// file inside a record's context, hence twice as many there.
+constexpr int kMaxJsonDepth = 64;
+
+// `text` parsed as JSON, strictly: nesting deeper than maxDepth, a key
+// repeated in one object, a number too large for a double (1e400) and
+// anything not JSON are refused with an lb::InputError naming `name` (a file,
+// or a file and line) and the position. Every JSON the suite reads goes
+// through here.
+nlohmann::json parseJson(const std::string& text, const std::string& name, int maxDepth = kMaxJsonDepth);
+
 // The JSON document of a file of at most maxBytes ("PATH: not valid JSON: ..."
 // otherwise); `what` names the file's kind for readFile's complaints.
-nlohmann::json readJson(const std::string& path, const std::string& what, size_t maxBytes);
+nlohmann::json readJson(const std::string& path, const std::string& what, size_t maxBytes,
+                        int maxDepth = kMaxJsonDepth);
 // The same for a file that must hold an object ("PATH: expected a JSON object").
 nlohmann::json readJsonObject(const std::string& path, const std::string& what, size_t maxBytes);
 
