@@ -14,7 +14,8 @@ pictures are comparable (thesis 6.2).
     python3 plots/image_grid.py --out fig.png \\
         "cubature h=0.1=out/cub_h0.1" "MCI-40 h=0.1=out/mc40_h0.1"
 
-A row is LABEL=PREFIX (the label is what precedes the last '=') or just PREFIX.
+A row is LABEL=PREFIX or just PREFIX; where both hold '=', the PREFIX is the
+longest tail after an '=' whose pictures exist.
 """
 import argparse
 import json
@@ -35,12 +36,20 @@ ORANGE, BLUE, MAGENTA = (1.0, 128 / 255, 0.0), (0.0, 102 / 255, 1.0), (1.0, 0.0,
 
 
 def parse_row(spec):
-    """'label=prefix' or 'prefix' -> (label, prefix)."""
-    if "=" in spec:
-        label, prefix = spec.rsplit("=", 1)
-    else:
-        label, prefix = os.path.basename(spec), spec
-    return label, prefix
+    """'label=prefix' or 'prefix' -> (label, prefix).
+
+    Labels ("mc:n=8") and prefixes (a luminaire named "a=b") may both hold
+    '=': the prefix is the longest tail after an '=' whose pictures exist,
+    else what follows the last '='."""
+    if os.path.exists(spec + "_err.png"):
+        return os.path.basename(spec), spec
+    cuts = [i for i, c in enumerate(spec) if c == "="]
+    for i in cuts:
+        if os.path.exists(spec[i + 1:] + "_err.png"):
+            return spec[:i], spec[i + 1:]
+    if cuts:
+        return spec[:cuts[-1]], spec[cuts[-1] + 1:]
+    return os.path.basename(spec), spec
 
 
 def fmt(v, spec):

@@ -3,6 +3,7 @@
 #include "cl/runtime.h"
 #include "methods/spec.h"
 #include "util/check.h"
+#include "util/digest.h"
 #include "util/error.h"
 #include "util/fileio.h"
 #include "util/json_file.h"
@@ -210,8 +211,20 @@ std::string SceneId::label() const
     std::string rot;
     for (char c : rotationText) rot += (std::isalnum(static_cast<unsigned char>(c)) || c == '.') ? c : '-';
     const std::string a = kindKeys.kind == SceneKind::Specular ? fmt::format("_a{}", alpha) : "";
-    return fmt::format("{}_h{}_r{}{}_{}", fs::path(luminaire).stem().string(), height, rot, a, precision);
+    return fmt::format("{}-{}_h{}_r{}{}_{}", fs::path(luminaire).stem().string(),
+                       util::digestHex(luminaireName).substr(0, 6), height, rot, a, precision);
 }
+
+namespace {
+
+std::string luminaireName(const Experiment& e, const std::string& path)
+{
+    fs::path rel = fs::path(path).lexically_relative(e.luminaireDir);
+    if (rel.empty() || *rel.begin() == "..") return path;
+    return rel.generic_string();
+}
+
+}  // namespace
 
 std::vector<SceneId> scenes(const Experiment& e)
 {
@@ -223,6 +236,7 @@ std::vector<SceneId> scenes(const Experiment& e)
                     for (const auto& p : e.precisions) {
                         SceneId s;
                         s.luminaire = lum;
+                        s.luminaireName = luminaireName(e, lum);
                         s.height = h;
                         s.rotation = e.rotations[ri];
                         s.rotationText = e.rotationText[ri];

@@ -89,6 +89,10 @@ Experiment loadExperiment(const std::string& path, const Overrides& ov = {});
 
 struct SceneId {
     std::string luminaire;  // path as resolved
+    // The luminaire as records name it: its path relative to luminaire_dir
+    // ("lambert.ldt", "x/l.ldt"; as given when outside it), so that two files
+    // of one name in two folders are two luminaires.
+    std::string luminaireName;
     double height = 0, rotation = 0;
     std::string rotationText;
     std::string precision;
@@ -98,8 +102,9 @@ struct SceneId {
     double alpha = 0.25;  // specular: this scene's alpha (one of kindKeys.alphas)
     size_t index = 0;  // position in the enumeration (shard assignment)
     Scene scene() const;
-    // short, file-name safe: "lambert_h0.1_r3pi-4_float", specular scenes
-    // "lambert_h0.1_r3pi-4_a0.1_float"
+    // short, file-name safe: "lambert-1a2b3c_h0.1_r3pi-4_float", specular
+    // scenes "lambert-1a2b3c_h0.1_r3pi-4_a0.1_float"; 1a2b3c from a digest
+    // of luminaireName, so t.ldt and t.ies (or x/l.ldt and y/l.ldt) differ.
     std::string label() const;
 };
 

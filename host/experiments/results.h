@@ -25,6 +25,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -134,6 +135,13 @@ void appendRecord(const std::string& path, const nlohmann::json& context, const 
 // lock; creates the document with `context` and no records when neither
 // exists. A run ends with it, so that other tools read results.json alone.
 void compact(const std::string& path, const nlohmann::json& context);
+
+// Keeps in the results file at `path` only the records for which `keep`
+// is true; the others are appended to the results file `sidePath` (created
+// with the same context), so nothing is lost. Under the exclusive lock of
+// `path`, as appendRecord. Returns how many were moved; a missing file moves
+// none.
+size_t retain(const std::string& path, const std::function<bool(const Record&)>& keep, const std::string& sidePath);
 
 struct MergeStats {
     size_t files = 0, records_in = 0, records_out = 0, replaced = 0;

@@ -139,7 +139,7 @@ std::string changedInputs(const json& was, const json& now)
 results::Record baseRecord(const SceneId& sid, ocl::Runtime& rt)
 {
     results::Record r;
-    r.luminaire = fs::path(sid.luminaire).filename().string();
+    r.luminaire = sid.luminaireName;
     r.height = sid.height;
     r.rotation = sid.rotation;
     r.res = sid.res;
@@ -463,6 +463,9 @@ public:
             in["target_kernel"] = kernel(c.parsed.name);
             in["mc"] = methods::parseSpec(e_.mc, e_.kind()).canonical();
             in["equal_time_tolerance"] = e_.equalTimeTolerance;
+            in["equal_time_rounds"] = e_.equalTimeRounds;  // the pairing's rounds decide its N
+            in["equal_time_fit"] = e_.equalTimeFit;
+            in["mci_curve"] = e_.mciCurve;  // the measured t(N) the search starts from
         } else {
             in["kernel"] = kernel(c.parsed.name);
         }
@@ -572,8 +575,9 @@ public:
     {
         context_ = runContext();
         util::removeStaleTemporaries(opt_.outDir);  // left by a killed run
-        done_ = DoneCells::load(resultsPath_);
         cells_ = cellsOf(e_);
+        dropCellsNotInTheExperiment();
+        done_ = DoneCells::load(resultsPath_);
         for (const auto& s : scenes(e_))
             if (inShard(s, opt_.shardK, opt_.shardN)) mine_.push_back(s);
         sum_.scenes = mine_.size();
@@ -606,6 +610,20 @@ private:
                                      {"time_res", e_.timeRes},
                                      {"equal_time_tolerance", e_.equalTimeTolerance},
                                      {"shard", fmt::format("{}/{}", opt_.shardK, opt_.shardN)}});
+    }
+
+    // Every shard's cells count: shards may share one directory.
+    void dropCellsNotInTheExperiment()
+    {
+        std::set<std::string> wanted;
+        for (const auto& s : scenes(e_))
+            for (const auto& c : cells_) wanted.insert(cellKey(s, rt_, c));
+        const std::string side = (fs::path(opt_.outDir) / "results.dropped.json").string();
+        sum_.dropped = results::retain(
+            resultsPath_, [&](const results::Record& r) { return wanted.count(r.key()) > 0; }, side);
+        if (sum_.dropped && opt_.progress)
+            std::cerr << fmt::format("[{}] moved {} records of cells no longer in the experiment to {}\n", e_.name,
+                                     sum_.dropped, side);
     }
 
     // A scene's cells still to do: its reference, then each cell in order.

@@ -70,6 +70,10 @@ struct RunSummary {
     size_t stale = 0;  // in results.json but with other inputs: recomputed (counted in computed)
     size_t computed = 0;  // rendered now
     size_t equalTimeOff = 0;  // equal-time partners outside the tolerance
+    // Records of cells the experiment no longer has (another res, method,
+    // luminaire, ...), moved from results.json to results.dropped.json
+    // before the run, so that the report pools only this experiment's cells.
+    size_t dropped = 0;
     double seconds = 0;
 };
 
