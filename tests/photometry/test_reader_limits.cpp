@@ -160,8 +160,7 @@ TEST(ReaderLimits, DirectoriesAndEndlessFiles)
     EXPECT_EQ(inputErrorOf([&] { load(d.string()); }), d.string() + ": expected a luminaire file, got a directory");
     fs::remove_all(d);
     auto t0 = std::chrono::steady_clock::now();
-    EXPECT_EQ(inputErrorOf([&] { load("/dev/zero"); }),
-              "/dev/zero: expected a luminaire file of at most 16777216 bytes, got more");
+    EXPECT_EQ(inputErrorOf([&] { load("/dev/zero"); }), "/dev/zero: expected a luminaire file, got a character device");
     EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 5.0);
 }
 

@@ -74,24 +74,20 @@ TEST(AtomicWrite, WritesAndReplaces)
 }
 
 // Outputs that are not plain files: a FIFO (as --out /dev/null or a pipe) is
-// written in place and stays a FIFO (a rename would have replaced the node
-// with a plain file: run as root, `--out /dev/full` once turned /dev/full
-// into one); a symbolic link keeps being a link and its target gets the
-// bytes.
-TEST(AtomicWrite, SpecialFilesAndLinksAreWrittenThroughNotReplaced)
+// refused with an input error and stays a FIFO (writing would block until a
+// reader comes; a rename would replace the node with a plain file: run as
+// root, `--out /dev/full` once turned /dev/full into one); a symbolic link
+// keeps being a link and its target gets the bytes.
+TEST(AtomicWrite, SpecialFilesAreRefusedAndLinksWrittenThrough)
 {
     ASSERT_TRUE(fs::is_character_file("/dev/full")) << "/dev/full is not a device here; the full-disk tests need it";
     fs::path d = tmpDir("special");
     fs::path fifo = d / "pipe";
     ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-    int rd = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK);  // a reader, so the writer's open does not block
-    ASSERT_GE(rd, 0);
-    util::writeFileAtomic(fifo.string(), "through the pipe");
-    char buf[64] = {};
-    ssize_t n = ::read(rd, buf, sizeof buf);
-    ::close(rd);
-    EXPECT_EQ(std::string(buf, n > 0 ? size_t(n) : 0), "through the pipe");
+    EXPECT_THROW(util::writeFileAtomic(fifo.string(), "through the pipe"), InputError);  // no reader: would block
+    EXPECT_THROW(util::writeFileAtomic("/dev/full", "x"), InputError);
     EXPECT_TRUE(fs::is_fifo(fifo));
+    EXPECT_TRUE(fs::is_character_file("/dev/full"));
     EXPECT_EQ(entries(d), std::vector<std::string>{"pipe"});  // no temporary beside it
 
     util::writeFileAtomic((d / "real.json").string(), "old");
@@ -180,10 +176,19 @@ TEST(ReadFile, NamesDirectoriesAndStopsAtTheLimit)
     } catch (const InputError& e) {
         EXPECT_EQ(std::string(e.what()), d.string() + ": expected a luminaire file, got a directory");
     }
-    // /dev/zero never ends: reading must stop at the limit, not at memory's end.
+    // /dev/zero never ends: a device is refused before any read.
     auto t0 = std::chrono::steady_clock::now();
     EXPECT_THROW(util::readFile("/dev/zero", "a luminaire file", 1u << 20), InputError);
     EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 5.0);
+    // A regular file over the limit: refused at the limit, naming it.
+    std::ofstream(d / "big") << std::string(2000, 'x');
+    try {
+        util::readFile((d / "big").string(), "a luminaire file", 1000);
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  (d / "big").string() + ": expected a luminaire file of at most 1000 bytes, got more");
+    }
     EXPECT_THROW(util::readFile((d / "missing").string(), "x", 10), InputError);
 }
 
