@@ -15,9 +15,9 @@
 //      cos phi), X = (cos phi, 0, -sin phi), Y = (0, 1, 0): every M^-1 of the
 //      kernels' form (4 numbers up to scale). Frame::Fixed is Heitz's: Z =
 //      Z_avg, 3 parameters (m11, m22, m13); Frame::Free fits phi as well (4
-//      parameters). The LTC's own horizon is the plane normal to M^T e_z; with
-//      Z pinned to the mean direction it is tilted against the real horizon,
-//      mass falls below it and the lobe's back tail is cut. Nelder-Mead (nlopt
+//      parameters). The LTC's own horizon is the plane normal to M^-T e_z;
+//      with Z pinned to the mean direction it is tilted against the
+//      receiver's, mass falls below that and the lobe's back tail is cut. Nelder-Mead (nlopt
 //      LN_NELDERMEAD, initial step 0.05) minimises
 //        (1/N) sum over both sample sets of |norm D(w) - f_r cos|^p / (pdf_ltc + pdf_brdf)
 //      over an N = samples^2 midpoint grid drawn once from the LTC and once
@@ -81,8 +81,9 @@ double albedo(double alpha, double theta, int normPanels = 32);
 // cos| dw / norm over the sphere, estimated independently of the fit's
 // samples (balance heuristic over two ns^2 midpoint grids, one through the
 // VNDF sampler, one through the LTC's cosine sampling), and the LTC's mass
-// below the receiver's horizon, int_{z < 0} D dw (exact: (1 - cos b) / 2, b
-// the angle between the LTC's horizon normal M^T e_z and e_z).
+// below the receiver's horizon, int_{z < 0} D dw (exact: the cosine's mass
+// outside M^-1 {z > 0} = {w : (M^T e_z) . w > 0}, (1 - cos b) / 2, b the
+// angle between M^T e_z and e_z).
 double l1Distance(const double* c, double alpha, double theta, int ns = 64);
 double massBelowHorizon(const double* c);
 // The LTC the kernels use at (alpha, theta_o): lb_ltc_lookup on packed(t).
