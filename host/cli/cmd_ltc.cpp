@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <map>
 #include <memory>
 
 namespace lb::cli {
@@ -74,17 +73,18 @@ void addLtcCommand(CLI::App& app)
         ->check(CLI::Range(4, 1024));
     fit->add_option("--max-eval", o->maxEval, "Nelder-Mead evaluations per cell at most")
         ->check(CLI::Range(10, 100000));
-    std::map<std::string, ltc::Frame> frames{{"fixed", ltc::Frame::Fixed}, {"free", ltc::Frame::Free}};
-    std::map<std::string, ltc::Objective> objectives{{"l3", ltc::Objective::L3}, {"l1", ltc::Objective::L1}};
-    fit->add_option("--frame", o->frame,
+    auto frame = std::make_shared<std::string>("free"), objective = std::make_shared<std::string>("l1");
+    fit->add_option("--frame", *frame,
                     "free: the LTC's frame fitted too (default); fixed: pinned to the lobe's mean direction "
                     "(Heitz et al.)")
-        ->transform(CLI::CheckedTransformer(frames, CLI::ignore_case));
-    fit->add_option("--objective", o->objective,
+        ->check(CLI::IsMember({"fixed", "free"}));
+    fit->add_option("--objective", *objective,
                     "l1: the L1 distance to the lobe (default); l3: Heitz et al.'s cubed difference")
-        ->transform(CLI::CheckedTransformer(objectives, CLI::ignore_case));
+        ->check(CLI::IsMember({"l1", "l3"}));
     fit->add_flag("--quiet", *quiet, "no per-cell lines");
-    fit->callback([o, out, quiet] {
+    fit->callback([o, out, quiet, frame, objective] {
+        o->frame = *frame == "fixed" ? ltc::Frame::Fixed : ltc::Frame::Free;
+        o->objective = *objective == "l3" ? ltc::Objective::L3 : ltc::Objective::L1;
         FitPrint p{*quiet};
         ltc::Table t = ltc::fit(*o, printCell, &p);
         ltc::write(t, *out);
