@@ -80,6 +80,16 @@ struct Ltc {
     }
 };
 
+// The LTC of the kernels' M^-1 = [[m[0], 0, m[1]], [0, 1, 0], [m[2], 0, m[3]]].
+Ltc fromInverse(const double* m)
+{
+    Ltc l;
+    l.invM = M3{{{m[0], 0, m[1]}, {0, 1, 0}, {m[2], 0, m[3]}}};
+    l.M = inverse(l.invM);
+    l.detInv = std::fabs(det(l.invM));
+    return l;
+}
+
 // The BRDF side: f_r cos and the VNDF sampler of kernels/common/ggx.h.
 struct Brdf {
     V3 V;
@@ -161,30 +171,43 @@ double albedoGL(const Brdf& b, int panels)
     return 2 * sum;
 }
 
-struct Objective {
+// The frame of ltc.h step 2 at the angle phi in the xz plane: Z = (sin phi, 0, cos phi).
+void setFrame(Ltc& l, double phi)
+{
+    l.Z = {std::sin(phi), 0, std::cos(phi)};
+    l.X = {std::cos(phi), 0, -std::sin(phi)};
+    l.Y = {0, 1, 0};
+}
+
+// The fit's error as a function of the parameters x: (m11) with m22 = m11,
+// m13 = 0 (isotropic, 1 parameter); (m11, m22, m13) in the given frame (3);
+// (m11, m22, m13, phi), the frame's angle free (4).
+struct FitError {
     const Brdf* brdf;
     Ltc* ltc;
     double norm;
     int ns;
-    bool isotropic;
-    double power;
+    int nparams;
+    bool cubed;  // Objective::L3
     int evals = 0;
     void apply(const std::vector<double>& x) const
     {
         ltc->m11 = std::max(x[0], 1e-7);
-        if (isotropic) {
+        if (nparams == 1) {
             ltc->m22 = ltc->m11;
             ltc->m13 = 0;
         } else {
             ltc->m22 = std::max(x[1], 1e-7);
             ltc->m13 = x[2];
         }
+        if (nparams == 4) setFrame(*ltc, x[3]);
         ltc->update();
     }
-    // Heitz's error (power 3) and the L1 distance / norm, same samples.
-    void errors(double* cubed, double* l1) const
+    // The objective (cubed: Heitz's; else the L1 distance) and the L1
+    // distance / norm, same samples.
+    void errors(double* e, double* l1) const
     {
-        double e = 0, a = 0;
+        double s = 0, a = 0;
         for (int j = 0; j < ns; ++j)
             for (int i = 0; i < ns; ++i) {
                 double u1 = (i + 0.5) / ns, u2 = (j + 0.5) / ns;
@@ -195,23 +218,99 @@ struct Objective {
                     double den = d + pb;
                     if (!(den > 0)) continue;
                     double diff = std::fabs(brdf->fcos(L) - norm * d);
-                    e += (power == 3 ? diff * diff * diff : std::pow(diff, power)) / den;
+                    s += (cubed ? diff * diff * diff : diff) / den;
                     a += diff / den;
                 }
             }
-        *cubed = e / (double(ns) * ns);
+        *e = s / (double(ns) * ns);
         *l1 = a / (double(ns) * ns) / (norm > 0 ? norm : 1);
     }
 };
 
 double objective(const std::vector<double>& x, std::vector<double>&, void* data)
 {
-    auto* o = static_cast<Objective*>(data);
+    auto* o = static_cast<FitError*>(data);
     o->apply(x);
     ++o->evals;
     double e, l1;
     o->errors(&e, &l1);
     return std::isfinite(e) ? e : 1e300;
+}
+
+// Nelder-Mead from x (ltc.h step 2); the cell of the minimum found.
+Cell minimise(const FitOptions& o, const Brdf& b, double norm, Ltc& ltc, std::vector<double> x)
+{
+    int np = static_cast<int>(x.size());
+    FitError err{&b, &ltc, norm, o.samples, np, o.objective == Objective::L3};
+    nlopt::opt opt(nlopt::LN_NELDERMEAD, static_cast<unsigned>(np));
+    opt.set_min_objective(objective, &err);
+    std::vector<double> lo(x.size(), -1e30);
+    lo[0] = 1e-7;
+    if (np > 1) lo[1] = 1e-7;
+    opt.set_lower_bounds(lo);
+    opt.set_initial_step(0.05);
+    opt.set_ftol_rel(1e-7);
+    opt.set_xtol_rel(1e-7);
+    opt.set_maxeval(o.maxEval);
+    double fbest = 0;
+    try {
+        opt.optimize(x, fbest);
+    } catch (const nlopt::roundoff_limited&) {
+        // x holds the best point found
+    }
+    err.apply(x);
+    Cell c;
+    c.m11 = ltc.m11;
+    c.m22p = ltc.m22;
+    c.m13 = ltc.m13;
+    c.phi = std::atan2(ltc.Z[0], ltc.Z[2]);
+    const M3& inv = ltc.invM;
+    double s = inv[1][1];
+    c.m00 = inv[0][0] / s;
+    c.m02 = inv[0][2] / s;
+    c.m20 = inv[2][0] / s;
+    c.m22 = inv[2][2] / s;
+    c.norm = norm;
+    err.errors(&c.error, &c.l1);
+    return c;
+}
+
+// Cell (i, j) of the fit, warm-started (ltc.h step 3) from the cells before
+// it; phiAvgPrev: the mean direction's angle at (i, j - 1).
+Cell fitCell(const FitOptions& o, const Table& t, int i, int j, double* phiAvgPrev)
+{
+    double alpha = t.alpha(i), theta = t.theta(j);
+    Brdf b{V3{std::sin(theta), 0, std::cos(theta)}, alpha};
+    double norm = albedoGL(b, o.normPanels);
+    V3 avg = averageDirection(b, o.samples);
+    double phiAvg = std::atan2(avg[0], avg[2]);
+    Ltc ltc;
+    std::vector<double> x;
+    if (j == 0) {
+        // the lobe is symmetric about the normal: one parameter
+        const Cell* prev = i + 1 < o.size ? &t.at(i + 1, 0) : nullptr;
+        ltc.m11 = prev ? prev->m11 : 1;
+        ltc.m22 = prev ? prev->m22p : 1;
+        x = {ltc.m11};
+    } else {
+        const Cell& prev = t.at(i, j - 1);
+        ltc.m11 = prev.m11;
+        ltc.m22 = prev.m22p;
+        ltc.m13 = prev.m13;
+        if (o.frame == Frame::Fixed) {
+            ltc.Z = avg;
+            ltc.X = {avg[2], 0, -avg[0]};
+            x = {ltc.m11, ltc.m22, ltc.m13};
+        } else {
+            // the previous cell's frame turned as the mean direction turned
+            double phi = prev.phi + (phiAvg - *phiAvgPrev);
+            setFrame(ltc, phi);
+            x = {ltc.m11, ltc.m22, ltc.m13, phi};
+        }
+    }
+    ltc.update();
+    *phiAvgPrev = phiAvg;
+    return minimise(o, b, norm, ltc, x);
 }
 
 }  // namespace
@@ -226,11 +325,33 @@ double Table::theta(int j) const { return std::min(double(j) / (options.size - 1
 
 double ltcDensity(const Cell& c, double wx, double wy, double wz)
 {
-    M3 inv{{{c.m00, 0, c.m02}, {0, 1, 0}, {c.m20, 0, c.m22}}};
-    Ltc l;
-    l.invM = inv;
-    l.detInv = std::fabs(det(inv));
-    return l.eval(normalized(V3{wx, wy, wz}));
+    double m[4] = {c.m00, c.m02, c.m20, c.m22};
+    return fromInverse(m).eval(normalized(V3{wx, wy, wz}));
+}
+
+double l1Distance(const double* c, double alpha, double theta, int ns)
+{
+    Ltc l = fromInverse(c);
+    Brdf b{V3{std::sin(theta), 0, std::cos(theta)}, alpha};
+    double sum = 0;
+    for (int j = 0; j < ns; ++j)
+        for (int i = 0; i < ns; ++i) {
+            double u1 = (i + 0.5) / ns, u2 = (j + 0.5) / ns;
+            for (const V3& L : {l.sample(u1, u2), b.sample(u1, u2)}) {
+                double d = l.eval(L), p = d + b.pdf(L);
+                if (p > 0) sum += std::fabs(c[4] * d - b.fcos(L)) / p;
+            }
+        }
+    return sum / (double(ns) * ns) / (c[4] > 0 ? c[4] : 1);
+}
+
+double massBelowHorizon(const double* c)
+{
+    // D's mass in {z > 0} is the cosine's in M^-1 {z > 0} = {w : (M^T e_z) . w > 0}
+    Ltc l = fromInverse(c);
+    V3 h{l.M[2][0], l.M[2][1], l.M[2][2]};
+    double cb = h[2] / std::sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
+    return (1 - cb) / 2;
 }
 
 double albedo(double alpha, double theta, int normPanels)
@@ -246,65 +367,13 @@ Table fit(const FitOptions& o, void (*progress)(const Table&, int, int, void*), 
     t.options = o;
     int n = o.size;
     t.cells.assign(static_cast<size_t>(n) * n, Cell{});
-    Ltc ltc;
-    for (int i = n - 1; i >= 0; --i)
+    for (int i = n - 1; i >= 0; --i) {
+        double phiAvgPrev = 0;
         for (int j = 0; j < n; ++j) {
-            double alpha = t.alpha(i), theta = t.theta(j);
-            Brdf b{V3{std::sin(theta), 0, std::cos(theta)}, alpha};
-            double norm = albedoGL(b, o.normPanels);
-            V3 avg = averageDirection(b, o.samples);
-            bool iso = j == 0;
-            if (iso) {
-                ltc.X = {1, 0, 0};
-                ltc.Y = {0, 1, 0};
-                ltc.Z = {0, 0, 1};
-                if (i == n - 1) {
-                    ltc.m11 = ltc.m22 = 1;
-                } else {
-                    const Cell& prev = t.at(i + 1, 0);
-                    ltc.m11 = prev.m11;
-                    ltc.m22 = prev.m22p;
-                }
-                ltc.m13 = 0;
-            } else {
-                ltc.Z = avg;
-                ltc.X = {avg[2], 0, -avg[0]};
-                ltc.Y = {0, 1, 0};
-            }
-            ltc.update();
-            Objective obj{&b, &ltc, norm, o.samples, iso, o.power};
-            std::vector<double> x = iso ? std::vector<double>{ltc.m11} : std::vector<double>{ltc.m11, ltc.m22, ltc.m13};
-            nlopt::opt opt(nlopt::LN_NELDERMEAD, static_cast<unsigned>(x.size()));
-            opt.set_min_objective(objective, &obj);
-            std::vector<double> lo(x.size(), -1e30);
-            lo[0] = 1e-7;
-            if (!iso) lo[1] = 1e-7;
-            opt.set_lower_bounds(lo);
-            opt.set_initial_step(0.05);
-            opt.set_ftol_rel(1e-7);
-            opt.set_xtol_rel(1e-7);
-            opt.set_maxeval(o.maxEval);
-            double fbest = 0;
-            try {
-                opt.optimize(x, fbest);
-            } catch (const nlopt::roundoff_limited&) {
-                // x holds the best point found
-            }
-            obj.apply(x);
-            Cell& c = t.cells[static_cast<size_t>(j) * n + i];
-            c.m11 = ltc.m11;
-            c.m22p = ltc.m22;
-            c.m13 = ltc.m13;
-            const M3& inv = ltc.invM;
-            double s = inv[1][1];
-            c.m00 = inv[0][0] / s;
-            c.m02 = inv[0][2] / s;
-            c.m20 = inv[2][0] / s;
-            c.m22 = inv[2][2] / s;
-            c.norm = norm;
-            obj.errors(&c.error, &c.l1);
+            t.cells[static_cast<size_t>(j) * n + i] = fitCell(o, t, i, j, &phiAvgPrev);
             if (progress) progress(t, i, j, user);
         }
+    }
     return t;
 }
 

@@ -1,25 +1,35 @@
 // ltc.h -- the suite's own LTC table for the GGX BRDF of DESIGN section 8
-// (kernels/common/ltc.h evaluates it): the fit of Heitz et al. 2016, the
-// table file and its packing for the kernels.
+// (kernels/common/ltc.h evaluates it): the fit, the table file and its
+// packing for the kernels.
 //
-// The fit (Heitz, Dupuy, Hill, Neubelt 2016, their published procedure):
-// for each cell of an n x n grid, roughness sqrt(alpha) = i / (n - 1)
-// (alpha at least alphaMin) and theta_o = j / (n - 1) * pi / 2 (at most
-// thetaMax), the view w_o = (sin theta_o, 0, cos theta_o);
+// The fit (Heitz, Dupuy, Hill, Neubelt 2016's procedure, with the LTC's
+// frame free and the L1 distance as the objective by default): for each cell
+// of an n x n grid, roughness sqrt(alpha) = i / (n - 1) (alpha at least
+// alphaMin) and theta_o = j / (n - 1) * pi / 2 (at most thetaMax), the view
+// w_o = (sin theta_o, 0, cos theta_o);
 //   1. norm = int f_r cos dw (the directional albedo) by Gauss-Legendre over
 //      the half vector (normPanels^2 panels of 8 x 8 nodes, fit.cpp albedoGL)
-//      and the lobe's mean direction Z = normalize(int f_r cos w dw) (its y
-//      part dropped) by a samples^2 midpoint grid through the VNDF sampler;
-//   2. M = [X Y Z] [[m11, 0, m13], [0, m22, 0], [0, 0, 1]], X = (Z_z, 0, -Z_x),
-//      Y = (0, 1, 0), the parameters (m11, m22, m13) found by Nelder-Mead
-//      (nlopt LN_NELDERMEAD, initial step 0.05) minimising Heitz's error
-//        (1/N) sum over both sample sets of |norm D(w) - f_r cos|^3 / (pdf_ltc + pdf_brdf)
+//      and the lobe's mean direction Z_avg = normalize(int f_r cos w dw) (its
+//      y part dropped) by a samples^2 midpoint grid through the VNDF sampler;
+//   2. M = [X Y Z] [[m11, 0, m13], [0, m22, 0], [0, 0, 1]], Z = (sin phi, 0,
+//      cos phi), X = (cos phi, 0, -sin phi), Y = (0, 1, 0): every M^-1 of the
+//      kernels' form (4 numbers up to scale). Frame::Fixed is Heitz's: Z =
+//      Z_avg, 3 parameters (m11, m22, m13); Frame::Free fits phi as well (4
+//      parameters). The LTC's own horizon is the plane normal to M^-T e_z;
+//      with Z pinned to the mean direction it is tilted against the
+//      receiver's, mass falls below that and the lobe's back tail is cut. Nelder-Mead (nlopt
+//      LN_NELDERMEAD, initial step 0.05) minimises
+//        (1/N) sum over both sample sets of |norm D(w) - f_r cos|^p / (pdf_ltc + pdf_brdf)
 //      over an N = samples^2 midpoint grid drawn once from the LTC and once
-//      from the BRDF (VNDF here; Heitz drew from D); at theta_o = 0 the lobe
-//      is symmetric: m22 = m11, m13 = 0, one parameter;
+//      from the BRDF (VNDF here; Heitz drew from D): p = 3 (Objective::L3,
+//      Heitz's) or p = 1 (Objective::L1: the balance-heuristic estimate of the
+//      L1 distance int |norm D - f_r cos| dw, which bounds every polygon's
+//      error); at theta_o = 0 the lobe is symmetric: m22 = m11, m13 = 0,
+//      phi = 0, one parameter;
 //   3. warm start as Heitz: roughness from 1 down, theta_o from 0 up; each
-//      cell starts from the previous theta_o's parameters, theta_o = 0 from
-//      the next rougher cell's.
+//      cell starts from the previous theta_o's parameters (Frame::Free: its
+//      phi turned by the change of the mean direction's angle), theta_o = 0
+//      from the next rougher cell's.
 // Deterministic: fixed grids, no random numbers, one thread.
 #pragma once
 
@@ -28,6 +38,9 @@
 
 namespace lb::ltc {
 
+enum class Frame { Fixed, Free };
+enum class Objective { L3, L1 };
+
 struct FitOptions {
     int size = 64;  // n: cells per side
     int samples = 32;  // per side of the error's sample grid (Heitz: 32)
@@ -35,7 +48,8 @@ struct FitOptions {
     double alphaMin = 1e-4;  // alpha of the roughness-0 row
     double thetaMax = 1.57;  // theta_o of the last column (Heitz: 1.57)
     int maxEval = 400;  // Nelder-Mead evaluations per cell at most
-    double power = 3;  // exponent of the error |norm D - f_r cos| (Heitz: 3)
+    Frame frame = Frame::Free;  // Heitz: Fixed
+    Objective objective = Objective::L1;  // Heitz: L3
 };
 
 struct Cell {
@@ -43,7 +57,7 @@ struct Cell {
     double norm = 0;  // int f_r cos dw
     double error = 0;  // Heitz's objective at the fit
     double l1 = 0;  // int |norm D - f_r cos| dw / norm (same samples)
-    double m11 = 1, m22p = 1, m13 = 0;  // the fitted parameters (warm start)
+    double m11 = 1, m22p = 1, m13 = 0, phi = 0;  // the fitted parameters (warm start)
 };
 
 struct Table {
@@ -61,6 +75,25 @@ Table fit(const FitOptions& o, void (*progress)(const Table&, int i, int j, void
 // directional albedo by the fit's own quadrature (for tests).
 double ltcDensity(const Cell& c, double wx, double wy, double wz);
 double albedo(double alpha, double theta, int normPanels = 32);
+
+// Quality of an LTC c = (m00, m02, m20, m22, norm) (a cell's or an
+// interpolated one) at (alpha, theta_o): the L1 distance int |norm D - f_r
+// cos| dw / norm over the sphere, estimated independently of the fit's
+// samples (balance heuristic over two ns^2 midpoint grids, one through the
+// VNDF sampler, one through the LTC's cosine sampling), and the LTC's mass
+// below the receiver's horizon, int_{z < 0} D dw (exact: the cosine's mass
+// outside M^-1 {z > 0} = {w : (M^T e_z) . w > 0}, (1 - cos b) / 2, b the
+// angle between M^T e_z and e_z).
+double l1Distance(const double* c, double alpha, double theta, int ns = 64);
+double massBelowHorizon(const double* c);
+// The LTC the kernels use at (alpha, theta_o): lb_ltc_lookup on packed(t).
+void lookup(const std::vector<float>& packedTable, double alpha, double theta, double* c);
+
+// Per alpha and theta_o range, the mean L1 distance (l1Distance) at the
+// table's theta_o nodes and at the midpoints between them (the bilinear
+// lookup), and the mean mass below the horizon, of `t` and (when given)
+// `against` side by side: a Markdown table.
+std::string qualitySummary(const Table& t, const Table* against, int ns = 64);
 
 // The table file (JSON, doubles in round-trip precision): written atomically,
 // read with clear errors (InputError naming the file and what was expected).

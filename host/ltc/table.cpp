@@ -10,13 +10,17 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <functional>
 #include <mutex>
 
 namespace lb::ltc {
 
 namespace {
 constexpr const char* kFormat = "lumibench-ltc-ggx";
-constexpr int kVersion = 1;
+constexpr int kVersion = 2;  // 1: no frame, objective, phi (Heitz's fit: fixed, l3)
+
+const char* frameName(Frame f) { return f == Frame::Fixed ? "fixed" : "free"; }
+const char* objectiveName(Objective o) { return o == Objective::L3 ? "l3" : "l1"; }
 }  // namespace
 
 std::string toJson(const Table& t)
@@ -33,10 +37,12 @@ std::string toJson(const Table& t)
     j["alpha_min"] = t.options.alphaMin;
     j["theta_max"] = t.options.thetaMax;
     j["max_eval"] = t.options.maxEval;
-    j["columns"] = {"m00", "m02", "m20", "m22", "norm", "error", "l1", "m11", "m22p", "m13"};
+    j["frame"] = frameName(t.options.frame);
+    j["objective"] = objectiveName(t.options.objective);
+    j["columns"] = {"m00", "m02", "m20", "m22", "norm", "error", "l1", "m11", "m22p", "m13", "phi"};
     nlohmann::json cells = nlohmann::json::array();
     for (const Cell& c : t.cells)
-        cells.push_back({c.m00, c.m02, c.m20, c.m22, c.norm, c.error, c.l1, c.m11, c.m22p, c.m13});
+        cells.push_back({c.m00, c.m02, c.m20, c.m22, c.norm, c.error, c.l1, c.m11, c.m22p, c.m13, c.phi});
     j["cells"] = std::move(cells);
     // one cell per line: diffable, and the numbers round-trip exactly
     std::string s = "{\n";
@@ -55,6 +61,53 @@ std::string toJson(const Table& t)
 
 void write(const Table& t, const std::string& path) { util::writeFileAtomic(path, toJson(t)); }
 
+namespace {
+
+// The options of a version 1 or 2 file (version 1: Heitz's fixed frame, l3).
+FitOptions readOptions(const std::function<const nlohmann::json&(const char*)>& need, int version,
+                       const std::string& path)
+{
+    FitOptions o;
+    o.size = need("size").get<int>();
+    o.samples = need("samples").get<int>();
+    o.normPanels = need("norm_panels").get<int>();
+    o.alphaMin = need("alpha_min").get<double>();
+    o.thetaMax = need("theta_max").get<double>();
+    o.maxEval = need("max_eval").get<int>();
+    o.frame = Frame::Fixed;
+    o.objective = Objective::L3;
+    if (version == 1) return o;
+    std::string f = need("frame").get<std::string>(), ob = need("objective").get<std::string>();
+    if (f != "fixed" && f != "free")
+        throw InputError(fmt::format("{}: frame \"{}\" (expected \"fixed\" or \"free\")", path, f));
+    if (ob != "l3" && ob != "l1")
+        throw InputError(fmt::format("{}: objective \"{}\" (expected \"l3\" or \"l1\")", path, ob));
+    o.frame = f == "fixed" ? Frame::Fixed : Frame::Free;
+    o.objective = ob == "l3" ? Objective::L3 : Objective::L1;
+    return o;
+}
+
+// Cell k: 10 numbers (version 1; phi from M^-1: M's first column is m11 X,
+// X = (cos phi, 0, -sin phi)) or 11 (version 2).
+Cell readCell(const nlohmann::json& r, int version, size_t k, const std::string& path)
+{
+    size_t want = version == 1 ? 10 : 11;
+    if (!r.is_array() || r.size() != want)
+        throw InputError(fmt::format("{}: cell {}: expected {} numbers", path, k, want));
+    Cell c;
+    double* f[11] = {&c.m00, &c.m02, &c.m20, &c.m22, &c.norm, &c.error, &c.l1, &c.m11, &c.m22p, &c.m13, &c.phi};
+    for (size_t q = 0; q < want; ++q) {
+        *f[q] = r[q].get<double>();
+        if (!std::isfinite(*f[q])) throw InputError(fmt::format("{}: cell {}: non-finite value", path, k));
+    }
+    if (version == 1) c.phi = std::atan2(c.m20, c.m22);
+    if (!(c.norm >= 0 && c.norm <= 1.0 + 1e-9))
+        throw InputError(fmt::format("{}: cell {}: norm {} outside [0, 1]", path, k, c.norm));
+    return c;
+}
+
+}  // namespace
+
 Table read(const std::string& path)
 {
     std::string text = util::readFile(path, "LTC table file", 64u << 20);
@@ -70,34 +123,17 @@ Table read(const std::string& path)
         return j.at(k);
     };
     try {
-        if (need("format").get<std::string>() != kFormat || need("version").get<int>() != kVersion)
-            throw InputError(fmt::format("{}: expected format \"{}\" version {}", path, kFormat, kVersion));
+        int version = need("version").get<int>();
+        if (need("format").get<std::string>() != kFormat || version < 1 || version > kVersion)
+            throw InputError(fmt::format("{}: expected format \"{}\" version 1..{}", path, kFormat, kVersion));
         Table t;
-        t.options.size = need("size").get<int>();
-        t.options.samples = need("samples").get<int>();
-        t.options.normPanels = need("norm_panels").get<int>();
-        t.options.alphaMin = need("alpha_min").get<double>();
-        t.options.thetaMax = need("theta_max").get<double>();
-        t.options.maxEval = need("max_eval").get<int>();
+        t.options = readOptions(need, version, path);
         int n = t.options.size;
         const auto& cells = need("cells");
         if (n < 2 || n > 1024 || !cells.is_array() || cells.size() != static_cast<size_t>(n) * n)
             throw InputError(fmt::format("{}: expected size in 2..1024 and size^2 cells, got size {} and {} cells",
                                          path, n, cells.is_array() ? cells.size() : 0));
-        for (size_t k = 0; k < cells.size(); ++k) {
-            const auto& r = cells[k];
-            if (!r.is_array() || r.size() != 10)
-                throw InputError(fmt::format("{}: cell {}: expected 10 numbers", path, k));
-            Cell c;
-            double* f[10] = {&c.m00, &c.m02, &c.m20, &c.m22, &c.norm, &c.error, &c.l1, &c.m11, &c.m22p, &c.m13};
-            for (int q = 0; q < 10; ++q) {
-                *f[q] = r[q].get<double>();
-                if (!std::isfinite(*f[q])) throw InputError(fmt::format("{}: cell {}: non-finite value", path, k));
-            }
-            if (!(c.norm >= 0 && c.norm <= 1.0 + 1e-9))
-                throw InputError(fmt::format("{}: cell {}: norm {} outside [0, 1]", path, k, c.norm));
-            t.cells.push_back(c);
-        }
+        for (size_t k = 0; k < cells.size(); ++k) t.cells.push_back(readCell(cells[k], version, k, path));
         return t;
     } catch (const nlohmann::json::exception& e) {
         throw InputError(fmt::format("{}: malformed LTC table: {}", path, e.what()));
