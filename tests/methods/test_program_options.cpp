@@ -1,0 +1,157 @@
+// The program options every family builds (structural defines, the scene's
+// specialisation defines, lanes) and the specialisation records (JSON) over a
+// sweep of specs x scenes x luminaires, held to the sweep's recorded output
+// (tests/methods/program_options.golden). The recording was made before the
+// specialisation rules became tables (methods/forms.h), so that refactoring
+// and any later one keep every kernel variant a scene gets. No device needed.
+//
+// A deliberate change of a rule: run with LUMIBENCH_UPDATE_GOLDEN=1 to write
+// the new recording, and say in the commit which lines changed and why.
+#include "methods/cubature_options.h"
+#include "methods/registry.h"
+#include "methods/specialize.h"
+#include "photometry/lut.h"
+#include "test_tables.h"
+#include "testutil.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+namespace lb::methods {
+namespace {
+
+using test_tables::asymmetric;
+using test_tables::frontLobe;
+
+// Heights through the receiver plane to far above it, at grazing, tilted and
+// facing rotations: unclipped, clipped along u, touching, below.
+std::vector<Scene> sweepScenes(SceneKind kind)
+{
+    std::vector<Scene> out;
+    for (auto [h, rot] : {std::pair{1.0, 3 * M_PI / 4},
+                          {1.0, M_PI},
+                          {0.1, M_PI / 2},
+                          {0.0, M_PI / 2},
+                          {-0.1, M_PI / 2},
+                          {-0.6, 3 * M_PI / 4}}) {
+        Scene s;
+        s.kind = kind;
+        s.height = h;
+        s.rotation = rot;
+        s.res = 24;
+        out.push_back(s);
+    }
+    return out;
+}
+
+// Every cubature structure the SPEC allows (fan with at most one dynamic
+// point and no static samples), with the options the rules read.
+std::vector<std::string> cubatureSweep(const std::string& name)
+{
+    std::vector<std::string> out;
+    for (const char* tri : {"fan", "delaunay"})
+        for (const char* dyn : {"cp", "none", "np", "cp+barycentre", "cp+np+mrp+barycentre"})
+            for (const char* st : {"static=0", "static=1", "static=3,s3=0.005"})
+                for (const char* extra : {"", ",normalize=formfactor", ",lookup=exact", ",specialize=none",
+                                          ",blend_dist=3", ",horizon_eps=0.1,lanes=1"}) {
+                    std::string spec = fmt::format("{}:triangulation={},dynamic={},{}{}", name, tri, dyn, st, extra);
+                    try {
+                        parseSpec(spec);
+                    } catch (const InputError&) {
+                        continue;  // a combination validate() rejects
+                    }
+                    out.push_back(spec);
+                }
+    return out;
+}
+
+std::vector<std::string> specsOf(const Family& f)
+{
+    std::vector<std::string> specs = {f.name};
+    for (const auto& b : f.benchSpecs) specs.push_back(b);
+    for (const auto& p : f.params)
+        if (p.name == "lookup" || p.name == "specialize")
+            for (const auto& c : p.choices) specs.push_back(f.name + ":" + p.name + "=" + c);
+    if (f.name == "cubature")
+        for (const auto& s : cubatureSweep(f.name)) specs.push_back(s);
+    return specs;
+}
+
+// The rules that hold, by their JSON names (every value is a boolean).
+std::string trueKeys(const nlohmann::json& j)
+{
+    std::string out;
+    for (const auto& [k, v] : j.items()) out += v.get<bool>() ? " " + k : std::string();
+    return fmt::format("{} keys:{}", j.size(), out);
+}
+
+std::string sweep()
+{
+    std::ostringstream out;
+    ocl::DeviceInfo cpu, gpu;
+    cpu.type = "CPU";
+    gpu.type = "GPU";
+    const std::vector<std::pair<std::string, photometry::Table>> tables = {{"front", frontLobe()},
+                                                                           {"asym", asymmetric()}};
+    for (const auto& f : registry().all())
+        for (SceneKind kind : f.scenes)
+            for (const auto& text : specsOf(f)) {
+                MethodSpec spec = parseSpec(text, kind);
+                for (const auto& sc : sweepScenes(kind))
+                    for (const auto& [tname, t] : tables) {
+                        std::string opts = f.defines ? f.defines(spec) : std::string();
+                        if (f.sceneDefines) opts += f.sceneDefines(spec, sc, t);
+                        std::string lanes;
+                        for (auto [dev, p] :
+                             {std::pair{&cpu, Precision::Float}, {&gpu, Precision::Float}, {&cpu, Precision::Double}})
+                            lanes += fmt::format(" {}", f.lanes ? f.lanes(spec, sc, t, *dev, p) : 1);
+                        std::string json;
+                        if (f.file == "cubature.cl")
+                            json = trueKeys(analyseCubature(sc, t, CubatureOptions::parse(spec.values)).json());
+                        if (f.file == "mc.cl")
+                            json = trueKeys(
+                                analyse(sc, t, spec.str("lookup") == "lut", spec.str("specialize") == "auto").json());
+                        out << fmt::format("{} [{}] h={} R={:.4f} {} |{} | lanes{} | {} | {}\n", text,
+                                           sceneKindName(kind), sc.height, sc.rotation, tname, opts, lanes,
+                                           kernelForm(f, opts), json);
+                    }
+            }
+    return out.str();
+}
+
+TEST(ProgramOptions, EveryFamilysOptionsMatchTheRecordedSweep)
+{
+    const std::string path = std::string(LB_SOURCE_DIR) + "/tests/methods/program_options.golden";
+    const std::string got = sweep();
+    if (const char* u = std::getenv("LUMIBENCH_UPDATE_GOLDEN"); u && std::string(u) == "1") {
+        std::ofstream(path) << got;
+        GTEST_SKIP() << "wrote " << path;
+    }
+    std::ifstream in(path);
+    ASSERT_TRUE(in) << "missing " << path;
+    std::stringstream want;
+    want << in.rdbuf();
+    // Line by line, so that a failure names the first spec and scene that changed.
+    std::istringstream a(want.str()), b(got);
+    std::string la, lb;
+    int line = 0, lines = 0;
+    while (true) {
+        bool ea = !std::getline(a, la), eb = !std::getline(b, lb);
+        ++line;
+        if (ea || eb) {
+            EXPECT_EQ(ea, eb) << "the sweep and the recording differ in length at line " << line;
+            break;
+        }
+        ASSERT_EQ(la, lb) << "line " << line << " of " << path;
+        ++lines;
+    }
+    // the sweep covers every family and the cubature's structures (over a thousand lines)
+    EXPECT_GT(lines, 1000);
+}
+
+}  // namespace
+}  // namespace lb::methods
