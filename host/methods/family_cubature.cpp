@@ -113,7 +113,8 @@ Family cubatureFamily()
         LB_CUB_TUNABLES(LB_BIND_TUNABLE)
 #undef LB_BIND_TUNABLE
     };
-    f.straightDefines = {"-DLB_CUB_RECT_FAN", "-DLB_CUB_RECT_DEL", "-DLB_CUB_RECT_DELALL", "-DLB_CUB_RECT_DELST"};
+    f.straightDefines = cubatureFormDefines();
+    f.variants = cubatureVariants;
     f.benchSpecs = {"cubature:lanes=1",
                     "cubature:specialize=none,lookup=exact",
                     "cubature:triangulation=delaunay,dynamic=cp+barycentre",

@@ -167,6 +167,10 @@ struct Family {
     // The -D names that mark a straight-line form of this family's kernel
     // (empty: the family has one form, e.g. mc). kernelForm() reads them.
     std::vector<std::string> straightDefines;
+    // Optional: the program options its kernel file must build with, for a
+    // file whose @variants line says "registry" (the test that builds every
+    // variant), derived from the family's tables (e.g. the cubature's forms).
+    std::function<std::vector<std::string>()> variants;
     // Optional multi-pass methods (see the top of this file): the kernels run
     // before `kernelName` on every launch of the image's first rows.
     std::function<std::vector<StageEvent>(LaunchContext&)> prePasses;

@@ -153,5 +153,73 @@ TEST(ProgramOptions, EveryFamilysOptionsMatchTheRecordedSweep)
     EXPECT_GT(lines, 1000);
 }
 
+// ---- The cubature's form table (methods/specialize.h cubatureForms) ----
+
+// Each form's structures select that form, and only it, on an unclipped
+// scene: the conditions exclude each other (analyseCubature takes the first
+// that holds, so an overlap would hide a form).
+TEST(FormTable, EachFormsStructuresSelectItAlone)
+{
+    Scene s;
+    s.height = 1.0;
+    s.rotation = 3 * M_PI / 4;
+    s.res = 24;
+    for (const auto& f : cubatureForms())
+        for (const auto& e : f.examples) {
+            auto o = CubatureOptions::parse(parseSpec("cubature" + (e.empty() ? "" : ":" + e)).values);
+            EXPECT_EQ(analyseCubature(s, asymmetric(), o).form, f.name.json) << e;
+            const CubatureScene sc(s, o);
+            int holds = 0;
+            for (const auto& g : cubatureForms()) holds += g.applies(o, sc);
+            EXPECT_EQ(holds, 1) << e;
+        }
+}
+
+// Over the whole sweep at most one form's condition holds.
+TEST(FormTable, ConditionsExcludeEachOtherOverTheSweep)
+{
+    int checked = 0;
+    for (const auto& spec : cubatureSweep("cubature")) {
+        auto o = CubatureOptions::parse(parseSpec(spec).values);
+        for (const auto& sc : sweepScenes(SceneKind::Diffuse)) {
+            const CubatureScene facts(sc, o);
+            int holds = 0;
+            for (const auto& g : cubatureForms()) holds += g.applies(o, facts);
+            EXPECT_LE(holds, 1) << spec << " " << sc.describe();
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 500);
+}
+
+// The family's straight-line defines and the kernel's variants come from the
+// table: every form's define is a straight-line define and is built, alone,
+// with the LUT and eight lanes, and (where it runs clipped) with the clip.
+TEST(FormTable, DefinesAndVariantsDeriveFromIt)
+{
+    EXPECT_EQ(family("cubature").straightDefines, cubatureFormDefines());
+    const auto variants = cubatureVariants();
+    for (size_t i = 0; i < variants.size(); ++i)
+        for (size_t j = 0; j < i; ++j) EXPECT_NE(variants[i], variants[j]) << "built twice";
+    auto built = [&](const std::vector<std::string>& words) {
+        for (const auto& v : variants) {
+            bool all = true;
+            for (const auto& w : words) all = all && (v + " ").find(w + " ") != std::string::npos;
+            if (all) return true;
+        }
+        return false;
+    };
+    for (const auto& f : cubatureForms()) {
+        const std::string d = f.name.define;
+        EXPECT_EQ(kernelForm(family("cubature"), " " + d), "straight-line") << d;
+        EXPECT_TRUE(built({d})) << d;
+        EXPECT_TRUE(built({"-DLB_LUT", d, "-DLB_CUB_BLEND", "-DLB_LANES=8"})) << d;
+        EXPECT_EQ(built({d, "-DLB_CUB_RECT_CLIP"}), f.clipOk) << d;
+    }
+    EXPECT_TRUE(built({"-DLB_CUB_STATIC=4"}));
+    EXPECT_TRUE(built({"-DLB_CUB_AREA=2"}));
+    EXPECT_TRUE(built({"-DLB_CUB_AREA=3"}));
+}
+
 }  // namespace
 }  // namespace lb::methods
