@@ -24,6 +24,7 @@ void addStabilityCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);
 void addLtcCommand(CLI::App& app);
 void addSequenceCommand(CLI::App& app);
+void addMethodsCommand(CLI::App& app);
 
 // The normalized scene from the flags render and bench share, each
 // range-checked with a message naming the flag (limits in scene/scene.h;

@@ -161,7 +161,7 @@ Results mergeResults(const std::vector<std::string>& paths, MergeStats* stats = 
 //   keys of later versions), or a list of at most 4 numbers (eye, as JSON
 //   text), sorted by name.
 // Objects and arrays (params, inputs, stats, equal_time_candidates) are left
-// out, params flattened as above. README "Results as a table" documents them.
+// out, params flattened as above. docs/experiments.md ("Results as a table") documents them.
 std::string toCsv(const Results& doc);
 
 // DIR/results.csv beside DIR/results.json: the path with its extension

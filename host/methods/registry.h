@@ -124,7 +124,7 @@ private:
 
 struct Family {
     std::string name;
-    std::string summary;  // one line for --help and README
+    std::string summary;  // one line for --help and docs/methods.md
     // The scenes it renders (DESIGN 2, 8, 9). A name may be registered once per
     // scene kind: e.g. a "reference" for the specular scene in its own family
     // file and kernel, beside the diffuse one.
