@@ -89,12 +89,32 @@ std::string trueKeys(const nlohmann::json& j)
     return fmt::format("{} keys:{}", j.size(), out);
 }
 
-std::string sweep()
+// One line of the sweep: the program options and lanes Prepared builds
+// (planFor: the family's plan, or its separate hooks), on a CPU and a GPU in
+// float and on a CPU in double, the form, and the specialisation's JSON.
+std::string sweepLine(const Family& f, const std::string& text, const MethodSpec& spec, const Scene& sc,
+                      const std::string& tname, const photometry::Table& t)
 {
-    std::ostringstream out;
     ocl::DeviceInfo cpu, gpu;
     cpu.type = "CPU";
     gpu.type = "GPU";
+    std::string opts, lanes;
+    for (auto [dev, p] : {std::pair{&cpu, Precision::Float}, {&gpu, Precision::Float}, {&cpu, Precision::Double}}) {
+        Plan plan = planFor(f, spec, sc, t, *dev, p);
+        opts = plan.defines;
+        lanes += fmt::format(" {}", plan.lanes);
+    }
+    std::string json;
+    if (f.file == "cubature.cl") json = trueKeys(analyseCubature(sc, t, CubatureOptions::parse(spec.values)).json());
+    if (f.file == "mc.cl")
+        json = trueKeys(analyse(sc, t, spec.str("lookup") == "lut", spec.str("specialize") == "auto").json());
+    return fmt::format("{} [{}] h={} R={:.4f} {} |{} | lanes{} | {} | {}\n", text, sceneKindName(spec.kind), sc.height,
+                       sc.rotation, tname, opts, lanes, kernelForm(f, opts), json);
+}
+
+std::string sweep()
+{
+    std::ostringstream out;
     const std::vector<std::pair<std::string, photometry::Table>> tables = {{"front", frontLobe()},
                                                                            {"asym", asymmetric()}};
     for (const auto& f : registry().all())
@@ -102,23 +122,7 @@ std::string sweep()
             for (const auto& text : specsOf(f)) {
                 MethodSpec spec = parseSpec(text, kind);
                 for (const auto& sc : sweepScenes(kind))
-                    for (const auto& [tname, t] : tables) {
-                        std::string opts = f.defines ? f.defines(spec) : std::string();
-                        if (f.sceneDefines) opts += f.sceneDefines(spec, sc, t);
-                        std::string lanes;
-                        for (auto [dev, p] :
-                             {std::pair{&cpu, Precision::Float}, {&gpu, Precision::Float}, {&cpu, Precision::Double}})
-                            lanes += fmt::format(" {}", f.lanes ? f.lanes(spec, sc, t, *dev, p) : 1);
-                        std::string json;
-                        if (f.file == "cubature.cl")
-                            json = trueKeys(analyseCubature(sc, t, CubatureOptions::parse(spec.values)).json());
-                        if (f.file == "mc.cl")
-                            json = trueKeys(
-                                analyse(sc, t, spec.str("lookup") == "lut", spec.str("specialize") == "auto").json());
-                        out << fmt::format("{} [{}] h={} R={:.4f} {} |{} | lanes{} | {} | {}\n", text,
-                                           sceneKindName(kind), sc.height, sc.rotation, tname, opts, lanes,
-                                           kernelForm(f, opts), json);
-                    }
+                    for (const auto& [tname, t] : tables) out << sweepLine(f, text, spec, sc, tname, t);
             }
     return out.str();
 }
@@ -219,6 +223,49 @@ TEST(FormTable, DefinesAndVariantsDeriveFromIt)
     EXPECT_TRUE(built({"-DLB_CUB_STATIC=4"}));
     EXPECT_TRUE(built({"-DLB_CUB_AREA=2"}));
     EXPECT_TRUE(built({"-DLB_CUB_AREA=3"}));
+}
+
+// ---- The cubature's plan (Family::plan): everything render needs, decided
+// without a device ----
+
+// Every kernel argument the family declares is bound by name, once, with the
+// spec's values; the statistics buffer has two ints per pixel; the lookup
+// buffer is the LUT for lookup=lut and the exact table otherwise.
+TEST(CubaturePlan, BindsEveryArgumentByNameWithTheSpecsValues)
+{
+    Scene s;
+    s.height = 1.0;
+    s.rotation = 3 * M_PI / 4;
+    s.res = 24;
+    ocl::DeviceInfo cpu;
+    cpu.type = "CPU";
+    const auto t = asymmetric();
+    const Family& f = family("cubature");
+    auto spec = parseSpec("cubature:plane_eps=0.01,corner_inset=0.25,blend_dist=7,s2=0.3");
+    Plan plan = planFor(f, spec, s, t, cpu, Precision::Float);
+    std::vector<std::string> names;
+    for (const auto& a : plan.args) names.push_back(a.name);
+    EXPECT_EQ(names, f.args);
+    auto arg = [&](const std::string& name) {
+        for (const auto& a : plan.args)
+            if (a.name == name) return a;
+        ADD_FAILURE() << "no argument " << name;
+        return PlanArg{};
+    };
+    for (const auto& name : cubatureTunableNames()) {
+        EXPECT_EQ(arg(name).kind, PlanArg::Kind::Real) << name;
+        EXPECT_EQ(arg(name).value, spec.num(name)) << name;  // the spec's own number, not a rounding of it
+    }
+    EXPECT_EQ(arg("stats").kind, PlanArg::Kind::OutputInts);
+    EXPECT_EQ(arg("stats").count, 2u * 24 * 24);
+    EXPECT_EQ(arg("want_stats").value, 0);  // timed launches run without statistics
+    EXPECT_EQ(f.statsSwitch, "want_stats");
+    EXPECT_EQ(plan.lum(), photometry::buildLut(t).packed);
+    EXPECT_EQ(planFor(f, parseSpec("cubature:lookup=exact"), s, t, cpu, Precision::Float).lum(), t.packed());
+    EXPECT_EQ(plan.lanes, 8);  // the fan's straight-line form on a CPU in float with the LUT
+    EXPECT_EQ(planFor(f, spec, s, t, cpu, Precision::Double).lanes, 1);
+    EXPECT_TRUE(plan.finish);
+    EXPECT_FALSE(plan.bind);  // nothing beyond the named arguments
 }
 
 }  // namespace
