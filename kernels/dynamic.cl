@@ -1,4 +1,4 @@
-/* dynamic.cl -- single-sample baselines (DESIGN section 4):
+/* dynamic.cl -- single-sample baselines (docs/design.md section 4):
  *   -DLB_DYN_POINT  one photometric point light at the light's centroid,
  *                   area form E = I(d) max(0, cos) / r^2;
  *   -DLB_DYN_CP / -DLB_DYN_NP / -DLB_DYN_MRP  one dynamic sample (paper 4.2,

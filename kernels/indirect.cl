@@ -1,5 +1,5 @@
 /* indirect.cl -- one-bounce indirect light from a reflective shadow map
- * (RSM) of the room's walls and ceiling (DESIGN section 9, the ACRSM seed):
+ * (RSM) of the room's walls and ceiling (docs/design.md section 9, the ACRSM seed):
  * the passes of the methods vpl, kmeans and acrsm
  * (host/methods/family_indirect.cpp runs them, in this order):
  *   rsm            texels over the room's unfolded net (common/indirect.h):

@@ -1,5 +1,5 @@
 /* indirect_reference.cl -- the converged reference of the indirect scene
- * (DESIGN section 9): one-bounce indirect irradiance on the floor,
+ * (docs/design.md section 9): one-bounce indirect irradiance on the floor,
  *   E_ind(x) = (rho / pi) int_walls+ceiling E_dir(y) cos_x cos_y / r^2 dA(y),
  * in three passes (host/methods/family_indirect.cpp runs them):
  *   edir_nodes  E_dir at the 4 x 4 Gauss nodes of every cell of every surface

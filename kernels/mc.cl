@@ -1,12 +1,12 @@
 /* mc.cl -- Monte Carlo integration with one fixed point set for every pixel
- * (MCI-N, thesis 6.5), area form of DESIGN section 1 with N uniform points on
+ * (MCI-N, thesis 6.5), area form of docs/design.md section 1 with N uniform points on
  * the light: E = (1/N) sum_i I(d_i) max(0, n_x . w_i) / r_i^2.
  * st[2i], st[2i+1] in [0,1]^2 are the points' (s, t) along (u, v); the host
  * makes the sets (host/methods/samples.h).
  *
  * A fractional sample count N + extra (0 <= extra < 1), so that MCI's time can
  * match another method's within a few per cent where one point more is a
- * 25-50 % step (DESIGN 6): the share `extra` of the work-group tiles, spread
+ * 25-50 % step (docs/design.md section 6): the share `extra` of the work-group tiles, spread
  * evenly over the image, takes the N + 1 point set stored after the N points
  * (st[2N ..]); the rest the N points. Each pixel is still an MCI-N or
  * MCI-(N+1) estimate, so the image's mean squared error and the time are the

@@ -1,4 +1,4 @@
-/* reference.cl -- the converged reference of DESIGN section 1: the area form
+/* reference.cl -- the converged reference of docs/design.md section 1: the area form
  *   E(x) = (1/A) int_light I(d) max(0, n_x . w) / r^2 dA = int_[0,1]^2 f(s, t) ds dt
  * (dA = A ds dt) by globally adaptive cubature, one pixel per work-item.
  *

@@ -1,4 +1,4 @@
-/* specular_mc.cl -- Monte Carlo baselines of the specular scene (DESIGN
+/* specular_mc.cl -- Monte Carlo baselines of the specular scene (docs/design.md
  * section 8), L_s = (1/A) int I(d) f_r(w, w_o) max(0, n_x . w) / r^2 dA:
  *   LB_SMC_SAMPLING 0  light: the same N points (s, t) on the light for every
  *                      pixel (as kernels/mc.cl), L_s = (1/N) sum I f_r cos / r^2

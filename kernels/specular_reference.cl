@@ -1,5 +1,5 @@
 /* specular_reference.cl -- the converged reference of the specular scene
- * (DESIGN section 8): common/specref.h's adaptive cubature of the area form,
+ * (docs/design.md section 8): common/specref.h's adaptive cubature of the area form,
  * one pixel per work-item, with its per-pixel error estimate.
  * Deterministic: no random numbers, a fixed order of operations.
  * @variants: ""

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Markdown tables from `lumibench bench --json` documents (README "Performance").
+"""Markdown tables from `lumibench bench --json` documents (docs/performance.md).
 
 Usage: python3 plots/bench_table.py RUN.json [RUN.json ...] [-- RUN.json ...] ...
 

@@ -11,7 +11,7 @@ writes DIR/plots/*.png.
 - nmse_h<height>_<precision>.png: mean NMSE over the rotations per luminaire,
   one line per method (thesis Figs. 6.7-6.10: one figure per height).
 - grad_nmse_time_*, grad_nmse_h*, flip_time_*, flip_h*: the same for
-  grad_nmse and FLIP (DESIGN section 5), when some record carries them
+  grad_nmse and FLIP (docs/design.md section 5), when some record carries them
   (flip is null where flip-evaluator was not available).
 - grid_<scene>.png: reference | method | error for each method of a scene, from
   the PNG triples the runner saves with "save_images" (plots/image_grid.py);

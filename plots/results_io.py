@@ -1,6 +1,6 @@
 """Reading the records of a `lumibench run` / `merge` result, from either of
 the two files it writes: results.json (the document: context and records,
-also .json.xz) or results.csv (one flat row per record, README "Results as a
+also .json.xz) or results.csv (one flat row per record, docs/experiments.md, "Results as a
 table"). Both give the same list of record dicts, shaped as in results.json:
 `time_ms` a dict (median, min, max, reps, res), `params` a dict, keys a record
 does not have (empty CSV fields) absent, undefined metrics None. Standard

@@ -160,7 +160,7 @@ nlohmann::json samplesPerSecond(Bench& b)
             {"ok", ratio >= 10}};
 }
 
-// 2. MC time against N (near linear, DESIGN 6): least-squares line.
+// 2. MC time against N (near linear, docs/design.md section 6): least-squares line.
 struct McFit {
     double t0 = 0, slope = 0;
     double mc8 = 0;  // t(8), measured
@@ -260,7 +260,7 @@ nlohmann::json goals(Bench& b)
     return out;
 }
 
-// 6. The indirect scene's RSM methods (DESIGN 9): each method's time and
+// 6. The indirect scene's RSM methods (docs/design.md section 9): each method's time and
 // its stages (RSM, clustering, evaluation: Prepared::stageMs) at the
 // bench's resolution, the same light in the room (at h = 1.1 where the
 // bench's height does not fit it).

@@ -1,6 +1,6 @@
 // lumibench compare REFERENCE.exr TEST.exr [--json] [--png PREFIX] [--k K] [--bound B]
 //
-// The error metrics of DESIGN section 5 (metrics/metrics.h, FLIP from
+// The error metrics of docs/design.md section 5 (metrics/metrics.h, FLIP from
 // metrics/flip.h) as a table or one JSON object, and optionally the pictures of a figure row: PREFIX_ref.png and
 // PREFIX_test.png tone mapped with one k (default 1 / mean(reference), or --k
 // so that several rows share one k), PREFIX_err.png (orange too bright, blue

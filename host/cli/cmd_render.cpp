@@ -1,4 +1,4 @@
-// lumibench render: one method on the normalized scene (DESIGN sections 2, 7).
+// lumibench render: one method on the normalized scene (docs/design.md sections 2, 7).
 #include "cli/commands.h"
 
 #include "methods/analytic.h"

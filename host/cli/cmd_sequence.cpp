@@ -1,4 +1,4 @@
-// lumibench sequence: an animated sequence of the indirect scene (DESIGN
+// lumibench sequence: an animated sequence of the indirect scene (docs/design.md
 // section 9): per-frame metrics and the flicker of each method
 // (experiments/sequence.h).
 #include "cli/commands.h"

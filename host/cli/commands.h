@@ -24,6 +24,7 @@ void addStabilityCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);
 void addLtcCommand(CLI::App& app);
 void addSequenceCommand(CLI::App& app);
+void addMethodsCommand(CLI::App& app);
 
 // Every numeric flag of `app` and its subcommands parsed strictly: a plain
 // decimal number, the whole value (no empty value, no 0x10, no nan); call

@@ -11,7 +11,7 @@ int main(int argc, char** argv)
 {
     CLI::App app{"lumibench: a benchmark of real-time approximations of photometric polygonal lights\n"
                  "(scattered sampling / cubature against Monte Carlo integration and a converged reference).\n"
-                 "Conventions: ../shared/DESIGN.md. Exit codes: 0 ok, 1 error, 2 bad input.",
+                 "Conventions: docs/design.md. Exit codes: 0 ok, 1 error, 2 bad input.",
                  "lumibench"};
     app.require_subcommand(1);
     app.set_help_all_flag("--help-all", "Print help for every subcommand");
@@ -27,6 +27,7 @@ int main(int argc, char** argv)
     lb::cli::addBenchCommand(app);
     lb::cli::addLtcCommand(app);
     lb::cli::addSequenceCommand(app);
+    lb::cli::addMethodsCommand(app);
     lb::cli::strictNumericFlags(app);
     try {
         // CLI11 reads "--opt=" as "--opt" and takes the next argument as its

@@ -161,7 +161,7 @@ void readSettings(const Reader& r, const Overrides& ov, Experiment& e)
         if (!(e.width > 0 && e.length > 0)) r.fail("size", fmt::format("expected W, L > 0, found {}", s.dump()));
     }
     if (r.has("extent")) e.extent = r.number("extent", 1e-6, kMaxSceneLength);  // 1 um: anything smaller is a typo
-    // DESIGN 6: the median of at least 5 timed runs.
+    // docs/design.md section 6: the median of at least 5 timed runs.
     if (r.has("reps")) e.reps = static_cast<int>(r.integer("reps", kMinExperimentReps, ocl::kMaxReps));
     if (ov.reps) e.reps = util::checkRange(nameOf(ov, "reps"), *ov.reps, kMinExperimentReps, ocl::kMaxReps);
     if (r.has("time_res")) e.timeRes = static_cast<int>(r.integer("time_res", 0, kMaxRes));

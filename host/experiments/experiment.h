@@ -13,7 +13,7 @@
 //    "res": 64, "precision": ["float"], "size": [1, 1], "extent": 5,
 //    "reps": 5, "equal_time_tolerance": 0.10, "save_images": true,   // reps: 5 .. 1000
 //    "time_res": 512,                        // every method is timed at time_res^2 pixels,
-//                                            // whatever res the error image has (DESIGN 6)
+//                                            // whatever res the error image has (docs/design.md section 6)
 //    "scene": "specular", "alpha": [0.1, 0.5], "eye": [0, 4, 2]}   // scene/scene_keys.h
 //
 // A scene is (luminaire, height, rotation, alpha, precision); its cells are the
@@ -52,7 +52,7 @@ struct Experiment {
     std::vector<std::string> precisions{"float"};
     double width = 1, length = 1, extent = 5;
     int reps = 5;
-    int timeRes = 512;  // methods are timed at time_res^2 pixels (DESIGN 6); 0 = at the image's res
+    int timeRes = 512;  // methods are timed at time_res^2 pixels (docs/design.md section 6); 0 = at the image's res
     double equalTimeTolerance = 0.10;
     // Alternating rounds (method, MC candidates) per equal-time pairing; the
     // ratio is the median of the rounds' ratios. More than `reps`: the pairing
@@ -64,7 +64,7 @@ struct Experiment {
     nlohmann::json raw;  // the file as read
 };
 
-// DESIGN 6: every time is the median of at least 5 timed runs.
+// docs/design.md section 6: every time is the median of at least 5 timed runs.
 constexpr int kMinExperimentReps = 5;
 
 // Overrides applied after reading the file (range-checked like the keys they

@@ -14,7 +14,7 @@
 // One record is one cell of an experiment: a method with its parameters at
 // one scene, precision and device. Its cell key (Record::key) is what
 // appendRecord replaces and mergeResults deduplicates by. Every record carries
-// device, driver, time and error (DESIGN section 6), so records of several
+// device, driver, time and error (docs/design.md section 6), so records of several
 // files can be plotted together. Keys a record does not know are kept in
 // `extra` through load and save, so that later fields survive older code.
 // Undefined numbers (NaN, infinity) are written as null and read back as NaN.
@@ -32,7 +32,7 @@
 
 namespace lb::results {
 
-// Kernel time from OpenCL profiling events (DESIGN section 6), milliseconds.
+// Kernel time from OpenCL profiling events (docs/design.md section 6), milliseconds.
 struct TimeMs {
     double median = 0, min = 0, max = 0;
     int reps = 0;
@@ -40,10 +40,10 @@ struct TimeMs {
 };
 
 struct Record {
-    std::string method;  // DESIGN section 4 name, e.g. "mc"
+    std::string method;  // docs/design.md section 4 name, e.g. "mc"
     nlohmann::json params = nlohmann::json::object();  // method parameters, e.g. {"n": 24}
     std::string luminaire;  // file name or synthetic name
-    double height = 0, rotation = 0;  // metres, radians (DESIGN section 2)
+    double height = 0, rotation = 0;  // metres, radians (docs/design.md section 2)
     int res = 0;  // image is res x res
     std::string precision = "float";  // "float" | "double"
     std::string device, driver;
@@ -169,7 +169,7 @@ Results mergeResults(const std::vector<std::string>& paths, MergeStats* stats = 
 //   keys of later versions), or a list of at most 4 numbers (eye, as JSON
 //   text), sorted by name.
 // Objects and arrays (params, inputs, stats, equal_time_candidates) are left
-// out, params flattened as above. README "Results as a table" documents them.
+// out, params flattened as above. docs/experiments.md ("Results as a table") documents them.
 std::string toCsv(const Results& doc);
 
 // DIR/results.csv beside DIR/results.json: the path with its extension

@@ -241,7 +241,7 @@ std::vector<long> triesAround(long next, int attempt, const std::vector<std::pai
     return cand;
 }
 
-// The search for MC's N at the time of one method (DESIGN 6): candidates
+// The search for MC's N at the time of one method (docs/design.md section 6): candidates
 // timed against the method in alternating rounds, the ratio of each the
 // median of the rounds' ratios; the best is the closest to 1 in log.
 struct EqualTimeSearch {
@@ -268,7 +268,7 @@ struct EqualTimeSearch {
         return s;
     }
 
-    // The method and each of mcs launched in alternation (DESIGN 6: ratios within one run).
+    // The method and each of mcs launched in alternation (docs/design.md section 6: ratios within one run).
     std::vector<ocl::Timing> pairedRounds(const std::vector<methods::Prepared*>& mcs)
     {
         // whole frames: a multi-pass method's passes count as in its cell
@@ -372,7 +372,7 @@ struct EqualTimeSearch {
 };
 
 // The equal-time MCI partner of cell c, whose method took tM ms in its own
-// cell (DESIGN section 6): MC's N aimed on the measured t(N) (pts: the
+// cell (docs/design.md section 6): MC's N aimed on the measured t(N) (pts: the
 // scene's MC curve, else the experiment's equal_time_fit points timed here),
 // then timed against the method in alternating rounds; while the closest is
 // off by more than the tolerance and not bracketed by a measured neighbour
@@ -679,7 +679,7 @@ private:
     }
 
     // One cell's record: the method (or curve point) rendered and compared,
-    // or the equal-time MCI partner of c.spec (DESIGN section 6).
+    // or the equal-time MCI partner of c.spec (docs/design.md section 6).
     results::Record runCell(const SceneRun& sr, const Cell& c, SceneTimes& st)
     {
         if (c.role != "equal_time") {

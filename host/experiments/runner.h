@@ -35,7 +35,7 @@
 // `equal_time_candidates` ([{n, ratio, ms}]) and `equal_time_fit`
 // ([[N, median ms], ...]).
 //
-// Equal time (DESIGN section 6): t(N) of MC is measured on the scene's
+// Equal time (docs/design.md section 6): t(N) of MC is measured on the scene's
 // MCI-curve points (or, without a curve, on renders at "equal_time_fit"),
 // N solves t(N) = t_M on their piecewise-linear interpolation (solveN); that
 // N and its neighbour towards t_M are then timed against the method in

@@ -1,4 +1,4 @@
-// sequence.h -- animated sequences of the indirect scene (DESIGN section 9):
+// sequence.h -- animated sequences of the indirect scene (docs/design.md section 9):
 // a named path of the light over F frames, every method rendered frame after
 // frame through one Prepared (stateful methods such as acrsm keep their
 // clusters from frame to frame; the others start afresh each frame, as they

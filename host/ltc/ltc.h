@@ -1,4 +1,4 @@
-// ltc.h -- the suite's own LTC table for the GGX BRDF of DESIGN section 8
+// ltc.h -- the suite's own LTC table for the GGX BRDF of docs/design.md section 8
 // (kernels/common/ltc.h evaluates it): the fit, the table file and its
 // packing for the kernels.
 //

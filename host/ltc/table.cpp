@@ -4,6 +4,7 @@
 
 #include "util/error.h"
 #include "util/fileio.h"
+#include "util/json_file.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -111,12 +112,7 @@ Cell readCell(const nlohmann::json& r, int version, size_t k, const std::string&
 Table read(const std::string& path)
 {
     std::string text = util::readFile(path, "LTC table file", 64u << 20);
-    nlohmann::json j;
-    try {
-        j = nlohmann::json::parse(text);
-    } catch (const std::exception& e) {
-        throw InputError(fmt::format("{}: expected an LTC table (JSON): {}", path, e.what()));
-    }
+    const nlohmann::json j = util::parseJson(text, path);
     auto need = [&](const char* k) -> const nlohmann::json& {
         if (!j.is_object() || !j.contains(k))
             throw InputError(fmt::format("{}: LTC table lacks the key \"{}\"", path, k));

@@ -1,4 +1,4 @@
-// cubature_options.h -- the `cubature` method's parameters (DESIGN 4),
+// cubature_options.h -- the `cubature` method's parameters (docs/design.md section 4),
 // declared once in cubatureParams() (name, choices, default, range,
 // meaning): the SPEC parser, the tuner and the result files read that table,
 // and CubatureOptions is derived from it -- the kernel's structural -D

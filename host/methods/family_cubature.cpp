@@ -52,6 +52,28 @@ void cubatureStats(LaunchContext& c)
     c.stats["flips_max"] = fmax;
 }
 
+// The spec parsed once and the scene analysed once: the program's defines,
+// the lanes, the lookup table, every kernel argument by name, the finish.
+Plan cubaturePlan(const MethodSpec& s, const Scene& scene, const photometry::Table& t, const ocl::DeviceInfo& dev,
+                  Precision p)
+{
+    const CubatureOptions o = options(s);
+    const Specialization sp = analyseCubature(scene, t, o);
+    Plan plan;
+    plan.defines = o.defines() + sp.defines();
+    plan.lanes = cubatureLanes(sp, o, dev.type, p == Precision::Double);
+    plan.lum = [lut = o.lut, &t] { return lut ? photometry::buildLut(t).packed : t.packed(); };
+    // per pixel of the whole image: triangles and flips (cubatureStats)
+    PlanArg stats{"stats", PlanArg::Kind::OutputInts};
+    stats.count = 2 * static_cast<size_t>(scene.res) * scene.res;
+    plan.args = {stats, {"want_stats", PlanArg::Kind::Int, 0}};
+#define LB_PLAN_TUNABLE(name) plan.args.push_back({#name, PlanArg::Kind::Real, o.tunables.name});
+    LB_CUB_TUNABLES(LB_PLAN_TUNABLE)
+#undef LB_PLAN_TUNABLE
+    plan.finish = cubatureStats;
+    return plan;
+}
+
 Family cubatureFamily()
 {
     Family f;
@@ -86,41 +108,19 @@ Family cubatureFamily()
                                              s.name, file, Param::text("preset", "none", "").allowed(), err.what()));
             }
     };
-    f.defines = [](const MethodSpec& s) { return options(s).defines(); };
     f.unused = [](const MethodSpec& s, const std::string& name) { return cubatureParamUnused(options(s), name); };
-    f.sceneDefines = [](const MethodSpec& s, const Scene& scene, const photometry::Table& t) {
-        return analyseCubature(scene, t, options(s)).defines();
-    };
-    f.lanes = [](const MethodSpec& s, const Scene& scene, const photometry::Table& t, const ocl::DeviceInfo& dev,
-                 Precision p) {
-        CubatureOptions o = options(s);
-        return cubatureLanes(analyseCubature(scene, t, o), o, dev.type, p == Precision::Double);
-    };
-    f.lumBuffer = [](const MethodSpec& s, const photometry::Table& t) {
-        return options(s).lut ? photometry::buildLut(t).packed : t.packed();
-    };
+    f.plan = cubaturePlan;
     f.args = {"stats", "want_stats"};
     for (const auto& name : cubatureTunableNames()) f.args.push_back(name);
     f.statsSwitch = "want_stats";
-    f.setArgs = [](LaunchContext& c) {
-        CubatureOptions o = options(c.spec);
-        size_t npx = static_cast<size_t>(c.res()) * c.res();
-        cl::Buffer stats = c.outputInts(2 * npx);
-        c.named["stats"] = stats;
-        c.arg("stats", stats);
-        c.arg("want_stats", cl_int(0));
-#define LB_BIND_TUNABLE(name) c.realArg(#name, o.tunables.name);
-        LB_CUB_TUNABLES(LB_BIND_TUNABLE)
-#undef LB_BIND_TUNABLE
-    };
-    f.straightDefines = {"-DLB_CUB_RECT_FAN", "-DLB_CUB_RECT_DEL", "-DLB_CUB_RECT_DELALL", "-DLB_CUB_RECT_DELST"};
+    f.straightDefines = cubatureFormDefines();
+    f.variants = cubatureVariants;
     f.benchSpecs = {"cubature:lanes=1",
                     "cubature:specialize=none,lookup=exact",
                     "cubature:triangulation=delaunay,dynamic=cp+barycentre",
                     "cubature:triangulation=delaunay,dynamic=cp+np+mrp+barycentre",
                     "cubature:triangulation=delaunay,static=1,s1=0.485,t1=0.11",
                     "cubature:normalize=formfactor,weighting=sample"};
-    f.finish = cubatureStats;
     return f;
 }
 

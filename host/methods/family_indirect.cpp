@@ -1,4 +1,4 @@
-// The indirect scene (DESIGN section 9): the converged reference
+// The indirect scene (docs/design.md section 9): the converged reference
 // (kernels/indirect_reference.cl) and the RSM methods vpl, kmeans and acrsm
 // (kernels/indirect.cl), all multi-pass families (Family::prePasses).
 #include "methods/registry.h"

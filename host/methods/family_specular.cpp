@@ -1,4 +1,4 @@
-// The specular scene's families (DESIGN section 8, paper Sec. 7):
+// The specular scene's families (docs/design.md section 8, paper Sec. 7):
 //   reference  kernels/specular_reference.cl (common/specref.h): adaptive
 //              cubature of the area form with an error estimate;
 //   mc         kernels/specular_mc.cl: light-sampled MC with a fixed point

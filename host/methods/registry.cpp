@@ -49,6 +49,53 @@ std::string kernelForm(const Family& f, const std::string& defines)
     return "general";
 }
 
+Plan planFor(const Family& f, const MethodSpec& spec, const Scene& scene, const photometry::Table& table,
+             const ocl::DeviceInfo& device, Precision precision)
+{
+    if (f.plan) return f.plan(spec, scene, table, device, precision);
+    Plan p;
+    p.defines = f.defines ? f.defines(spec) : std::string();
+    if (f.sceneDefines) p.defines += f.sceneDefines(spec, scene, table);
+    p.lanes = f.lanes ? f.lanes(spec, scene, table, device, precision) : 1;
+    p.lum = [lumBuffer = f.lumBuffer, spec, &table] { return lumBuffer ? lumBuffer(spec, table) : table.packed(); };
+    p.bind = f.setArgs;
+    p.finish = f.finish;
+    return p;
+}
+
+void bindPlan(LaunchContext& c, const Plan& plan)
+{
+    for (const auto& a : plan.args) {
+        switch (a.kind) {
+        case PlanArg::Kind::Real:
+            c.realArg(a.name, a.value);
+            break;
+        case PlanArg::Kind::Int:
+            c.arg(a.name, cl_int(a.value));
+            break;
+        case PlanArg::Kind::Float:
+            c.arg(a.name, cl_float(a.value));
+            break;
+        case PlanArg::Kind::Reals:
+            c.arg(a.name, c.realBuffer(a.reals));
+            break;
+        case PlanArg::Kind::Floats: {
+            std::vector<float> f = a.floats;
+            f.resize(std::max<size_t>(f.size(), 1), 0.0f);
+            cl::Buffer b(c.rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, f.size() * sizeof(float), f.data());
+            c.buffers.push_back(b);
+            c.arg(a.name, b);
+            break;
+        }
+        case PlanArg::Kind::OutputInts:
+            c.named[a.name] = c.outputInts(a.count);
+            c.arg(a.name, c.named[a.name]);
+            break;
+        }
+    }
+    if (plan.bind) plan.bind(c);
+}
+
 std::string precisionName(Precision p) { return p == Precision::Double ? "double" : "float"; }
 
 Precision parsePrecision(const std::string& s)

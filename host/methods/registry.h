@@ -6,8 +6,9 @@
 // that fills out[row * res + col] for rows row0 .. row0 + get_global_size(1),
 // then host/methods/family_cubature.cpp defining
 //   void registerCubature(Registry& r) { r.add(Family{...}); }
-// with Family::args naming <your arguments> in order (setArgs binds them by
-// name; a test holds the list to the kernel's CL_KERNEL_ARG_NAME), and add its
+// with Family::args naming <your arguments> in order (setArgs, or the
+// arguments of Family::plan, bind them by name; a test holds the list to the
+// kernel's CL_KERNEL_ARG_NAME), and add its
 // one line to builtinFamilies() in registry.cpp. render(), `run`, `tune`,
 // `stability` and `bench` all launch it through prepare() (methods/render.h),
 // so the new family is rendered, timed and benchmarked without more code.
@@ -122,10 +123,43 @@ private:
     void bindOne(cl::Kernel& k, cl_uint i, Real r) { ocl::setReal(k, i, r.v, dbl()); }
 };
 
+// One kernel argument a plan binds, by its name in Family::args: a real
+// (float or double as the program is built), an int, a float, a read-only
+// buffer of reals or floats, or an int output buffer of `count` ints (kept in
+// LaunchContext::named under the argument's name, for `finish`).
+struct PlanArg {
+    enum class Kind { Real, Int, Float, Reals, Floats, OutputInts };
+    std::string name;
+    Kind kind = Kind::Real;
+    double value = 0;  // Real, Int, Float
+    std::vector<double> reals{};  // Reals
+    std::vector<float> floats{};  // Floats
+    size_t count = 0;  // OutputInts
+};
+
+// What a family decides for one render of spec on scene and table, on a
+// device in a precision, before any device work (so a test can read it
+// without a device): the program's -D options (structural and per scene;
+// render adds LB_DOUBLE and LB_LANES), pixels per work-item, the `lum`
+// buffer (made on demand, while the table lives: a LUT costs more than the
+// rest of the plan), the kernel arguments by name, and optionally a binder
+// for arguments a plan cannot hold (device buffers of its own) and the finish.
+struct Plan {
+    std::string defines;
+    int lanes = 1;
+    std::function<std::vector<float>()> lum;
+    std::vector<PlanArg> args;
+    std::function<void(LaunchContext&)> bind;
+    std::function<void(LaunchContext&)> finish;
+};
+
+using PlanHook =
+    std::function<Plan(const MethodSpec&, const Scene&, const photometry::Table&, const ocl::DeviceInfo&, Precision)>;
+
 struct Family {
     std::string name;
-    std::string summary;  // one line for --help and README
-    // The scenes it renders (DESIGN 2, 8, 9). A name may be registered once per
+    std::string summary;  // one line for --help and docs/methods.md
+    // The scenes it renders (docs/design.md sections 2, 8, 9). A name may be registered once per
     // scene kind: e.g. a "reference" for the specular scene in its own family
     // file and kernel, beside the diffuse one.
     std::vector<SceneKind> scenes{SceneKind::Diffuse};
@@ -138,6 +172,10 @@ struct Family {
     // Optional: whether parameter `name` has no effect under spec s (e.g. the
     // cubature's s3 with static=2); a tuner does not search such a parameter.
     std::function<bool(const MethodSpec&, const std::string&)> unused;
+    // Optional, the one hook a family may give instead of defines,
+    // sceneDefines, lumBuffer, lanes, setArgs and finish: parses the spec
+    // once and decides all of them (planFor; the cubature's).
+    PlanHook plan;
     // Structural -D options of the program (continuous values are arguments).
     std::function<std::string(const MethodSpec&)> defines;
     // Optional: more defines chosen per scene and luminaire (methods/specialize.h).
@@ -167,6 +205,10 @@ struct Family {
     // The -D names that mark a straight-line form of this family's kernel
     // (empty: the family has one form, e.g. mc). kernelForm() reads them.
     std::vector<std::string> straightDefines;
+    // Optional: the program options its kernel file must build with, for a
+    // file whose @variants line says "registry" (the test that builds every
+    // variant), derived from the family's tables (e.g. the cubature's forms).
+    std::function<std::vector<std::string>()> variants;
     // Optional multi-pass methods (see the top of this file): the kernels run
     // before `kernelName` on every launch of the image's first rows.
     std::function<std::vector<StageEvent>(LaunchContext&)> prePasses;
@@ -186,6 +228,13 @@ void bindReferenceArgs(LaunchContext& c);  // the per-pixel error and split buff
 void finishReference(LaunchContext& c);  // extra image "err", the split statistics
 // Both for a kernel whose arguments are just those four; no defines, expensive.
 void referenceIo(Family& f);
+
+// The family's plan: Family::plan where it has one, else assembled from its
+// separate hooks (defines + sceneDefines, lanes, lumBuffer, setArgs, finish).
+Plan planFor(const Family& f, const MethodSpec& spec, const Scene& scene, const photometry::Table& table,
+             const ocl::DeviceInfo& device, Precision precision);
+// Binds a plan's arguments by name (LaunchContext::arg), then plan.bind.
+void bindPlan(LaunchContext& c, const Plan& plan);
 
 // "straight-line" when the kernel built with `defines` is one of the family's
 // straight-line forms, "general" when the family has such forms but this

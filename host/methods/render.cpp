@@ -157,11 +157,12 @@ Prepared::Prepared(ocl::Runtime& rt, const photometry::Table& table, const Scene
     const bool dbl = precision == Precision::Double;
     if (dbl && !rt.fp64())
         throw InputError(fmt::format("device '{}' has no double precision (cl_khr_fp64)", rt.info().name));
-    options_ = fam_.defines ? fam_.defines(spec_) : std::string();
-    if (fam_.sceneDefines) options_ += fam_.sceneDefines(spec_, scene_, table);
+    Plan plan = planFor(fam_, spec_, scene_, table, rt.info(), precision);
+    options_ = plan.defines;
     if (dbl) options_ += " -DLB_DOUBLE";
-    const int lanes = fam_.lanes ? fam_.lanes(spec_, scene_, table, rt.info(), precision) : 1;
+    const int lanes = plan.lanes;
     if (lanes > 1) options_ += fmt::format(" -DLB_LANES={}", lanes);
+    finish_ = plan.finish;
     double b0 = rt.buildSeconds();
     ctx_.reset(new LaunchContext{
         fam_, rt, spec_, scene_, table, precision, rt.kernel(fam_.file, fam_.kernelName, options_), {}, {}, {}, {}});
@@ -173,7 +174,7 @@ Prepared::Prepared(ocl::Runtime& rt, const photometry::Table& table, const Scene
     const size_t npx = static_cast<size_t>(scene_.res) * scene_.res;
     cl::Buffer P = ctx_->realBuffer(scene_.params());
     P_ = P;
-    auto lum = fam_.lumBuffer ? fam_.lumBuffer(spec_, table) : table.packed();
+    std::vector<float> lum = plan.lum();
     cl::Buffer L(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, lum.size() * sizeof(float), lum.data());
     ctx_->buffers.push_back(L);
     ctx_->named["P"] = P;  // for the pre-passes' kernels
@@ -183,7 +184,7 @@ Prepared::Prepared(ocl::Runtime& rt, const photometry::Table& table, const Scene
     ctx_->kernel.setArg(1, L);
     ctx_->kernel.setArg(2, out_);
     ctx_->kernel.setArg(3, cl_int(0));
-    if (fam_.setArgs) fam_.setArgs(*ctx_);
+    bindPlan(*ctx_, plan);
     statsSwitch(false);
 }
 
@@ -266,7 +267,7 @@ void Prepared::collect()
         launch(0, scene_.res).wait();
         statsSwitch(false);
     }
-    if (fam_.finish) fam_.finish(*ctx_);
+    if (finish_) finish_(*ctx_);
 }
 
 Image Prepared::image()
@@ -323,7 +324,7 @@ RenderResult render(ocl::Runtime& rt, const photometry::Table& table, const Scen
         result.timing = ocl::summarize({runInBands(prep, fam.bandRows, spec.name, res, opt.progress)});
         result.timeRes = res;
     } else if (opt.timeRes > 0 && opt.timeRes != res) {
-        // Timed at its own resolution (DESIGN 6), so that a small error image
+        // Timed at its own resolution (docs/design.md section 6), so that a small error image
         // still gets an honest time; the image is one untimed launch.
         Scene ts = scene;
         ts.res = opt.timeRes;

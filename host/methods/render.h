@@ -71,13 +71,14 @@ private:
     size_t lx_ = 8, ly_ = 8;
     cl::Buffer out_, P_;
     std::vector<StageEvent> passEvents_;
+    std::function<void(LaunchContext&)> finish_;  // the plan's
     nlohmann::json stageMs_ = nlohmann::json::object();
     std::unique_ptr<LaunchContext> ctx_;
 };
 
 struct RenderOptions {
     int reps = 5;  // timed runs after one warm-up (expensive methods: one run)
-    int timeRes = 0;  // time at res x res pixels (DESIGN 6); 0 = the image's own res
+    int timeRes = 0;  // time at res x res pixels (docs/design.md section 6); 0 = the image's own res
     bool useCache = true;  // expensive methods: reuse / store results on disk
     bool progress = false;  // expensive methods: progress on stderr
     std::string cacheDir;  // "" = $LUMIBENCH_CACHE, else ~/.cache/lumibench

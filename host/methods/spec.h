@@ -1,4 +1,4 @@
-// spec.h -- SPEC strings `name:key=value,key=value` (DESIGN section 7).
+// spec.h -- SPEC strings `name:key=value,key=value` (docs/design.md section 7).
 #pragma once
 
 #include "scene/scene.h"

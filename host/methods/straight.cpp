@@ -47,9 +47,9 @@ void addStraightLineOptions(Family& f, const std::string& define, StraightApplie
     };
     f.sceneDefines = [uses, define](const MethodSpec& s, const Scene& scene, const photometry::Table& t) {
         Specialization sp;
-        sp.lut = s.str("lookup") == "lut";
+        sp.set(Rule::Lut, s.str("lookup") == "lut");
         bool on = uses(s, scene);
-        sp.lut1d = sp.lut && on && photometry::isRotational(t);
+        sp.set(Rule::Lut1d, sp.has(Rule::Lut) && on && photometry::isRotational(t));
         return sp.defines() + (on ? " " + define : std::string());
     };
     f.lumBuffer = lookupBuffer;

@@ -7,7 +7,7 @@
 // runs one pixel per work-item or, in float8, eight (*_lanes.inc). The family
 // gets three parameters:
 //   lookup=lut|exact       trig-free table (default, as mc and cubature) or the
-//                          exact bilinear lookup of DESIGN section 3;
+//                          exact bilinear lookup of docs/design.md section 3;
 //   specialize=auto|none   auto: the straight-line form where `applies` says
 //                          the scene allows it (and the 1D table for
 //                          rotational luminaires); none: the general kernel;

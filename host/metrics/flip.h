@@ -1,5 +1,5 @@
 // flip.h -- mean HDR-FLIP (Andersson et al. 2021) of a test image against a
-// reference (DESIGN section 5), as computed by NVIDIA's `flip-evaluator`
+// reference (docs/design.md section 5), as computed by NVIDIA's `flip-evaluator`
 // package (PyPI; scripts/install-deps.sh installs it into the project's
 // .venv). There is no FLIP of our own: the package is the definition.
 //

@@ -1,5 +1,5 @@
 // image.h -- irradiance images (lux per pixel) and their OpenEXR files
-// (DESIGN section 5: one FLOAT channel named Y).
+// (docs/design.md section 5: one FLOAT channel named Y).
 #pragma once
 
 #include <string>

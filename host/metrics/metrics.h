@@ -1,5 +1,5 @@
 // metrics.h -- error of an approximation image A against a reference image R
-// (DESIGN section 5, thesis 6.2).
+// (docs/design.md section 5, thesis 6.2).
 //
 // All sums run in double over the pixels where A is finite; pixels where A is
 // NaN or infinite are counted in `nonfinite` and left out of every average,

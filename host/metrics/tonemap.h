@@ -1,4 +1,4 @@
-// tonemap.h -- pictures for people (DESIGN section 5, thesis 6.2): tone-mapped
+// tonemap.h -- pictures for people (docs/design.md section 5, thesis 6.2): tone-mapped
 // irradiance and signed error pictures, as pure functions from images to 8-bit
 // RGB. PNG files are written by metrics/png.h.
 #pragma once

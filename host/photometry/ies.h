@@ -1,4 +1,4 @@
-// ies.h -- IES LM-63 (1986/1991/1995/2002/2019) reading and writing (DESIGN section 3).
+// ies.h -- IES LM-63 (1986/1991/1995/2002/2019) reading and writing (docs/design.md section 3).
 #pragma once
 
 #include "photometry/table.h"

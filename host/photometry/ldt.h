@@ -1,4 +1,4 @@
-// ldt.h -- EULUMDAT (.ldt) reading and writing (DESIGN section 3).
+// ldt.h -- EULUMDAT (.ldt) reading and writing (docs/design.md section 3).
 #pragma once
 
 #include "photometry/table.h"

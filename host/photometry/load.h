@@ -1,4 +1,4 @@
-// load.h -- reading luminaire files into a Table (DESIGN section 3).
+// load.h -- reading luminaire files into a Table (docs/design.md section 3).
 #pragma once
 
 #include "photometry/table.h"

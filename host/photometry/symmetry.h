@@ -1,5 +1,5 @@
 // symmetry.h -- unfolding the planes a file stores into the full table over
-// C in [0, 360] (DESIGN section 3). Both readers describe their data with the
+// C in [0, 360] (docs/design.md section 3). Both readers describe their data with the
 // EULUMDAT symmetry indicator:
 //   0 none (planes over [0, 360), or [0, 360] when the file repeats 0),
 //   1 rotational (one plane), 2 mirror about C0-C180 (planes 0..180),

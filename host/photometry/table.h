@@ -1,4 +1,4 @@
-// table.h -- a luminaire as one unfolded intensity table (DESIGN section 3):
+// table.h -- a luminaire as one unfolded intensity table (docs/design.md section 3):
 // C in [0, 360] (the 360 plane repeats 0), gamma over the measured range,
 // absolute candela. The readers (ldt, ies) and the synthesiser produce it;
 // kernels receive packed() (layout: kernels/common/photometry.h).

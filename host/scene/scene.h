@@ -1,4 +1,4 @@
-// scene.h -- the normalized evaluation scene of DESIGN section 2.
+// scene.h -- the normalized evaluation scene of docs/design.md section 2.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -19,7 +19,7 @@ constexpr double kMaxSceneLength = 1e4;
 // Pixels per side: 16384^2 doubles are 2 GiB, the largest buffer we ask of a device.
 constexpr int kMaxRes = 16384;
 
-// What the image shows (DESIGN sections 2, 8, 9): the floor's direct
+// What the image shows (docs/design.md sections 2, 8, 9): the floor's direct
 // irradiance, the luminance a glossy floor reflects towards an eye, or the
 // floor's one-bounce indirect irradiance inside a room.
 enum class SceneKind { Diffuse, Specular, Indirect };
@@ -30,7 +30,7 @@ SceneKind parseSceneKind(const std::string& s);  // InputError naming the three 
 // than a float-resolved direction near grazing and no reference resolves it;
 // above 1 the Trowbridge-Reitz lobe is wider than any real glossy floor.
 constexpr double kMinAlpha = 0.01, kMaxAlpha = 1.0;
-// The room of the indirect scene (DESIGN 9): [-half, half]^2 x [0, height] m.
+// The room of the indirect scene (docs/design.md section 9): [-half, half]^2 x [0, height] m.
 constexpr double kRoomHalf = 2.5, kRoomHeight = 3.0;
 
 struct Scene {

@@ -1,7 +1,7 @@
 // scene_keys.h -- the keys that choose what a scene shows, shared by
 // experiment and tune files and by result records:
 //
-//   "scene": "diffuse" | "specular" | "indirect"     (default diffuse, DESIGN 2, 8, 9)
+//   "scene": "diffuse" | "specular" | "indirect"     (default diffuse, docs/design.md sections 2, 8, 9)
 //   "alpha": 0.25 or [0.05, 0.1, ...]                 specular: GGX roughness, swept like heights
 //   "eye": [0, 4, 2]                                  specular: the eye point (m)
 //   "albedo": 0.5                                     indirect: albedo of walls and ceiling

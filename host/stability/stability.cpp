@@ -40,7 +40,7 @@ std::string expectName(Expect e)
     return "?";
 }
 
-// One case of the catalogue (DESIGN 2 geometry, a luminaire of luminaire()).
+// One case of the catalogue (docs/design.md section 2 geometry, a luminaire of luminaire()).
 void add(std::vector<Case>& v, const char* name, const char* what, double h, double R, double W, double L,
          const char* lum, Expect e = Expect::Finite, bool quick = false, bool oddRes = false)
 {
@@ -120,7 +120,7 @@ void addLuminaireCases(std::vector<Case>& v)
     add(v, "collinear_float", "corners collinear in float (1e-9 x 1)", 1, kPi, 1e-9, 1, "lambert", Expect::Rejected);
 }
 
-// The specular scene (DESIGN 8): the glossy receiver's extremes.
+// The specular scene (docs/design.md section 8): the glossy receiver's extremes.
 void addSpecularCases(std::vector<Case>& v)
 {
     auto spec = [&](const char* name, const char* what, double h, double R, const char* lum, double alpha,
@@ -140,7 +140,7 @@ void addSpecularCases(std::vector<Case>& v)
          "stab:upward", 0.25, {0, 4, 2}, Expect::Zero, true);
 }
 
-// The indirect scene (DESIGN 9): the room's extremes. The light's corners
+// The indirect scene (docs/design.md section 9): the room's extremes. The light's corners
 // must lie strictly inside the room (Scene::validate).
 void addIndirectCases(std::vector<Case>& v)
 {
@@ -162,7 +162,7 @@ void addIndirectCases(std::vector<Case>& v)
          1, "lambert", 0.5, Expect::Rejected, true);
 }
 
-// The catalogue. Heights, rotations and sizes follow DESIGN section 2 (the
+// The catalogue. Heights, rotations and sizes follow docs/design.md section 2 (the
 // light's centre at h + L/2, R the angle between n_L and the receiver normal).
 const std::vector<Case>& catalogue()
 {
@@ -186,7 +186,7 @@ photometry::Table luminaire(const std::string& name)
         t = photometry::tabulate([&](double, double g) { return g > 90 ? -1000 * std::cos(g * deg) : 0.0; }, 2, 361);
     } else if (name == "stab:pencil") {
         // Gaussian beam of sigma 0.5 deg (5000 cd peak), measured to 10 deg
-        // in 0.05-degree steps; nothing beyond (DESIGN 3: 0 outside the range).
+        // in 0.05-degree steps; nothing beyond (docs/design.md section 3: 0 outside the range).
         t = photometry::tabulate([&](double, double g) { return 5000 * std::exp(-0.5 * (g / 0.5) * (g / 0.5)); }, 2,
                                  201, 0, 10);
     } else {

@@ -24,7 +24,7 @@ I checkRange(const std::string& name, I v, I lo, I hi, const std::string& unit =
 // A finite decimal number (the whole text); InputError naming `name` otherwise.
 double parseReal(const std::string& name, const std::string& text);
 
-// Rotations are angles in [0, 2 pi] radians (DESIGN 2 sweeps pi/2 .. pi).
+// Rotations are angles in [0, 2 pi] radians (docs/design.md section 2 sweeps pi/2 .. pi).
 constexpr double kTwoPi = 6.28318530717958647692;
 
 // An angle in radians in [0, 2 pi]: a plain number, or [C][*]pi[/D] with

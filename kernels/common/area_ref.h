@@ -1,4 +1,4 @@
-/* area_ref.h -- the converged area integral of DESIGN section 1 at one
+/* area_ref.h -- the converged area integral of docs/design.md section 1 at one
  * receiver point, by globally adaptive cubature:
  *   E(x) = (1/A) int_light I(d) max(0, n_x . w) / r^2 dA = int_[0,1]^2 f(s, t) ds dt
  * (dA = A ds dt). The one implementation behind the reference of the floor

@@ -32,7 +32,7 @@
  *        dotout:                 E = sum_tri |D| (c_i L_i + c_j L_j + c_k L_k)/(c_i + c_j + c_k) (G_i + G_j + G_k)/3
  *      with G = max(0, nx . w) and c = |n_L . w| (w the unit direction from x
  *      to the sample). dotout is Eq. 10 with the vertex radiances weighted by
- *      |n_L . w| (DESIGN 4): the triangle's radiance is the mean intensity
+ *      |n_L . w| (docs/design.md section 4): the triangle's radiance is the mean intensity
  *      over the mean projected area, (I_i + I_j + I_k) / (A (c_i + c_j + c_k)),
  *      so a vertex seen at a grazing angle, whose L = I / (A c) is least
  *      certain, counts least; for a Lambertian emitter it equals average.
@@ -630,7 +630,7 @@ LB_FN real lb_cubature_irradiance(__global const float* lum, lb_light L, real3 x
 
 /* Far-field blend (thesis 6.6 proposes blending the cubature into MCI with
  * distance; the blend_dist tunable). lb_grid_mc_irradiance: the area form of
- * DESIGN section 1 on the midpoints of a k x k grid over the light,
+ * docs/design.md section 1 on the midpoints of a k x k grid over the light,
  * E = (1/k^2) sum I(d_i) max(0, n_x . w_i) / r_i^2 -- a fixed, deterministic
  * point set (an MCI-k^2 with stratified midpoints), accurate once the light
  * is small in view. */

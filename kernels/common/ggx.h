@@ -1,4 +1,4 @@
-/* ggx.h -- the glossy receiver's BRDF (DESIGN section 8): isotropic GGX
+/* ggx.h -- the glossy receiver's BRDF (docs/design.md section 8): isotropic GGX
  * microfacet, no Fresnel (F = 1), alpha given directly,
  *   f_r(w_i, w_o) = D(h) G2(w_i, w_o) / (4 cos_i cos_o),
  *   D(h) = alpha^2 / (pi (cos_h^2 (alpha^2 - 1) + 1)^2)       (Trowbridge-Reitz)
@@ -18,7 +18,7 @@
  * textbook form cancels against G2). Symmetric in (w_i, w_o) by form
  * (Helmholtz reciprocity; tests/specular checks it and the textbook form). */
 
-/* Smith Lambda of the direction (x, y, z), z > 0 (DESIGN 8's form; for the
+/* Smith Lambda of the direction (x, y, z), z > 0 (docs/design.md section 8's form; for the
  * tests and the VNDF sampler; f_r uses S = z (1 + 2 Lambda) directly). */
 LB_FN real lb_ggx_lambda(real x, real y, real z, real alpha)
 {

@@ -1,4 +1,4 @@
-/* indirect.h -- the room of the indirect scene (DESIGN section 9) and the
+/* indirect.h -- the room of the indirect scene (docs/design.md section 9) and the
  * math of one-bounce indirect light: its five reflecting surfaces, their
  * unfolded net (the RSM's texture space), the virtual point / area light
  * estimators of the ACRSM seed and the converged bounce integral.

@@ -1,4 +1,4 @@
-/* photometry.h -- luminous intensity lookup (DESIGN section 3).
+/* photometry.h -- luminous intensity lookup (docs/design.md section 3).
  * Compiles as OpenCL C and C++ (see vec.h).
  *
  * A luminaire is one packed float buffer (host/photometry/table.h writes it):

@@ -1,4 +1,4 @@
-/* scene.h -- the light and the image grid of DESIGN section 2, shared by host
+/* scene.h -- the light and the image grid of docs/design.md section 2, shared by host
  * and kernels. Kernels receive the scene as a small array of reals P (one
  * buffer, so float and double kernels take the same argument list), laid out
  * by the indices below: the one declaration of the layout, which
@@ -21,10 +21,10 @@
 #define LB_P_ALBEDO 24 /* indirect: albedo of walls and ceiling */
 #define LB_SCENE_SIZE 28
 
-#define LB_KIND_DIFFUSE 0  /* direct irradiance on the floor (DESIGN 2) */
-#define LB_KIND_SPECULAR 1 /* luminance of a glossy floor towards the eye (DESIGN 8) */
-#define LB_KIND_INDIRECT 2 /* one-bounce indirect irradiance on the floor (DESIGN 9) */
-/* The room of the indirect scene (DESIGN 9): [-HALF, HALF]^2 x [0, HEIGHT] m,
+#define LB_KIND_DIFFUSE 0  /* direct irradiance on the floor (docs/design.md section 2) */
+#define LB_KIND_SPECULAR 1 /* luminance of a glossy floor towards the eye (docs/design.md section 8) */
+#define LB_KIND_INDIRECT 2 /* one-bounce indirect irradiance on the floor (docs/design.md section 9) */
+/* The room of the indirect scene (docs/design.md section 9): [-HALF, HALF]^2 x [0, HEIGHT] m,
  * the same values as kRoomHalf / kRoomHeight of host/scene/scene.h (a test
  * holds them equal). */
 #define LB_ROOM_HALF 2.5

@@ -1,4 +1,4 @@
-/* specref.h -- the converged reference of the specular scene (DESIGN section
+/* specref.h -- the converged reference of the specular scene (docs/design.md section
  * 8): the area form
  *   L_s(x, w_o) = (1/A) int_light I(d) f_r(w, w_o) max(0, n_x . w) / r^2 dA
  *              = int_[0,1]^2 g(s, t) ds dt

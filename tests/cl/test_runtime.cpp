@@ -3,6 +3,7 @@
 #include "testutil.h"
 #include "util/error.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -97,12 +98,27 @@ std::vector<std::string> kernelArgNames(cl::Program& prog, const std::string& na
 
 // Every kernel file declares its structural variants in a comment line
 //   @variants: "" | "-DFOO" | "-DFOO -DBAR"
-// and must build with each of them (and with -DLB_DOUBLE added where the
-// device has fp64, unless the variant already names it). In every variant,
+// or takes them from its families' tables with
+//   @variants: registry
+// (Family::variants, e.g. the cubature's from its form table), and must
+// build with each of them (and with -DLB_DOUBLE added where the device has
+// fp64, unless the variant already names it). In every variant,
 // the kernel of each method family using the file takes exactly the
 // arguments the family declares (P, lum, out, row0, then Family::args, by
 // name): the host binds by those names, so a reordered or renamed kernel
 // argument fails here instead of binding a value to the wrong slot.
+// The variants of a kernel file whose @variants line says "registry": those
+// of every family using the file (Family::variants), each once.
+std::vector<std::string> registryVariants(const std::string& file)
+{
+    std::vector<std::string> out;
+    for (const auto& fam : methods::registry().all())
+        if (fam.file == file && fam.variants)
+            for (const auto& v : fam.variants())
+                if (std::find(out.begin(), out.end(), v) == out.end()) out.push_back(v);
+    return out;
+}
+
 TEST(Runtime, EveryKernelFileBuildsWithEveryVariant)
 {
     LB_REQUIRE_RUNTIME(rt);
@@ -118,14 +134,18 @@ TEST(Runtime, EveryKernelFileBuildsWithEveryVariant)
                 break;
             }
         ASSERT_FALSE(variants.empty()) << e.path() << " declares no @variants line";
+        const std::string file = e.path().filename().string();
+        std::vector<std::string> list;
         std::regex q("\"([^\"]*)\"");
-        for (std::sregex_iterator it(variants.begin(), variants.end(), q), end; it != end; ++it) {
-            std::string opts = (*it)[1];
+        for (std::sregex_iterator it(variants.begin(), variants.end(), q), end; it != end; ++it)
+            list.push_back((*it)[1]);
+        if (variants.find("registry") != std::string::npos) list = registryVariants(file);
+        ASSERT_FALSE(list.empty()) << e.path() << ": no variants";
+        for (const std::string& opts : list) {
             std::vector<std::string> all = {opts};
             if (rt->fp64() && opts.find("LB_DOUBLE") == std::string::npos) all.push_back(opts + " -DLB_DOUBLE");
             for (auto& o : all) {
                 // -cl-kernel-arg-info: OpenCL reports argument names only then
-                const std::string file = e.path().filename().string();
                 cl::Program* prog = nullptr;
                 EXPECT_NO_THROW(prog = &rt->program(file, o + " -cl-kernel-arg-info")) << e.path() << " " << o;
                 ++built;

@@ -1,5 +1,5 @@
 // lumibench bench: a small smoke run (the goals themselves are measured by
-// hand at 512^2 and recorded in README "Performance", not asserted here).
+// hand at 512^2 and recorded in docs/performance.md, not asserted here).
 #include "testutil.h"
 
 #include <fmt/format.h>
@@ -46,8 +46,9 @@ TEST(BenchCli, QuickJsonRun)
     EXPECT_GE(j["methods"].size(), 6u);
 }
 
-// plots/bench_table.py turns the committed runs into README's tables: the
-// median run by the cubature ratio, and a clear error for a missing file.
+// plots/bench_table.py turns the committed runs into the tables of
+// docs/performance.md: the median run by the cubature ratio, and a clear
+// error for a missing file.
 TEST(BenchCli, TableScriptReadsCommittedRuns)
 {
     std::string dir = test::sourceDir();

@@ -1,4 +1,4 @@
-// build/lumibench as outside tools call it (DESIGN section 7).
+// build/lumibench as outside tools call it (docs/design.md section 7).
 #include "testutil.h"
 
 #include <array>

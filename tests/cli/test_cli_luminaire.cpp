@@ -1,5 +1,5 @@
 // `lumibench luminaire info|eval` on every file of ../shared/luminaires and on
-// bad input (DESIGN section 7).
+// bad input (docs/design.md section 7).
 #include "testutil.h"
 
 #include <nlohmann/json.hpp>

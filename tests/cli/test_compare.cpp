@@ -1,4 +1,4 @@
-// lumibench compare as outside tools call it (DESIGN section 7), on EXR files
+// lumibench compare as outside tools call it (docs/design.md section 7), on EXR files
 // written here.
 #include "metrics/flip.h"
 #include "metrics/image.h"

@@ -1,4 +1,4 @@
-// lumibench render as outside tools call it (DESIGN section 7).
+// lumibench render as outside tools call it (docs/design.md section 7).
 #include "cli/commands.h"
 #include "metrics/image.h"
 #include "testutil.h"

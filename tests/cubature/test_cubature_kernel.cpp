@@ -1,14 +1,41 @@
 // kernels/cubature.cl on the device equals the same header run on the host.
 #include "math/kmath.h"
+#include "methods/cubature_options.h"
+#include "methods/registry.h"
 #include "photometry/table.h"
 #include "scene/scene.h"
 #include "testutil.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
 namespace lb {
 namespace {
+
+// Binds cubature.cl's render arguments by their names (the family's
+// Family::args after P, lum, out, row0), statistics on, every tunable at the
+// cubature's default (the plain method: no blend, no inset, no static samples).
+void bindCubature(cl::Kernel& k, const cl::Buffer& P, const cl::Buffer& lum, const cl::Buffer& out,
+                  const cl::Buffer& stats, bool dbl)
+{
+    const auto& names = methods::family("cubature").args;
+    auto index = [&](const std::string& name) {
+        auto it = std::find(names.begin(), names.end(), name);
+        EXPECT_NE(it, names.end()) << name;
+        return methods::kCommonArgs + static_cast<cl_uint>(it - names.begin());
+    };
+    k.setArg(0, P);
+    k.setArg(1, lum);
+    k.setArg(2, out);
+    k.setArg(3, 0);  // row0
+    k.setArg(index("stats"), stats);
+    k.setArg(index("want_stats"), 1);
+    const auto tun = methods::CubatureOptions().tunables;
+#define LB_BIND_DEFAULT(name) ocl::setReal(k, index(#name), tun.name, dbl);
+    LB_CUB_TUNABLES(LB_BIND_DEFAULT)
+#undef LB_BIND_DEFAULT
+}
 
 struct KernelCase {
     const char* opts;
@@ -81,20 +108,7 @@ void matchesHost(ocl::Runtime* rt, bool dbl, double tol)
         cl::Buffer bo(rt->context(), CL_MEM_WRITE_ONLY, N * N * sizeof(T));
         cl::Buffer bs(rt->context(), CL_MEM_WRITE_ONLY, 2 * N * N * 4);
         cl::Kernel k = rt->kernel("cubature.cl", "render", std::string(kc.opts) + (dbl ? " -DLB_DOUBLE" : ""));
-        k.setArg(0, bP);
-        k.setArg(1, bl);
-        k.setArg(2, bo);
-        k.setArg(3, 0);
-        k.setArg(4, bs);
-        k.setArg(5, 1);
-        ocl::setReal(k, 6, 1e-3, dbl);
-        ocl::setReal(k, 7, 0.0, dbl);
-        ocl::setReal(k, 8, 0.0, dbl);  // corner_inset: plain
-        ocl::setReal(k, 9, 1.0, dbl);  // dyn_weight: plain
-        ocl::setReal(k, 10, 1e6, dbl);  // blend_dist: the default, no blend
-        ocl::setReal(k, 11, 1.0, dbl);  // area_q (unused: no LB_CUB_AREA)
-        ocl::setReal(k, 12, 0.5, dbl);  // area_sin (unused)
-        for (cl_uint a = 13; a < 21; ++a) ocl::setReal(k, a, 0.5, dbl);  // s1, t1 .. s4, t4 (unused: no static samples)
+        bindCubature(k, bP, bl, bo, bs, dbl);
         rt->launch2D(k, N, N).wait();
         std::vector<T> out(N * N);
         std::vector<int> st(2 * N * N);
@@ -136,7 +150,7 @@ TEST(CubatureKernel, MatchesHostDouble)
 namespace lb {
 namespace {
 
-// Device time (median of 5 after a warm-up, DESIGN 6), triangles and flips
+// Device time (median of 5 after a warm-up, docs/design.md section 6), triangles and flips
 // per pixel of each variant on a 64 x 64 image of h = 1, R = 3pi/4, printed
 // for the record. Asserts only what must hold: every pixel has between 1
 // and LB_CUB_MAXT triangles, no more flips than the guard allows, and the fan
@@ -162,21 +176,7 @@ TEST(CubatureKernel, TimingsTrianglesFlips)
     cl::Buffer bs(rt->context(), CL_MEM_WRITE_ONLY, 2 * N * N * 4);
     for (const char* v : variants) {
         cl::Kernel k = rt->kernel("cubature.cl", "render", v);
-        k.setArg(0, bP);
-        k.setArg(1, bl);
-        k.setArg(2, bo);
-        k.setArg(3, 0);
-        k.setArg(4, bs);
-        k.setArg(5, 1);
-        ocl::setReal(k, 6, 1e-3, false);
-        ocl::setReal(k, 7, 0.0, false);
-        ocl::setReal(k, 8, 0.0, false);  // corner_inset: plain
-        ocl::setReal(k, 9, 1.0, false);  // dyn_weight: plain
-        ocl::setReal(k, 10, 1e6, false);  // blend_dist: the default, no blend
-        ocl::setReal(k, 11, 1.0, false);  // area_q (unused: no LB_CUB_AREA)
-        ocl::setReal(k, 12, 0.5, false);  // area_sin (unused)
-        for (cl_uint a = 13; a < 21; ++a)
-            ocl::setReal(k, a, 0.5, false);  // s1, t1 .. s4, t4 (unused: no static samples)
+        bindCubature(k, bP, bl, bo, bs, false);
         auto t = rt->time([&] { return rt->launch2D(k, N, N); }, 5, 1);
         std::vector<int> st(2 * N * N);
         rt->queue().enqueueReadBuffer(bs, CL_TRUE, 0, st.size() * 4, st.data());

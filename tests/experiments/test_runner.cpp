@@ -55,7 +55,7 @@ json tinyExperiment()
             {"mci_curve", {1, 8, 32, 128}},
             {"reference", "reference:tol=1e-4"},
             {"res", 16},
-            {"time_res", 24},  // timed apart from the 16 x 16 error images (DESIGN 6), small for CI
+            {"time_res", 24},  // timed apart from the 16 x 16 error images (docs/design.md section 6), small for CI
             {"reps", 5},
             {"save_images", false}};
 }
@@ -281,7 +281,7 @@ TEST_F(ExperimentRun, RecordsAreSaneAndAnInterruptedRunResumes)
     ASSERT_EQ(full.records.size(), 12u * 8u);
     EXPECT_EQ(full.context["experiment"], "tiny");
     EXPECT_FALSE(full.context["device"].get<std::string>().empty());
-    // Every record carries grad_nmse and flip (DESIGN section 5), as written:
+    // Every record carries grad_nmse and flip (docs/design.md section 5), as written:
     // flip a FLIP value when flip-evaluator imports, null otherwise.
     const bool flipOk = metrics::flipAvailable();
     json raw = json::parse(slurp(dir / "a" / "results.json"));
@@ -307,7 +307,7 @@ TEST_F(ExperimentRun, RecordsAreSaneAndAnInterruptedRunResumes)
         EXPECT_EQ(r.error.grad_pairs, 2 * 16 * 15) << r.key();  // every pair of a 16 x 16 image
         EXPECT_EQ(r.error.nonfinite, 0) << r.key();
         EXPECT_GT(r.time_ms.median, 0) << r.key();
-        EXPECT_GE(r.time_ms.reps, 5);  // DESIGN section 6: median of >= 5
+        EXPECT_GE(r.time_ms.reps, 5);  // docs/design.md section 6: median of >= 5
         // Every method here is an approximation with some error: an NMSE of
         // exactly 0 would mean the reference was compared with itself.
         EXPECT_GT(r.error.nmse, 0) << r.key();

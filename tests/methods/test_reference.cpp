@@ -95,7 +95,7 @@ TEST(Reference, DoubleMatchesClosedFormsNearMidFar)
 {
     LB_REQUIRE_RUNTIME(rt);
     if (!rt->fp64()) GTEST_SKIP() << "no fp64";
-    // DESIGN / issue: <= 1e-4 relative per pixel in double. The kernel aims
+    // docs/design.md: <= 1e-4 relative per pixel in double. The kernel aims
     // at its default tol = 1e-5; the table's own error is < 1e-5 where it
     // matters (see checkScene): 1e-4 leaves a margin of 5.
     double worst = 0;

@@ -6,6 +6,7 @@
 #include "methods/specialize.h"
 #include "photometry/load.h"
 #include "photometry/lut.h"
+#include "test_tables.h"
 #include "testutil.h"
 
 #include <fmt/format.h>
@@ -25,27 +26,17 @@ Scene scene(double h, double rot, int res = 40)
     return s;
 }
 
-// A rotational luminaire emitting only forward (cos^3 lobe): every rule fires.
-photometry::Table frontLobe()
-{
-    return photometry::tabulate(
-        [](double, double g) { return g < 90 ? 500 * std::pow(std::cos(g * M_PI / 180), 3) : 0.0; }, 2, 91);
-}
-// An asymmetric luminaire emitting into both hemispheres: only noHorizon.
-photometry::Table asymmetric()
-{
-    return photometry::tabulate(
-        [](double c, double g) { return 100 + 80 * std::cos(c * M_PI / 180) * std::sin(g * M_PI / 180) + g; }, 25, 37);
-}
+using test_tables::asymmetric;
+using test_tables::frontLobe;
 
 TEST(Specialize, AnalysisRules)
 {
     auto a = analyse(scene(1.0, 3 * M_PI / 4), frontLobe(), true);
-    EXPECT_TRUE(a.lut && a.lut1d && a.noHorizon && a.noBack);
+    EXPECT_TRUE(a.has(Rule::Lut) && a.has(Rule::Lut1d) && a.has(Rule::NoHorizon) && a.has(Rule::NoBack));
     EXPECT_EQ(a.defines(), " -DLB_LUT -DLB_LUT_1D -DLB_NO_HORIZON -DLB_NO_BACK");
     auto b = analyse(scene(1.0, M_PI), asymmetric(), true);
-    EXPECT_TRUE(b.noHorizon);
-    EXPECT_FALSE(b.lut1d || b.noBack);
+    EXPECT_TRUE(b.has(Rule::NoHorizon));
+    EXPECT_FALSE(b.has(Rule::Lut1d) || b.has(Rule::NoBack));
     // h = 0 at R = pi/2: the lower edge touches the receiver plane, so the
     // light is not strictly above every horizon.
     EXPECT_FALSE(lightAboveEveryHorizon(scene(0.0, M_PI / 2)));
@@ -166,7 +157,9 @@ TEST(Specialize, CubatureRectFanRule)
     auto opts = [](const std::string& kv) {
         return CubatureOptions::parse(parseSpec("cubature" + (kv.empty() ? "" : ":" + kv)).values);
     };
-    auto fan = [&](const Scene& s, const std::string& kv) { return analyseCubature(s, t, opts(kv)).rectFan; };
+    auto fan = [&](const Scene& s, const std::string& kv) {
+        return analyseCubature(s, t, opts(kv)).form == "rect_fan";
+    };
     Scene s = scene(1.0, 3 * M_PI / 4);
     EXPECT_TRUE(fan(s, ""));
     EXPECT_EQ(analyseCubature(s, t, opts("")).defines(), " -DLB_LUT -DLB_CUB_RECT_FAN");
@@ -185,7 +178,7 @@ TEST(Specialize, CubatureRectFanRule)
     EXPECT_TRUE(fan(s, "blend_dist=3"));
     EXPECT_EQ(analyseCubature(s, t, opts("blend_dist=3")).defines(), " -DLB_LUT -DLB_CUB_RECT_FAN -DLB_CUB_BLEND");
     EXPECT_TRUE(fan(s, "blend_dist=4"));
-    EXPECT_FALSE(analyseCubature(s, t, opts("blend_dist=4")).blend);
+    EXPECT_FALSE(analyseCubature(s, t, opts("blend_dist=4")).has(Rule::Blend));
     // R = pi/2, h = 0.1: the lower edge is 0.1 m above the receiver; the clip
     // at horizon_eps + plane_eps decides
     Scene v = scene(0.1, M_PI / 2);
@@ -194,7 +187,7 @@ TEST(Specialize, CubatureRectFanRule)
     // rectClip; the normalized scene's receiver normal is perpendicular to u)
     auto clip = [&](const Scene& sc, const std::string& kv) {
         auto a = analyseCubature(sc, t, opts(kv));
-        return (a.rectFan || a.rectDel) && a.rectClip;
+        return (a.form == "rect_fan" || a.form == "rect_del") && a.has(Rule::RectClip);
     };
     EXPECT_TRUE(horizonAlongU(v));
     EXPECT_TRUE(fan(v, "plane_eps=0.001,horizon_eps=0.1"));
@@ -220,7 +213,9 @@ TEST(Specialize, CubatureRectFanRule)
     EXPECT_EQ(cubatureLanes(analyseCubature(s, t, opts("triangulation=delaunay,dynamic=np")), opts(""), "CPU", false),
               1);
     // Delaunay over corners + CP + barycentre: the same scene conditions
-    auto del = [&](const Scene& sc, const std::string& kv) { return analyseCubature(sc, t, opts(kv)).rectDel; };
+    auto del = [&](const Scene& sc, const std::string& kv) {
+        return analyseCubature(sc, t, opts(kv)).form == "rect_del";
+    };
     const std::string cb = "triangulation=delaunay,dynamic=cp+barycentre";
     EXPECT_TRUE(del(s, cb));
     EXPECT_EQ(analyseCubature(s, t, opts(cb)).defines(), " -DLB_LUT -DLB_CUB_RECT_DEL");
@@ -263,7 +258,7 @@ double cubatureDiff(ocl::Runtime& rt, const photometry::Table& t, const Scene& s
     opt.reps = 1;
     auto o = CubatureOptions::parse(parseSpec(spec).values);
     auto a = analyseCubature(s, t, o);
-    EXPECT_TRUE(a.rectFan || a.rectDel) << spec << " " << s.describe();
+    EXPECT_TRUE(a.form == "rect_fan" || a.form == "rect_del") << spec << " " << s.describe();
     std::string sep = spec.find(':') == std::string::npos ? ":" : ",";
     auto gen = render(rt, t, s, parseSpec(spec + sep + "specialize=none"), ref, opt);
     auto sp = render(rt, t, s, parseSpec(spec + sep + "lanes=" + lanes), p, opt);
@@ -608,13 +603,13 @@ TEST(Specialize, CubatureRectDelaunayAllEqualsGeneral)
     const std::string& d = specs[0];
     for (const auto& s : scenes) {
         auto a = analyseCubature(s, asym, CubatureOptions::parse(parseSpec(d).values));
-        EXPECT_TRUE(a.rectDelAll) << s.describe();
-        EXPECT_FALSE(a.rectFan || a.rectDel) << s.describe();
+        EXPECT_TRUE(a.form == "rect_del_all") << s.describe();
+        EXPECT_FALSE(a.form == "rect_fan" || a.form == "rect_del") << s.describe();
     }
     // only that method, not with specialize=none; where the horizon cuts the
     // light along u, on what it leaves (CubatureRectDelaunayAllClipEqualsGeneral)
     auto delAll = [&](const Scene& s, const std::string& spec) {
-        return analyseCubature(s, asym, CubatureOptions::parse(parseSpec(spec).values)).rectDelAll;
+        return analyseCubature(s, asym, CubatureOptions::parse(parseSpec(spec).values)).form == "rect_del_all";
     };
     EXPECT_FALSE(delAll(scenes[0], d + ",specialize=none"));
     EXPECT_FALSE(delAll(scenes[0], "cubature:triangulation=delaunay,dynamic=cp+np+barycentre"));
@@ -648,7 +643,7 @@ TEST(Specialize, CubatureRectDelaunayStaticEqualsGeneral)
                                             "cubature:triangulation=delaunay,static=3,weighting=dotout,dyn_weight=0.5",
                                             "cubature:triangulation=delaunay,static=4,s2=0.6,t2=0.2,corner_inset=0.3"};
     auto delSt = [&](const Scene& s, const std::string& spec) {
-        return analyseCubature(s, asym, CubatureOptions::parse(parseSpec(spec).values)).rectDelStatic;
+        return analyseCubature(s, asym, CubatureOptions::parse(parseSpec(spec).values)).form == "rect_del_static";
     };
     for (const auto& s : scenes) EXPECT_TRUE(delSt(s, specs[0])) << s.describe();
     EXPECT_FALSE(delSt(scenes[0], specs[0] + ",specialize=none"));
@@ -705,7 +700,7 @@ TEST(Specialize, CubatureRectClipEqualsGeneral)
         for (const auto& base : specs) {
             std::string spec = kv.empty() ? base : base + (base.find(':') == std::string::npos ? ":" : ",") + kv;
             auto a = analyseCubature(s, asym, CubatureOptions::parse(parseSpec(spec).values));
-            EXPECT_TRUE(a.rectClip) << spec << " " << s.describe();
+            EXPECT_TRUE(a.has(Rule::RectClip)) << spec << " " << s.describe();
             bool ff = spec.find("formfactor") != std::string::npos;
             double g = rt->fp64() ? generalFloatError(*rt, asym, s, spec) : 0;
             worstGeneral = std::max(worstGeneral, g);
@@ -726,7 +721,8 @@ TEST(Specialize, CubatureRectClipEqualsGeneral)
     EXPECT_NE(one.stats.value("defines", std::string()).find("-DLB_CUB_RECT_CLIP"), std::string::npos)
         << one.stats.dump();
     for (const auto& spec : specs) {
-        EXPECT_TRUE(analyseCubature(below, asym, CubatureOptions::parse(parseSpec(spec).values)).rectClip) << spec;
+        EXPECT_TRUE(analyseCubature(below, asym, CubatureOptions::parse(parseSpec(spec).values)).has(Rule::RectClip))
+            << spec;
         auto sp = render(*rt, asym, below, parseSpec(spec), Precision::Float, opt);
         for (double e : sp.image.px) EXPECT_EQ(e, 0.0) << spec;
         EXPECT_EQ(sp.stats["triangles_per_pixel"], 0.0) << spec;
@@ -764,7 +760,7 @@ TEST(Specialize, CubatureRectDelaunayAllClipEqualsGeneral)
         for (const auto& base : specs) {
             std::string spec = kv.empty() ? base : base + "," + kv;
             auto a = analyseCubature(s, asym, CubatureOptions::parse(parseSpec(spec).values));
-            EXPECT_TRUE(a.rectDelAll && a.rectClip) << spec << " " << s.describe();
+            EXPECT_TRUE(a.form == "rect_del_all" && a.has(Rule::RectClip)) << spec << " " << s.describe();
             double g = rt->fp64() ? generalFloatError(*rt, asym, s, spec) : 0;
             worstGeneral = std::max(worstGeneral, g);
             if (rt->fp64()) worstD = std::max(worstD, diff(s, spec, Precision::Double, "1", Precision::Double, 1e-12));
@@ -776,7 +772,7 @@ TEST(Specialize, CubatureRectDelaunayAllClipEqualsGeneral)
     RenderOptions opt;
     opt.reps = 1;
     Scene below = scene(-1.0, M_PI, 45);
-    EXPECT_TRUE(analyseCubature(below, asym, CubatureOptions::parse(parseSpec(d).values)).rectDelAll);
+    EXPECT_TRUE(analyseCubature(below, asym, CubatureOptions::parse(parseSpec(d).values)).form == "rect_del_all");
     auto sp = render(*rt, asym, below, parseSpec(d), Precision::Float, opt);
     for (double e : sp.image.px) EXPECT_EQ(e, 0.0);
     EXPECT_EQ(sp.stats["triangles_per_pixel"], 0.0);

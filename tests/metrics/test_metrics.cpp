@@ -1,4 +1,4 @@
-// Error metrics on tiny images whose values are worked out by hand (DESIGN section 5).
+// Error metrics on tiny images whose values are worked out by hand (docs/design.md section 5).
 #include "metrics/metrics.h"
 #include "util/error.h"
 
@@ -118,7 +118,7 @@ TEST(Metrics, NonFiniteTestPixelsAreCountedAndExcluded)
     EXPECT_TRUE(std::isnan(all.mean_ref));
 }
 
-// grad_nmse (DESIGN section 5) on R = [1 2; 3 4], A = [2 2; 2 6]: the pairs
+// grad_nmse (docs/design.md section 5) on R = [1 2; 3 4], A = [2 2; 2 6]: the pairs
 // right and down have dR = 1, 1 (rows) and 2, 2 (columns), dA = 0, 4 and 0, 4,
 // so (dR - dA)^2 = 1, 9, 4, 4: sum 18 over M = 4 pairs, 4.5 / (mean R mean A)
 // = 4.5 / 7.5 = 0.6.

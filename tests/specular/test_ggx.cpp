@@ -1,6 +1,6 @@
 // The glossy receiver's BRDF (kernels/common/ggx.h), its directional albedo
 // and the specular reference (kernels/common/specref.h) against the closed
-// form of DESIGN section 8.
+// form of docs/design.md section 8.
 #include "ltc/ltc.h"
 #include "math/kmath.h"
 #include "photometry/synth.h"
@@ -14,7 +14,7 @@
 namespace lb {
 namespace {
 
-// DESIGN 8 literally: D(h) G2 / (4 cos_i cos_o), Lambda by tan^2.
+// docs/design.md section 8 literally: D(h) G2 / (4 cos_i cos_o), Lambda by tan^2.
 double textbookBrdf(glm::dvec3 wi, glm::dvec3 wo, double a)
 {
     if (wi.z <= 0 || wo.z <= 0) return 0;
@@ -63,7 +63,7 @@ TEST(Ggx, MatchesTextbookFormAndIsReciprocal)
 // (ltc::albedo, host/ltc/fit.cpp: Gauss-Legendre over the half vector, the
 // lobe unrolled, psi split at the horizon's kinks) at 64^2 panels, twice the
 // fit's 32. Its integrand is the header's f_r, which
-// MatchesTextbookFormAndIsReciprocal holds to DESIGN's G2 form pointwise
+// MatchesTextbookFormAndIsReciprocal holds to docs/design.md's G2 form pointwise
 // (1e-12 relative).
 double albedoQuadrature(double a, double theta) { return ltc::albedo(a, theta, 64); }
 
@@ -90,7 +90,7 @@ TEST(Ggx, EnergyAtMostOneAndAlbedoAgrees)
 // radiance I0 / A over the directions it covers, every direction but those
 // within atan(1/100) of the horizon (cosine-weighted share ~1e-4 of the
 // hemisphere). So L_s = (I0 / A) rho(w_o) up to that share: asserted 1e-3
-// relative, the DESIGN 8 check, with rho by the quadrature above.
+// relative, the docs/design.md section 8 check, with rho by the quadrature above.
 TEST(SpecularReference, LargeLambertianLightGivesAlbedo)
 {
     photometry::Table lam = photometry::synth("lambert");
