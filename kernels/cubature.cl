@@ -21,7 +21,7 @@
  *                     lb_cub_rect_delall
  *   LB_CUB_RECT_DELST nothing clipped, Delaunay over corners + CP + LB_CUB_STATIC static
  *                     samples (each at least 1 % inside the light): the straight-line
- *                     lb_cub_rect_delst (one) or lb_cub_rect_delstk (2 to 4)
+ *                     lb_cub_rect_delst: lb_cub_rect_delst1 (one) or lb_cub_rect_delstk (2 to 4)
  *   LB_CUB_RECT_CLIP  with LB_CUB_RECT_FAN or _DEL: the horizon cuts the light, along
  *                     its u edges (receiver normal perpendicular to u, as in every
  *                     normalized scene): the forms run on the rectangle it leaves
@@ -33,7 +33,7 @@
  *                     per work-item in float8 (host/methods: lanes; CPUs by default)
  *   LB_LUT            trig-free intensity table (common/lut.h), `lum` is the LUT
  *   LB_CUB_AREA=n     blend in the area form by the n x n Gauss-Legendre rule (n = 2, 3;
- *                     common/cubature_lanes.inc lb_area_gauss_rect), in every form
+ *                     common/cubature/clip_blend.inc lb_area_gauss_rect), in every form
  * Continuous tunables (kernel arguments, common/cubature.h LB_CUB_TUNABLES, one
  * lb_cub_tunables per work-item): plane_eps, horizon_eps (metres),
  * corner_inset, dyn_weight (common/cubature.h lb_cubature_irradiance; 0, 1 = plain),
