@@ -35,7 +35,7 @@ def main():
     ap.add_argument('--luminaire', default='luminaires/batwing.ldt')
     ap.add_argument('--height', default='1')
     ap.add_argument('--rotation', default='3pi/4')
-    a = ap.parse_args()
+    a = ap.parse_intermixed_args()
     lb = os.environ.get('LB', 'build/lumibench')
     specs = a.specs or DEFAULT
     t = {(s, k): [] for s in specs for k in 'ab'}
