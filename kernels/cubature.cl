@@ -21,7 +21,7 @@
  *                     lb_cub_rect_delall
  *   LB_CUB_RECT_DELST nothing clipped, Delaunay over corners + CP + LB_CUB_STATIC static
  *                     samples (each at least 1 % inside the light): the straight-line
- *                     lb_cub_rect_delst (one) or lb_cub_rect_delstk (2 to 4)
+ *                     lb_cub_rect_delst: lb_cub_rect_delst1 (one) or lb_cub_rect_delstk (2 to 4)
  *   LB_CUB_RECT_CLIP  with LB_CUB_RECT_FAN or _DEL: the horizon cuts the light, along
  *                     its u edges (receiver normal perpendicular to u, as in every
  *                     normalized scene): the forms run on the rectangle it leaves
@@ -33,7 +33,7 @@
  *                     per work-item in float8 (host/methods: lanes; CPUs by default)
  *   LB_LUT            trig-free intensity table (common/lut.h), `lum` is the LUT
  *   LB_CUB_AREA=n     blend in the area form by the n x n Gauss-Legendre rule (n = 2, 3;
- *                     common/cubature_lanes.inc lb_area_gauss_rect), in every form
+ *                     common/cubature/clip_blend.inc lb_area_gauss_rect), in every form
  * Continuous tunables (kernel arguments, common/cubature.h LB_CUB_TUNABLES, one
  * lb_cub_tunables per work-item): plane_eps, horizon_eps (metres),
  * corner_inset, dyn_weight (common/cubature.h lb_cubature_irradiance; 0, 1 = plain),
@@ -84,141 +84,110 @@
     lb_cub_tunables tun;                                                                                       \
     LB_CUB_TUNABLES(CUB_TUNABLE_SET)
 
-/* The straight-line forms: fan around CP, or Delaunay over corners + CP +
- * barycentre; (e, triangles, flips) of one pixel or eight. */
-/* On the rectangle [ou, ou + W] x [v0c, v0c + lc] at height hc: the light, or
- * with LB_CUB_RECT_CLIP what the horizon leaves of it (lb_cub_rect_clip). */
-/* rect: that rectangle (lb_rect_span), view: the receiver at hc (lb_rect_view). */
-#if defined(LB_CUB_RECT_DELALL)
-#define LB_CUB_RECT_CALL(s, nt, nf) lb_cub_rect_delall##s(lum, &rect, &view, opt, tun, want_stats, &nt, &nf)
-#elif defined(LB_CUB_RECT_DELST) && LB_CUB_STATIC == 1
-#define LB_CUB_RECT_CALL(s, nt, nf) lb_cub_rect_delst##s(lum, &rect, &view, opt, tun, want_stats, &nt, &nf)
-#elif defined(LB_CUB_RECT_DELST)
-#define LB_CUB_RECT_CALL(s, nt, nf) lb_cub_rect_delstk##s(lum, &rect, &view, opt, tun, want_stats, &nt, &nf)
-#elif defined(LB_CUB_RECT_DEL)
-#define LB_CUB_RECT_CALL(s, nt, nf) lb_cub_rect_del##s(lum, &rect, &view, opt, tun, &nt, &nf)
-#elif defined(LB_CUB_RECT_FAN)
-#define LB_CUB_RECT_CALL(s, nt, nf)                                                                             \
-    lb_cub_rect_fan##s(lum, &rect, &view, opt, tun, &nt);                                                       \
-    nf = 0
-#endif
+/* The straight-line form of the -D define (LB_CUB_RECT_FAN, _DEL, _DELALL,
+ * _DELST): its file under common/cubature/ makes it LB_CUB_FORM, called
+ * once below with the signature every form has. It runs on the rectangle
+ * [ou, ou + W] x [v0c, v0c + lc] at height hc: the light, or with
+ * LB_CUB_RECT_CLIP what the horizon leaves of it (lb_cub_rect_clip). rect:
+ * that rectangle (lb_rect_span), view: the receiver at hc (lb_rect_view). */
+#define CUB_NAME_(name, s) name##s
+#define CUB_NAME(name, s) CUB_NAME_(name, s)
 #ifdef LB_CUB_RECT_CLIP
-#define LB_CUB_RECT_CLIP_CALL(s) lb_cub_rect_clip##s(ov, hc, P[LB_P_L], av, an, tun.horizon_eps, &v0c, &lc)
+#define CUB_CLIP() LB_VFN(lb_cub_rect_clip)(ov, hc, P[LB_P_L], av, an, tun.horizon_eps, &v0c, &lc)
 #else
-#define LB_CUB_RECT_CLIP_CALL(s) (void)0
+#define CUB_CLIP() (void)0
 #endif
 
-#if defined(LB_CUB_RECT_CALL) && defined(LB_LANES) && LB_LANES == 8 && !defined(LB_DOUBLE)
+#if defined(LB_CUB_FORM)
+#if defined(LB_LANES) && LB_LANES == 8 && !defined(LB_DOUBLE)
 /* Eight pixels of a row per work-item in float8 (common/lanes8.h): the host
  * launches ceil(N / 8) work-items per row. Float only: a double build ignores
  * LB_LANES (the host asks for 8 lanes only in float). */
 #include "common/lanes8.h"
 #include "common/lanes_all.inc"
-#include "common/lanes_end.h"
-
-CUB_KERNEL
-{
-    CUB_PROLOGUE
-    int col0, row, res;
-    float8 ou, ov, on;
-    real au, av, an;
-    if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
-        return;
-    int8 nt, nf;
-    float8 hc = lb_cub_rect_shift_x8(on, lb_plane_distance_x8(P, (float8)(0, 1, 2, 3, 4, 5, 6, 7) + (float)col0, row), tun.plane_eps);
-    float8 v0c = ov, lc = (float8)(P[LB_P_L]);
-    LB_CUB_RECT_CLIP_CALL(_x8);
-    const real inv_area = R(1) / (P[LB_P_W] * P[LB_P_L]);
-    lb_rect_span_x8 rect = lb_rect_span_at_x8(ou, v0c, P[LB_P_W], lc);
-    lb_rect_view_x8 view = lb_rect_view_at_x8(hc, au, av, an, inv_area);
-    /* the pixels as the blends see the light: at their own height (no plane shift) */
-    lb_rect_view_x8 vw = lb_rect_view_at_x8(on, au, av, an, inv_area);
-#ifdef LB_CUB_AREA
-    /* the area form's weight; where every lane takes the area form alone the
-     * cubature is not evaluated (a far-field row costs only the area rule) */
-    float8 ta = lb_area_weight_x8(rect, on, tun.area_q, tun.area_sin);
-    float8 e = (float8)(0.0f);
-    nt = (int8)(0);
-    nf = (int8)(0);
-    if (any(ta < 1.0f))
-        e = LB_CUB_RECT_CALL(_x8, nt, nf);
+#define CUB_FORM CUB_NAME(LB_CUB_FORM, _x8)
 #else
-    float8 e = LB_CUB_RECT_CALL(_x8, nt, nf);
+/* One pixel per work-item (GPUs, double, the exact lookup). */
+#include "common/lanes1.h"
+#define CUB_FORM LB_CUB_FORM
 #endif
-    /* the blends in the general kernel's order: the grid MC's, then the area form's */
-#ifdef LB_CUB_BLEND
-    float8 t;
-    e = lb_cub_rect_blend_x8(lum, e, lb_rect_span_at_x8(ou, ov, P[LB_P_W], (float8)(P[LB_P_L])), vw, tun.blend_dist,
-                             &t);
-    nt = t >= 1.0f ? 0 : nt; /* no cubature where the grid MC alone counts */
-    nf = t >= 1.0f ? 0 : nf;
-#endif
-#ifdef LB_CUB_AREA
-    e = lb_area_blend_x8(lum, e, ta, rect, vw);
-    nt = ta >= 1.0f ? 0 : nt;
-    nf = ta >= 1.0f ? 0 : nf;
-#endif
-    int i = row * res + col0;
-    lb_store_x8(out, i, res - col0, e);
+
+/* The pixels' results: e, and with want_stats the (triangles, flips) pairs. */
+LB_FN void LB_VFN(cub_store)(__global real* out, __global int* stats, int want_stats, int i, int left, LB_V e,
+                             LB_I nt, LB_I nf)
+{
+#if LB_NLANES == 8
+    lb_store_x8(out, i, left, e);
     if (!want_stats)
         return;
     int nv[8], fv[8];
     vstore8(nt, 0, nv);
     vstore8(nf, 0, fv);
-    for (int j = 0; j < 8 && col0 + j < res; ++j) { /* (triangles, flips) pairs */
+    for (int j = 0; j < 8 && j < left; ++j) {
         stats[2 * (i + j)] = nv[j];
         stats[2 * (i + j) + 1] = fv[j];
     }
-}
-#elif defined(LB_CUB_RECT_CALL)
-/* The scene needs no clip (or, with LB_CUB_RECT_CLIP, one along the u
- * edges), and the method is a fan around CP (or corner 0) or Delaunay over
- * corners + CP + barycentre: common/cubature_lanes.inc, one pixel per
- * work-item (GPUs, double, the exact lookup). Without LB_CUB_RECT_CLIP
- * horizon_eps is unused: the host chose that variant because it clips
- * nothing. */
-CUB_KERNEL
-{
-    CUB_PROLOGUE
-    int col, row, res;
-    real ou, ov, on, au, av, an;
-    if (!lb_work_item_pixels(P, row0, &col, &row, &res, &ou, &ov, &on, &au, &av, &an))
-        return;
-    int nt, nf;
-    real hc = lb_cub_rect_shift(on, lb_plane_distance(P, (real)col, row), tun.plane_eps);
-    real v0c = ov, lc = P[LB_P_L];
-    LB_CUB_RECT_CLIP_CALL();
-    const real inv_area = R(1) / (P[LB_P_W] * P[LB_P_L]); /* as the 8-lane form */
-    lb_rect_span rect = lb_rect_span_at(ou, v0c, P[LB_P_W], lc);
-    lb_rect_view view = lb_rect_view_at(hc, au, av, an, inv_area);
-    lb_rect_view vw = lb_rect_view_at(on, au, av, an, inv_area);
-#ifdef LB_CUB_AREA
-    real ta = lb_area_weight(rect, on, tun.area_q, tun.area_sin);
-    real e = R(0);
-    nt = nf = 0;
-    if (ta < R(1))
-        e = LB_CUB_RECT_CALL(, nt, nf);
 #else
-    real e = LB_CUB_RECT_CALL(, nt, nf);
-#endif
-#ifdef LB_CUB_BLEND
-    real t;
-    e = lb_cub_rect_blend(lum, e, lb_rect_span_at(ou, ov, P[LB_P_W], P[LB_P_L]), vw, tun.blend_dist, &t);
-    nt = t >= R(1) ? 0 : nt;
-    nf = t >= R(1) ? 0 : nf;
-#endif
-#ifdef LB_CUB_AREA
-    e = lb_area_blend(lum, e, ta, rect, vw);
-    nt = ta >= R(1) ? 0 : nt;
-    nf = ta >= R(1) ? 0 : nf;
-#endif
-    int i = row * res + col;
+    (void)left;
     out[i] = e;
     if (want_stats) {
         stats[2 * i] = nt;
         stats[2 * i + 1] = nf;
     }
+#endif
 }
+
+/* The scene needs no clip (or, with LB_CUB_RECT_CLIP, one along the u
+ * edges): without LB_CUB_RECT_CLIP horizon_eps is unused, the host chose
+ * the form because it clips nothing. */
+CUB_KERNEL
+{
+    CUB_PROLOGUE
+    int col0, row, res;
+    LB_V ou, ov, on;
+    real au, av, an;
+    if (!LB_VFN(lb_work_item_pixels)(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
+        return;
+    LB_V hc = LB_VFN(lb_cub_rect_shift)(on, LB_VFN(lb_plane_distance)(P, LB_LANE_INDEX + (real)col0, row),
+                                        tun.plane_eps);
+    LB_V v0c = ov, lc = (LB_V)(P[LB_P_L]);
+    CUB_CLIP();
+    const real inv_area = R(1) / (P[LB_P_W] * P[LB_P_L]);
+    LB_VFN(lb_rect_span) rect = LB_VFN(lb_rect_span_at)(ou, v0c, P[LB_P_W], lc);
+    LB_VFN(lb_rect_view) view = LB_VFN(lb_rect_view_at)(hc, au, av, an, inv_area);
+    /* the pixels as the blends see the light: at their own height (no plane shift) */
+    LB_VFN(lb_rect_view) vw = LB_VFN(lb_rect_view_at)(on, au, av, an, inv_area);
+    LB_VFN(lb_cub_count) cnt;
+    cnt.want_flips = want_stats;
+#ifdef LB_CUB_AREA
+    /* the area form's weight; where every lane takes the area form alone the
+     * cubature is not evaluated (a far-field row costs only the area rule) */
+    LB_V ta = LB_VFN(lb_area_weight)(rect, on, tun.area_q, tun.area_sin);
+    LB_V e = R(0);
+    cnt.ntri = 0;
+    cnt.nflips = 0;
+    if (LB_ANY(ta < R(1)))
+        e = CUB_FORM(lum, &rect, &view, &opt, &tun, &cnt);
+#else
+    LB_V e = CUB_FORM(lum, &rect, &view, &opt, &tun, &cnt);
+#endif
+    LB_I nt = cnt.ntri, nf = cnt.nflips;
+    /* the blends in the general kernel's order: the grid MC's, then the area form's */
+#ifdef LB_CUB_BLEND
+    LB_V t;
+    e = LB_VFN(lb_cub_rect_blend)(lum, e, LB_VFN(lb_rect_span_at)(ou, ov, P[LB_P_W], (LB_V)(P[LB_P_L])), vw,
+                                  tun.blend_dist, &t);
+    nt = t >= R(1) ? 0 : nt; /* no cubature where the grid MC alone counts */
+    nf = t >= R(1) ? 0 : nf;
+#endif
+#ifdef LB_CUB_AREA
+    e = LB_VFN(lb_area_blend)(lum, e, ta, rect, vw);
+    nt = ta >= R(1) ? 0 : nt;
+    nf = ta >= R(1) ? 0 : nf;
+#endif
+    LB_VFN(cub_store)(out, stats, want_stats, row * res + col0, res - col0, e, nt, nf);
+}
+#include "common/lanes_end.h"
 #else
 CUB_KERNEL
 {

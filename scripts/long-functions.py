@@ -88,4 +88,5 @@ def main():
     if check and rows:
         print(f'long-functions: {len(rows)} function(s) over {limit} lines; split them', file=sys.stderr)
         sys.exit(1)
-main()
+if __name__ == '__main__':
+    main()

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs the dependencies, checks the C++ formatting (scripts/check-format.sh)
-# and that no host function exceeds 80 lines (scripts/long-functions.py),
+# Installs the dependencies, checks the C++ formatting (scripts/check-format.sh),
+# that no host function exceeds 80 lines (scripts/long-functions.py) and no
+# kernel function exceeds 80 lines or 8 parameters (scripts/kernel-limits.py),
 # builds, and runs the whole test suite on the default OpenCL device (PoCL).
 # Tests that need a device fail rather than skip.
 set -euo pipefail
@@ -8,6 +9,8 @@ cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 bash scripts/check-format.sh
 python3 scripts/long-functions.py --check 80 $(git ls-files 'host/*.cpp' 'host/*.h')
+python3 scripts/kernel-limits.py --self-test
+python3 scripts/kernel-limits.py $(git ls-files 'kernels/*.h' 'kernels/*.inc' 'kernels/*.cl')
 bash scripts/build.sh
 export LUMIBENCH_REQUIRE_DEVICE=1
 export POCL_MAX_PTHREAD_COUNT="${POCL_MAX_PTHREAD_COUNT:-$(nproc)}"

@@ -103,7 +103,7 @@ LB_FN lb_cub_options lb_cub_paper_options(void)
  *                (lb_cubature_irradiance; 0 = plain)
  *   dyn_weight   scale of the dynamic samples' weights (1 = plain)
  *   blend_dist   (m) the far-field blend into the 3 x 3 grid MC (lb_blend_weight)
- *   area_q, area_sin  the area form's blend (cubature_lanes.inc lb_area_weight)
+ *   area_q, area_sin  the area form's blend (cubature/clip_blend.inc lb_area_weight)
  *   s1, t1 .. s4, t4  the static samples' positions in the light's unit square
  *                (s along u, t along v; the first opt.nstatic are used) */
 #define LB_CUB_TUNABLES(X)                                                                                           \
