@@ -186,7 +186,15 @@ LB_FN real mc_ext(__global const real* P, __global const float* lum, __global co
         real kw = useSolid ? ksolid / bp : tv * ri * ri * ri;
         e = LB_INTENSITY3(lum, -pu, -pv, -on) * cw * kw;
 #else
+#if LB_MC_DOMAIN == 3
+        /* i is the same in every work-item: a uniform branch skips the
+         * projected sampler for the area samples */
+        real3 dr = R3(0, 0, 1);
+        if (proj)
+            dr = lb_mc_proj_sample(&pj, u0, u1);
+#else
         real3 dr = lb_mc_proj_sample(&pj, u0, u1);
+#endif
         real wu = dr.x * t1u + dr.y * t2u + dr.z * au;
         real wv = dr.x * t1v + dr.y * t2v + dr.z * av;
         real wn = dr.x * t1n + dr.y * t2n + dr.z * an;
