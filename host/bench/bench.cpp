@@ -319,6 +319,7 @@ nlohmann::json specularTimes(Bench& b)
 // spherical rectangle's angles, the projected polygon's arcs) stays out of
 // it; the goals compare each domain with area sampling on the same shared
 // points. Also each sampler's t(8) against mc:n=8 (set-up included).
+// --quick: the two samplers with goals.
 nlohmann::json mcSamplers(Bench& b)
 {
     struct Row {
@@ -335,10 +336,18 @@ nlohmann::json mcSamplers(Bench& b)
     double area8 = 0;
     const double area = perSample("domain=area", &area8);
     nlohmann::json rows = nlohmann::json::array();
-    for (Row r : {Row{"domain=area,sequence=random", 0}, Row{"domain=area,sequence=sobol", 0},
-                  Row{"domain=area,sequence=zsobol", 0}, Row{"domain=solid", 2}, Row{"domain=solid,cosine_warp=1", 0},
-                  Row{"domain=solid,sequence=sobol", 0}, Row{"paper=1", 0}, Row{"domain=projected", 3},
-                  Row{"domain=projected,sequence=sobol", 0}, Row{"domain=mis,sequence=sobol", 0}}) {
+    const std::vector<Row> quick = {Row{"domain=solid", 2}, Row{"domain=projected", 3}};
+    const std::vector<Row> all = {Row{"domain=area,sequence=random", 0},
+                                  Row{"domain=area,sequence=sobol", 0},
+                                  Row{"domain=area,sequence=zsobol", 0},
+                                  Row{"domain=solid", 2},
+                                  Row{"domain=solid,cosine_warp=1", 0},
+                                  Row{"domain=solid,sequence=sobol", 0},
+                                  Row{"paper=1", 0},
+                                  Row{"domain=projected", 3},
+                                  Row{"domain=projected,sequence=sobol", 0},
+                                  Row{"domain=mis,sequence=sobol", 0}};
+    for (const Row& r : b.opt.quick ? quick : all) {
         double t8 = 0;
         double c = perSample(r.spec, &t8);
         nlohmann::json row = {
