@@ -75,6 +75,7 @@ def main():
                         vals.append(nmse(ref, out))
                     table[name][n].append(sum(vals) / len(vals))
             print(f"{lum} h {h} R {rot} done", file=sys.stderr, flush=True)
+            json.dump({"partial": True, "table": table}, open(a.out, "w"))
     rows = []
     for name, spec in SAMPLERS:
         gm = {n: math.exp(sum(math.log(max(v, 1e-300)) for v in table[name][n]) / len(table[name][n])) for n in ns}
