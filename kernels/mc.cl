@@ -26,7 +26,16 @@
  *   LB_NO_HORIZON  the light lies above every receiver's horizon: no max(0, cos)
  *   LB_NO_BACK     the luminaire emits nothing at gamma >= 90 deg: work-groups
  *                  whose tile lies behind the light's plane are 0 without a loop
- * @variants: "" | "-DLB_LUT" | "-DLB_LUT -DLB_LUT_1D -DLB_NO_HORIZON -DLB_NO_BACK"
+ *
+ * The extended path (-DLB_MC_EXT, mc_ext below; host/methods/mc_options.h
+ * sets it for anything but today's MCI): per-pixel sequences (LB_MC_SEQ:
+ * shared set, optionally shifted per pixel, LB_MC_SHIFT; hashed random;
+ * Owen-scrambled Sobol; ZSobol) and sampling domains (LB_MC_DOMAIN: area,
+ * solid angle with LB_MC_WARP the cosine warp, projected solid angle, MIS),
+ * the math in common/mc_sample.h; LB_MC_VAR writes each pixel's variance
+ * for the a-trous filter (common/denoise.h, whose kernels this program also
+ * holds: the method's post-passes).
+ * @variants: "" | "-DLB_LUT" | "-DLB_LUT -DLB_LUT_1D -DLB_NO_HORIZON -DLB_NO_BACK" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_MC_WARP" | "-DLB_MC_EXT -DLB_MC_DOMAIN=3 -DLB_MC_SEQ=3 -DLB_MC_CLIPV -DLB_MC_VAR -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=2 -DLB_MC_SEQ=1 -DLB_MC_SHIFT"
  */
 #include "common/lbmath.h"
 
@@ -39,8 +48,189 @@ LB_FN real mc_on(__global const real* P, int col, int row)
     return on;
 }
 
+#ifdef LB_MC_EXT
+#ifndef LB_MC_DOMAIN
+#define LB_MC_DOMAIN 0
+#endif
+#ifndef LB_MC_SEQ
+#define LB_MC_SEQ 0
+#endif
+
+/* Point j in [0,1)^2 of the pixel's sequence (LB_MC_SEQ: 0 shared, 1 random,
+ * 2 sobol, 3 zsobol); hp the pixel's hash, salt one per sampling technique
+ * (so that the two techniques of mis take independent points). */
+LB_FN void mc_point(__global const real* st, int j, int i, lb_u32 hp, lb_u32 salt, int col, int row, int lg,
+                    int digits, lb_u32 seed, real* u0, real* u1)
+{
+#if LB_MC_SEQ == 0
+    real a = st[2 * i], b = st[2 * i + 1];
+#ifdef LB_MC_SHIFT
+    /* Cranley-Patterson rotation of the shared set by the pixel's hash */
+    a += lb_mc_unit(lb_mc_hash(hp ^ 0x2545f491U));
+    b += lb_mc_unit(lb_mc_hash(hp ^ 0x9e3779b9U));
+    a = a >= R(1) ? a - R(1) : a;
+    b = b >= R(1) ? b - R(1) : b;
+#endif
+    *u0 = a;
+    *u1 = b;
+#elif LB_MC_SEQ == 1
+    lb_u32 h = lb_mc_hash(hp ^ salt);
+    *u0 = lb_mc_unit(lb_mc_hash(h ^ lb_mc_hash(2U * (lb_u32)j)));
+    *u1 = lb_mc_unit(lb_mc_hash(h ^ lb_mc_hash(2U * (lb_u32)j + 1U)));
+#elif LB_MC_SEQ == 2
+    lb_u32 h = lb_mc_hash(hp ^ salt);
+    *u0 = lb_mc_unit(lb_mc_owen(lb_mc_sobol0((lb_u32)j), lb_mc_hash(h ^ 0xa511e9b3U)));
+    *u1 = lb_mc_unit(lb_mc_owen(lb_mc_sobol1((lb_u32)j, lg), lb_mc_hash(h ^ 0x63d83595U)));
+#else
+    lb_u32 sd = lb_mc_hash(seed ^ salt);
+    lb_u32 idx = lb_mc_zsobol_index(col, row, (lb_u32)j, lg, digits, sd);
+    *u0 = lb_mc_unit(lb_mc_owen(lb_mc_sobol0(idx), lb_mc_hash(sd ^ 0xa511e9b3U)));
+    *u1 = lb_mc_unit(lb_mc_owen(lb_mc_sobol1(idx, 2 * digits), lb_mc_hash(sd ^ 0x63d83595U)));
+#endif
+}
+
+/* The pixel's estimate with m samples (domain LB_MC_DOMAIN: 0 area on the
+ * whole light, 1 solid angle, 2 projected solid angle, 3 mis: np projected
+ * and m - np area samples by the balance heuristic; 1-3 on the part of the
+ * light above the receiver's horizon, clipped along v: LB_MC_CLIPV, the
+ * receiver normal perpendicular to u). *ev: the variance of the estimate
+ * (the sample variance / m). One barrier per sample, as the main loop. */
+LB_FN real mc_ext(__global const real* P, __global const float* lum, __global const real* st, int col, int row,
+                  int res, int m, real ou, real ov, real on, real au, real av, real an, lb_u32 seed, int np, int lg,
+                  real min_solid, real* ev)
+{
+    real w = P[LB_P_W], l = P[LB_P_L];
+    real area = w * l;
+    lb_u32 hp = lb_mc_hash(lb_mc_hash(seed * 0x9e3779b9U + 0x632be5abU) ^ (lb_u32)(row * res + col));
+    int rb = 0;
+    while ((1 << rb) < res)
+        ++rb;
+    int digits = rb + (lg + 1) / 2;
+    /* The part of the light above the horizon: n_x . p = av (ov + L t) + an on >= 0. */
+    real t0 = R(0), t1 = R(1);
+#ifdef LB_MC_CLIPV
+    {
+        real num = -(av * ov + an * on), den = av * l;
+        if (den > R(0))
+            t0 = clamp(num / den, R(0), R(1));
+        else if (den < R(0))
+            t1 = clamp(num / den, R(0), R(1));
+        else if (num > R(0))
+            t1 = R(0);
+    }
+#endif
+    real tv = fmax(t1 - t0, R(0));
+    real y0 = ov + l * t0, ey = l * tv;
+    real on2 = on * on, an0 = an * on;
+#if LB_MC_DOMAIN == 1
+    lb_mc_sphrect q = lb_mc_sphrect_setup(ou, y0, on, w, ey);
+    real3 c0 = R3(ou, y0, on), c1 = R3(ou + w, y0, on), c2 = R3(ou + w, y0 + ey, on), c3 = R3(ou, y0 + ey, on);
+    real omega = fabs(lb_tri_solid_angle(c0, c1, c2) + lb_tri_solid_angle(c0, c2, c3));
+    /* solid-angle sampling where the solid angle is not tiny; else area
+     * sampling of the same rectangle (exact pdf: 1 / its area) */
+    bool useSolid = omega >= min_solid && q.s > R(0) && fabs(on) > R(0);
+    real ksolid = useSolid ? omega / (fabs(on) * area) : R(0);
+#ifdef LB_MC_WARP
+    real nl0 = R(1) / length(c0), nl1 = R(1) / length(c1), nl2 = R(1) / length(c2), nl3 = R(1) / length(c3);
+    real w00 = fmax(R(0.01), (au * c0.x + av * c0.y + an0) * nl0);
+    real w10 = fmax(R(0.01), (au * c1.x + av * c1.y + an0) * nl1);
+    real w11 = fmax(R(0.01), (au * c2.x + av * c2.y + an0) * nl2);
+    real w01 = fmax(R(0.01), (au * c3.x + av * c3.y + an0) * nl3);
+#endif
+#endif
+#if LB_MC_DOMAIN >= 2
+    /* the receiver's tangent frame (T1, T2, n_x) in the light's frame */
+    real t1u = R(1) - au * au, t1v = -au * av, t1n = -au * an;
+    real tl = R(1) / sqrt(t1u * t1u + t1v * t1v + t1n * t1n);
+    t1u *= tl, t1v *= tl, t1n *= tl;
+    real t2u = av * t1n - an * t1v, t2v = an * t1u - au * t1n, t2n = au * t1v - av * t1u;
+    real3 qv[4];
+    real cu[4] = {ou, ou + w, ou + w, ou}, cv[4] = {y0, y0, y0 + ey, y0 + ey};
+    for (int k = 0; k < 4; ++k)
+        qv[k] = R3(t1u * cu[k] + t1v * cv[k] + t1n * on, t2u * cu[k] + t2v * cv[k] + t2n * on,
+                   fmax(R(0), au * cu[k] + av * cv[k] + an0));
+    lb_mc_proj pj = lb_mc_proj_setup(qv);
+    bool lit = tv > R(0) && pj.area > R(0);
+    real kproj = lit ? pj.area / area : R(0);
+#endif
+    real sum = R(0), sum2 = R(0);
+    for (int i = 0; i < m; ++i) {
+        real u0, u1, e;
+#if LB_MC_DOMAIN == 3
+        bool proj = i < np;
+        mc_point(st, proj ? i : i - np, i, hp, proj ? 0x5bd1e995U : 0x27d4eb2fU, col, row, lg, digits, seed, &u0,
+                 &u1);
+#else
+        mc_point(st, i, i, hp, 0U, col, row, lg, digits, seed, &u0, &u1);
+#endif
+#if LB_MC_DOMAIN == 0
+        real pu = ou + w * u0, pv = ov + l * u1;
+        real r2 = pu * pu + pv * pv + on2;
+        real cw = au * pu + av * pv + an0;
+        cw = cw > R(0) ? cw : R(0);
+        real ri = r2 > R(0) ? R(1) / LB_MC_SQRT(r2) : R(0);
+        e = LB_INTENSITY3(lum, -pu, -pv, -on) * cw * (ri * ri * ri);
+#elif LB_MC_DOMAIN == 1
+        real wu0 = u0, wu1 = u1, bp = R(1);
+#ifdef LB_MC_WARP
+        bp = lb_mc_bilinear(&wu0, &wu1, w00, w10, w01, w11);
+#endif
+        real sx, sy;
+        lb_mc_sphrect_sample(q, wu0, wu1, &sx, &sy);
+        real pu = useSolid ? sx : ou + w * u0;
+        real pv = useSolid ? sy : y0 + ey * u1;
+        real r2 = pu * pu + pv * pv + on2;
+        real cw = au * pu + av * pv + an0;
+        cw = cw > R(0) ? cw : R(0);
+        real ri = r2 > R(0) ? R(1) / LB_MC_SQRT(r2) : R(0);
+        real kw = useSolid ? ksolid / bp : tv * ri * ri * ri;
+        e = LB_INTENSITY3(lum, -pu, -pv, -on) * cw * kw;
+#else
+#if LB_MC_DOMAIN == 3
+        /* i is the same in every work-item: a uniform branch skips the
+         * projected sampler for the area samples */
+        real3 dr = R3(0, 0, 1);
+        if (proj)
+            dr = lb_mc_proj_sample(&pj, u0, u1);
+#else
+        real3 dr = lb_mc_proj_sample(&pj, u0, u1);
+#endif
+        real wu = dr.x * t1u + dr.y * t2u + dr.z * au;
+        real wv = dr.x * t1v + dr.y * t2v + dr.z * av;
+        real wn = dr.x * t1n + dr.y * t2n + dr.z * an;
+#if LB_MC_DOMAIN == 2
+        e = lit && wn != R(0) ? kproj * LB_INTENSITY3(lum, -wu, -wv, -wn) / (wn < R(0) ? -wn : wn) : R(0);
+#else
+        /* the sample's point on the light: the direction's hit (projected
+         * samples) or the area point (area samples) */
+        real sc = wn != R(0) ? on / wn : R(0);
+        real pu = proj ? wu * sc : ou + w * u0;
+        real pv = proj ? wv * sc : y0 + ey * u1;
+        real r2 = pu * pu + pv * pv + on2;
+        real cw = au * pu + av * pv + an0;
+        cw = cw > R(0) ? cw : R(0);
+        real r = LB_MC_SQRT(r2);
+        /* f / (na p_area + np p_proj) in area measure, times r^4 A above and below */
+        real den = (real)(m - np) * r2 * r2 / tv + (real)np * cw * (on < R(0) ? -on : on) * area / pj.area;
+        bool ok = lit && den > R(0) && (!proj || sc > R(0));
+        e = ok ? (real)m * LB_INTENSITY3(lum, -pu, -pv, -on) * cw * r / den : R(0);
+#endif
+#endif
+        sum += e;
+        sum2 += e * e;
+#ifndef LB_MC_NOBARRIER
+        barrier(CLK_LOCAL_MEM_FENCE);
+#endif
+    }
+    real mean = sum / (real)m;
+    *ev = m > 1 ? fmax(R(0), sum2 / (real)m - mean * mean) / (real)(m - 1) : R(0);
+    return mean;
+}
+#endif
+
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
-                     __global const real* st, int n, float extra)
+                     __global const real* st, int n, float extra, int seed, int np, int lg, real min_solid,
+                     __global real* var)
 {
     int col = get_global_id(0);
     int row = row0 + (int)get_global_id(1);
@@ -89,6 +279,17 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     }
     real au, av, an;
     lb_receiver_normal_local(P, &au, &av, &an);
+#ifdef LB_MC_EXT
+    real ev;
+    real e = mc_ext(P, lum, st, col, row, res, m, ou, ov, on, au, av, an, (lb_u32)seed, np, lg, min_solid, &ev);
+    if (inside) {
+        out[row * res + col] = e;
+#ifdef LB_MC_VAR
+        var[row * res + col] = ev;
+#endif
+    }
+    return;
+#endif
     real an0 = an * on;
     real on2 = on * on;
     real sum = R(0);
@@ -114,3 +315,5 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     if (inside)
         out[row * res + col] = sum / (real)m;
 }
+
+#include "common/denoise.h"

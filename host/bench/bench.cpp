@@ -314,6 +314,50 @@ nlohmann::json specularTimes(Bench& b)
     return rows;
 }
 
+// 8. Monte Carlo samplers' cost per sample against area sampling (today's
+// mc): (t(64) - t(8)) / 56 per sampler, so that the per-pixel set-up (the
+// spherical rectangle's angles, the projected polygon's arcs) stays out of
+// it; the goals compare each domain with area sampling on the same shared
+// points. Also each sampler's t(8) against mc:n=8 (set-up included).
+// --quick: the two samplers with goals.
+nlohmann::json mcSamplers(Bench& b)
+{
+    struct Row {
+        const char* spec;
+        double goal;  // 0: no goal
+    };
+    const int lo = 8, hi = 64;
+    auto perSample = [&](const std::string& spec, double* t8) {
+        double a = b.spec(fmt::format("mc:n={},{}", lo, spec)).ms;
+        double c = b.spec(fmt::format("mc:n={},{}", hi, spec)).ms;
+        *t8 = a;
+        return (c - a) / (hi - lo);
+    };
+    double area8 = 0;
+    const double area = perSample("domain=area", &area8);
+    nlohmann::json rows = nlohmann::json::array();
+    const std::vector<Row> quick = {Row{"domain=solid", 2}, Row{"domain=projected", 3}};
+    const std::vector<Row> all = {Row{"domain=area,sequence=random", 0},
+                                  Row{"domain=area,sequence=sobol", 0},
+                                  Row{"domain=area,sequence=zsobol", 0},
+                                  Row{"domain=solid", 2},
+                                  Row{"domain=solid,cosine_warp=1", 0},
+                                  Row{"domain=solid,sequence=sobol", 0},
+                                  Row{"paper=1", 0},
+                                  Row{"domain=projected", 3},
+                                  Row{"domain=projected,sequence=sobol", 0},
+                                  Row{"domain=mis,sequence=sobol", 0}};
+    for (const Row& r : b.opt.quick ? quick : all) {
+        double t8 = 0;
+        double c = perSample(r.spec, &t8);
+        nlohmann::json row = {
+            {"spec", r.spec}, {"ms_per_sample", c}, {"ratio", c / area}, {"t8_ms", t8}, {"t8_ratio", t8 / area8}};
+        if (r.goal > 0) row["goal"] = r.goal, row["ok"] = c / area <= r.goal;
+        rows.push_back(row);
+    }
+    return {{"area_ms_per_sample", area}, {"area_t8_ms", area8}, {"n", {lo, hi}}, {"samplers", rows}};
+}
+
 }  // namespace
 
 nlohmann::json run(ocl::Runtime& rt, const photometry::Table& table, const Scene& scene0, const Options& opt)
@@ -330,6 +374,7 @@ nlohmann::json run(ocl::Runtime& rt, const photometry::Table& table, const Scene
     doc["goals"] = goals(b);
     doc["indirect"] = indirectTimes(b);
     doc["specular"] = specularTimes(b);
+    doc["mc_samplers"] = mcSamplers(b);
     return doc;
 }
 
@@ -376,6 +421,18 @@ std::string format(const nlohmann::json& d)
             o << fmt::format("Cubature + LTC / {} = {:.2f} ({:.3f} ms / {:.3f} ms; paper Table 1: {:.2f})\n",
                              sp["denominator"].get<std::string>(), sp["ratio"].get<double>(),
                              sp["ltc_ms"].get<double>(), sp["cubature_ms"].get<double>(), sp["paper"].get<double>());
+    if (d.contains("mc_samplers")) {
+        const auto& m = d["mc_samplers"];
+        o << fmt::format("MC samplers, cost per sample against area sampling ({:.3g} ms/sample; t(8) {:.3f} ms):\n",
+                         m["area_ms_per_sample"].get<double>(), m["area_t8_ms"].get<double>());
+        for (const auto& r : m["samplers"]) {
+            std::string goal = r.contains("goal")
+                ? fmt::format(" (target <= {:g}: {})", r["goal"].get<double>(), r["ok"].get<bool>() ? "met" : "MISSED")
+                : "";
+            o << fmt::format("  {:<36} {:6.2f}x per sample, t(8) {:6.2f}x{}\n", r["spec"].get<std::string>(),
+                             r["ratio"].get<double>(), r["t8_ratio"].get<double>(), goal);
+        }
+    }
     return o.str();
 }
 

@@ -1,10 +1,14 @@
 // mc: one fixed point set for every pixel (kernels/mc.cl, host/methods/samples.h).
+#include "methods/mc_denoise.h"
+#include "methods/mc_options.h"
 #include "methods/registry.h"
 #include "methods/samples.h"
 #include "methods/specialize.h"
 #include "methods/straight.h"
 
 #include <fmt/format.h>
+
+#include <cstdint>
 
 namespace lb::methods {
 
@@ -17,6 +21,23 @@ namespace {
 // (0.5 + k / g, 0.5 + k / g^2) mod 1, g the plastic number), rounded to 4
 // digits: nested, so the defaults of every N are a low-discrepancy set.
 constexpr int kMcPointsMax = 16;
+
+// mc.cl's arguments after P, lum, out, row0.
+const std::vector<std::string> kMcArgs = {"st", "n", "extra", "seed", "np", "lg", "min_solid", "var"};
+
+// The sampling arguments of the extended path (kernels/mc.cl: mc_ext); `var`
+// gets the per-pixel variance where the a-trous filter needs it.
+void bindSampling(LaunchContext& c, const McOptions& o, int n, bool extra, std::uint64_t seed)
+{
+    c.arg("seed", cl_int(static_cast<std::int32_t>(static_cast<std::uint32_t>(seed))));
+    c.arg("np", cl_int(o.projectedOf(n)));
+    c.arg("lg", cl_int(mcLog2(n + (extra ? 1 : 0))));
+    c.realArg("min_solid", o.minSolid);
+    size_t npx = o.denoise == "atrous" ? static_cast<size_t>(c.res()) * c.res() : 1;
+    cl::Buffer var = c.outputReals(npx);
+    c.named["var"] = var;
+    c.arg("var", var);
+}
 constexpr double kR2[kMcPointsMax][2] = {{0.5, 0.5},       {0.2549, 0.0698}, {0.0098, 0.6397}, {0.7646, 0.2095},
                                          {0.5195, 0.7794}, {0.2744, 0.3492}, {0.0293, 0.919},  {0.7841, 0.4889},
                                          {0.539, 0.0587},  {0.2939, 0.6286}, {0.0488, 0.1984}, {0.8037, 0.7682},
@@ -54,12 +75,15 @@ void registerMcPoints(Registry& r, const Family& mc)
         int k = pointIndex(name);
         return k > s.integer("n");
     };
-    f.defines = mc.defines;
-    f.sceneDefines = mc.sceneDefines;
+    f.defines = [](const MethodSpec&) { return std::string(); };
+    f.sceneDefines = [](const MethodSpec& s, const Scene& scene, const photometry::Table& t) {
+        return analyse(scene, t, s.str("lookup") == "lut", s.str("specialize") == "auto").defines();
+    };
     f.lumBuffer = mc.lumBuffer;
-    f.args = {"st", "n", "extra"};
+    f.args = kMcArgs;
     f.setArgs = [](LaunchContext& c) {
         int n = static_cast<int>(c.spec.integer("n"));
+        bindSampling(c, McOptions{}, n, false, 0);
         std::vector<double> st;
         for (int k = 1; k <= n; ++k) {
             st.push_back(c.spec.num(fmt::format("s{}", k)));
@@ -78,7 +102,8 @@ void registerMc(Registry& r)
 {
     Family f;
     f.name = "mc";
-    f.summary = "MCI-N: the same N points on the light for every pixel, area form";
+    f.summary = "Monte Carlo with N samples: MCI-N (the same N points on the light for every pixel, area form) by "
+                "default; solid-angle, projected-solid-angle or MIS sampling with per-pixel sequences";
     f.file = "mc.cl";
     f.params = {
         Param::integer("n", 24, 1, 1 << 20, Scale::Log, "number of points on the light", true),
@@ -86,30 +111,66 @@ void registerMc(Registry& r)
                     "fractional sample count N + extra: that share of the work-group tiles, spread evenly, takes "
                     "the N + 1 point set (the equal-time MCI's fine step)",
                     false),
-        Param::choice("pattern", "poisson", {"poisson", "halton", "stratified", "random"}, "point set"),
-        Param::integer("seed", 0, 0, 4294967295L, Scale::Linear, "seed of the point set (halton: 0 = unshifted)"),
+        Param::choice("pattern", "poisson", {"poisson", "halton", "stratified", "random"},
+                      "point set of sequence=shared"),
+        Param::integer("seed", 0, 0, 4294967295L, Scale::Linear,
+                       "seed of every randomised sequence and of the shared set (halton: 0 = unshifted)"),
+        Param::choice("domain", "area", {"area", "solid", "projected", "mis"},
+                      "sampling: uniform on the light's area; uniform in solid angle (spherical rectangle, Urena et "
+                      "al. 2013); by the receiver's cosine (projected solid angle); area + projected by the balance "
+                      "heuristic. All but area sample the part above the horizon"),
+        Param::choice("sequence", "shared", {"shared", "random", "sobol", "zsobol"},
+                      "points: one set for every pixel (pattern); hashed per pixel; Owen-scrambled Sobol per pixel "
+                      "(Burley 2020); Morton-ordered digit-permuted Sobol (Ahmed and Wonka 2020, pbrt-v4 ZSobol)"),
+        Param::integer("shift", 0, 0, 1, Scale::Linear, "sequence=shared: a random shift of the set per pixel"),
+        Param::integer("cosine_warp", 0, 0, 1, Scale::Linear,
+                       "domain=solid: warp by the receiver cosine at the corners (Hart et al. 2020)"),
+        Param::real("min_solid", 1e-3, 0, 1, Scale::Log,
+                    "domain=solid: area sampling (exact pdf) below this solid angle (sr)", false),
+        Param::real("mis_split", 0.5, 0, 1, Scale::Linear, "domain=mis: share of the N samples that are projected",
+                    false),
+        Param::choice("denoise", "none", {"none", "gauss16", "atrous"},
+                      "image filter after the render, timed with it: the paper's separable 2 x 16 Gaussian, or the "
+                      "edge-avoiding a-trous wavelet filter on the per-pixel variance (Dammertz et al. 2010); "
+                      "footprint fixed in metres (methods/mc_denoise.h)"),
+        Param::real("atrous_sigma", 4, 0.1, 100, Scale::Log,
+                    "denoise=atrous: edge stop, in standard deviations of a pixel's estimate", false),
+        Param::integer("paper", 0, 0, 1, Scale::Linear,
+                       "the paper's MC as its code runs it: solid angle, Halton points shared by the pixels with a "
+                       "per-pixel random shift, area sampling below 1e-3 sr"),
         lookupParam("lut", "intensity lookup: trig-free table (photometry/lut.h) or the exact bilinear one"),
         specializeParam("auto: smallest kernel for the scene (methods/specialize.h); none: the general one"),
     };
-    f.defines = [](const MethodSpec&) { return std::string(); };
+    f.validate = validateMc;
+    f.defines = [](const MethodSpec& s) { return mcDefines(mcOptions(s)); };
     f.sceneDefines = [](const MethodSpec& s, const Scene& scene, const photometry::Table& t) {
-        return analyse(scene, t, s.str("lookup") == "lut", s.str("specialize") == "auto").defines();
+        auto o = mcOptions(s);
+        int n = static_cast<int>(s.integer("n"));
+        return analyse(scene, t, s.str("lookup") == "lut", s.str("specialize") == "auto").defines() +
+            mcSceneDefines(o, scene, n);
     };
     f.lumBuffer = lookupBuffer;
-    f.args = {"st", "n", "extra"};
+    f.args = kMcArgs;
     f.setArgs = [](LaunchContext& c) {
+        auto o = mcOptions(c.spec);
         int n = static_cast<int>(c.spec.integer("n"));
         double extra = c.spec.num("extra");
         auto seed = static_cast<std::uint64_t>(c.spec.integer("seed"));
-        auto st = samplePoints(c.spec.str("pattern"), n, seed);
-        if (extra > 0) {  // the N + 1 point set after the N points (kernels/mc.cl)
-            auto more = samplePoints(c.spec.str("pattern"), n + 1, seed);
-            st.insert(st.end(), more.begin(), more.end());
+        bindSampling(c, o, n, extra > 0, seed);
+        std::vector<double> st;
+        if (o.sequence == "shared") {
+            st = samplePoints(o.pattern, n, seed);
+            if (extra > 0) {  // the N + 1 point set after the N points (kernels/mc.cl)
+                auto more = samplePoints(o.pattern, n + 1, seed);
+                st.insert(st.end(), more.begin(), more.end());
+            }
         }
         c.arg("st", c.realBuffer(st));
         c.arg("n", cl_int(n));
         c.arg("extra", cl_float(extra));
+        bindDenoise(c, o);
     };
+    f.postPasses = [](LaunchContext& c) { return denoisePasses(c, mcOptions(c.spec), c.spec.num("atrous_sigma")); };
     f.benchSpecs = {"mc:n=8", "mc:n=32", "mc:n=32,lookup=exact"};
     r.add(f);
     registerMcPoints(r, f);

@@ -212,6 +212,11 @@ struct Family {
     // Optional multi-pass methods (see the top of this file): the kernels run
     // before `kernelName` on every launch of the image's first rows.
     std::function<std::vector<StageEvent>(LaunchContext&)> prePasses;
+    // Optional post-passes (an image filter): kernels run after `kernelName`
+    // on every launch that reaches the image's last row, timed with it like
+    // the pre-passes; they find the image as named["out"] and leave the
+    // result there.
+    std::function<std::vector<StageEvent>(LaunchContext&)> postPasses;
     // Optional, stateful methods: launches of a static scene from a reset
     // before render() reads the image (the steady state of the method).
     std::function<int(const MethodSpec&)> settleFrames;

@@ -13,6 +13,7 @@
 #include "ltc.h"
 #include "adaptive.h"
 #include "specref.h"
+#include "mc_sample.h"
 /* The point-sample baselines', the LTC's and the specular MC's straight-line
  * forms, one pixel per call (lanes_all.inc lists every form in this order). */
 #include "lanes1.h"

@@ -1,0 +1,116 @@
+#include "methods/mc_options.h"
+
+#include "methods/specialize.h"
+#include "util/error.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace lb::methods {
+
+namespace {
+
+int domainIndex(const std::string& d)
+{
+    if (d == "solid") return 1;
+    if (d == "projected") return 2;
+    if (d == "mis") return 3;
+    return 0;
+}
+
+int sequenceIndex(const std::string& s)
+{
+    if (s == "random") return 1;
+    if (s == "sobol") return 2;
+    if (s == "zsobol") return 3;
+    return 0;
+}
+
+}  // namespace
+
+bool McOptions::extended() const { return domain != "area" || sequence != "shared" || shift || denoise != "none"; }
+
+int McOptions::projectedOf(int n) const
+{
+    if (domain != "mis") return domain == "projected" ? n : 0;
+    return std::clamp(static_cast<int>(std::lround(misSplit * n)), 0, n);
+}
+
+McOptions mcOptions(const MethodSpec& s)
+{
+    McOptions o;
+    o.domain = s.str("domain");
+    o.sequence = s.str("sequence");
+    o.pattern = s.str("pattern");
+    o.shift = s.integer("shift") != 0;
+    o.cosineWarp = s.integer("cosine_warp") != 0;
+    o.minSolid = s.num("min_solid");
+    o.misSplit = s.num("mis_split");
+    o.denoise = s.str("denoise");
+    if (s.integer("paper") != 0) {
+        o.domain = "solid";
+        o.sequence = "shared";
+        o.pattern = "halton";
+        o.shift = true;
+        o.minSolid = 1e-3;
+    }
+    return o;
+}
+
+void validateMc(const MethodSpec& s)
+{
+    if (s.integer("paper") == 0) return;
+    for (const char* k : {"domain", "sequence", "pattern", "shift", "min_solid"})
+        if (s.given.count(k))
+            throw InputError(fmt::format("method mc: paper=1 sets {} itself (solid angle, shared Halton points with a "
+                                         "per-pixel shift, area sampling below 1e-3 sr); drop {}= or paper=1",
+                                         k, k));
+}
+
+std::string mcDefines(const McOptions& o)
+{
+    if (!o.extended()) return "";
+    std::string d =
+        fmt::format(" -DLB_MC_EXT -DLB_MC_DOMAIN={} -DLB_MC_SEQ={}", domainIndex(o.domain), sequenceIndex(o.sequence));
+    if (o.shift && o.sequence == "shared") d += " -DLB_MC_SHIFT";
+    if (o.cosineWarp && o.domain == "solid") d += " -DLB_MC_WARP";
+    if (o.denoise == "atrous") d += " -DLB_MC_VAR";
+    return d;
+}
+
+int mcLog2(int samples)
+{
+    int lg = 0;
+    while ((1L << lg) < samples) ++lg;
+    return lg;
+}
+
+std::string mcSceneDefines(const McOptions& o, const Scene& scene, int n)
+{
+    if (!o.extended()) return "";
+    std::string d;
+    if (o.domain != "area") {
+        // The sampled domains take the part of the light above the horizon as
+        // a rectangle: exact where the horizon cuts along u (every normalized
+        // scene). Solid angle also works on the whole light (max(0, cos));
+        // projected and mis need the clipped polygon.
+        if (horizonAlongU(scene))
+            d += " -DLB_MC_CLIPV";
+        else if (o.domain != "solid")
+            throw InputError(fmt::format("method mc: domain={} needs the receiver normal perpendicular to the "
+                                         "light's u axis (as in every normalized scene)",
+                                         o.domain));
+    }
+    if (o.sequence == "zsobol") {
+        const int bits = 2 * mcLog2(scene.res) + mcLog2(n + 1);
+        if (bits > 30)
+            throw InputError(fmt::format("method mc: sequence=zsobol at {} pixels per side and n={} needs a {}-bit "
+                                         "index, more than 30",
+                                         scene.res, n, bits));
+    }
+    return d;
+}
+
+}  // namespace lb::methods

@@ -1,0 +1,352 @@
+/* mc_sample.h -- sampling the light for Monte Carlo (kernels/mc.cl):
+ * per-pixel sequences in [0,1)^2 and the maps from them to directions or
+ * points on the light. Compiles as OpenCL C and C++ (vec.h); the host tests
+ * (tests/methods/test_mc_sampling.cpp) run this code.
+ *
+ * Geometry is in the light's frame (u, v, n_L) with the receiver point at the
+ * origin: the light's corner (-u, -v) lies at (ou, ov, on) (scene_lanes.inc),
+ * a point (s, t) of the light at (ou + W s, ov + L t, on); the receiver
+ * normal is (au, av, an) there (lb_receiver_normal_local). */
+
+typedef unsigned int lb_u32;
+
+/* The per-sample code is written with plain arithmetic and selects (no
+ * fabs, fmin, fmax, clamp, copysign, mix built-ins), and in float OpenCL
+ * with the hardware sqrt / cos / sin: PoCL's CPU library implements the
+ * built-ins with 4-wide SSE values, which stops its work-item loop
+ * vectoriser (as common/lut.h says; measured here: solid-angle sampling 80x
+ * area sampling with them); a few ulp are far below the estimators' noise. */
+#if defined(__OPENCL_C_VERSION__) && !LB_REAL_IS_DOUBLE
+#define LB_MC_COS(x) native_cos(x)
+#define LB_MC_SIN(x) native_sin(x)
+#define LB_MC_SQRT(x) native_sqrt(x)
+#else
+#define LB_MC_COS(x) cos(x)
+#define LB_MC_SIN(x) sin(x)
+#define LB_MC_SQRT(x) sqrt(x)
+#endif
+#define LB_MC_CLAMP(x, lo, hi) ((x) < (lo) ? (lo) : ((x) > (hi) ? (hi) : (x)))
+
+/* ---- integer hashing and sequences ---------------------------------------- */
+
+/* 32-bit integer hash (Wellons' "lowbias32": full avalanche, bijective). */
+LB_FN lb_u32 lb_mc_hash(lb_u32 x)
+{
+    x ^= x >> 16;
+    x *= 0x7feb352dU;
+    x ^= x >> 15;
+    x *= 0x846ca68bU;
+    x ^= x >> 16;
+    return x;
+}
+
+/* A 32-bit fraction as a real in [0, 1): 24 bits in float (so that it never
+ * rounds up to 1), 32 in double. */
+LB_FN real lb_mc_unit(lb_u32 x)
+{
+#if LB_REAL_IS_DOUBLE
+    return (real)x * R(2.3283064365386962890625e-10);
+#else
+    return (real)(x >> 8) * R(5.9604644775390625e-8);
+#endif
+}
+
+LB_FN lb_u32 lb_mc_reverse(lb_u32 x)
+{
+    x = ((x >> 1) & 0x55555555U) | ((x & 0x55555555U) << 1);
+    x = ((x >> 2) & 0x33333333U) | ((x & 0x33333333U) << 2);
+    x = ((x >> 4) & 0x0f0f0f0fU) | ((x & 0x0f0f0f0fU) << 4);
+    x = ((x >> 8) & 0x00ff00ffU) | ((x & 0x00ff00ffU) << 8);
+    return (x >> 16) | (x << 16);
+}
+
+/* Nested uniform (Owen) scramble of a 32-bit fraction x: Laine and Karras'
+ * permutation on the reversed bits, with Burley's (2020) constants: bit k of
+ * the result flips by a hash of the bits above it and of the seed. */
+LB_FN lb_u32 lb_mc_owen(lb_u32 x, lb_u32 seed)
+{
+    x = lb_mc_reverse(x);
+    x += seed;
+    x ^= x * 0x6c50b47cU;
+    x ^= x * 0xb82f1e52U;
+    x ^= x * 0xc7afe638U;
+    x ^= x * 0x8d22f6e6U;
+    return lb_mc_reverse(x);
+}
+
+/* Sobol's first two dimensions of index i as 32-bit fractions (natural
+ * order): the van der Corput sequence, and the one with direction numbers
+ * v_1 = 1/2, v_k = v_{k-1} ^ (v_{k-1} >> 1). Together a (0, 2)-sequence in
+ * base 2: every 2^m consecutive points aligned at a multiple of 2^m are a
+ * (0, m, 2)-net. `bits` bounds the index (i < 2^bits). */
+LB_FN lb_u32 lb_mc_sobol0(lb_u32 i)
+{
+    return lb_mc_reverse(i);
+}
+
+LB_FN lb_u32 lb_mc_sobol1(lb_u32 i, int bits)
+{
+    lb_u32 v = 0x80000000U, x = 0U;
+    for (int b = 0; b < bits; ++b) {
+        x ^= ((i >> b) & 1U) ? v : 0U;
+        v ^= v >> 1;
+    }
+    return x;
+}
+
+/* The b-th of the 24 permutations of a base-4 digit d, b = h mod 24: the
+ * affine maps d -> A d + c over F_2^2 (6 invertible matrices A, 4 offsets c),
+ * which are all of S_4. */
+LB_FN lb_u32 lb_mc_perm4(lb_u32 d, lb_u32 h)
+{
+    lb_u32 a = d & 1U, b = (d >> 1) & 1U;
+    lb_u32 m = h % 6U, c = (h / 6U) & 3U;
+    lb_u32 o0 = (m == 0U || m == 3U) ? a : ((m == 1U || m == 4U) ? b : (a ^ b));
+    lb_u32 o1 = (m == 0U || m == 2U) ? b : ((m == 1U || m == 5U) ? a : (a ^ b));
+    return ((o1 << 1) | o0) ^ c;
+}
+
+/* Bits of x interleaved with zeros (x < 2^16). */
+LB_FN lb_u32 lb_mc_spread(lb_u32 x)
+{
+    x &= 0x0000ffffU;
+    x = (x | (x << 8)) & 0x00ff00ffU;
+    x = (x | (x << 4)) & 0x0f0f0f0fU;
+    x = (x | (x << 2)) & 0x33333333U;
+    x = (x | (x << 1)) & 0x55555555U;
+    return x;
+}
+
+/* ZSobol (Ahmed and Wonka 2020, as pbrt-v4's ZSobolSampler): the Sobol index
+ * of sample i of pixel (col, row): the Morton index (morton(col, row) << lg)
+ * | i, lg = log2 of the samples per pixel, with every base-4 digit permuted by
+ * a hash of the digits above it (and the seed), from the top down; an odd lg
+ * leaves one base-2 digit at the bottom, flipped by a hash bit. Each pixel's
+ * 2^lg samples stay one aligned block of Sobol indices, so a (0, lg, 2)-net;
+ * neighbouring pixels get blocks related like a blue-noise tiling. `digits`
+ * is resbits + (lg + 1) / 2 (resbits = bits of the image side); the index has
+ * 2 resbits + lg <= 30 bits (the host checks). */
+LB_FN lb_u32 lb_mc_zsobol_index(int col, int row, lb_u32 i, int lg, int digits, lb_u32 seed)
+{
+    lb_u32 morton = (((lb_mc_spread((lb_u32)row) << 1) | lb_mc_spread((lb_u32)col)) << lg) | i;
+    int odd = lg & 1;
+    lb_u32 idx = 0U;
+    for (int k = digits - 1; k >= odd; --k) {
+        int shift = 2 * k - odd;
+        lb_u32 digit = (morton >> shift) & 3U;
+        lb_u32 higher = morton >> (shift + 2);
+        idx |= lb_mc_perm4(digit, lb_mc_hash(higher ^ seed) >> 8) << shift;
+    }
+    if (odd)
+        idx |= (morton & 1U) ^ (lb_mc_hash((morton >> 1) ^ seed ^ 0x55555555U) & 1U);
+    return idx;
+}
+
+/* ---- solid angle: spherical rectangles (Urena, Fajardo and King 2013) ---- */
+
+/* The rectangle [x0, x0 + ex] x [y0, y0 + ey] at height z0 (light frame, the
+ * receiver at the origin) seen as a spherical rectangle: the set-up of its
+ * solid-angle sampler. Sign of z0 does not matter (the sampler works at
+ * -|z0|, the caller keeps its own sign). */
+typedef struct {
+    real x0, x1, y0, y1, z0;
+    real b0, b1, k, s; /* s: the solid angle as the sampler sees it (g0 + g1 - k) */
+} lb_mc_sphrect;
+
+LB_FN real lb_mc_acos(real c)
+{
+    return acos(clamp(c, R(-1), R(1)));
+}
+
+LB_FN lb_mc_sphrect lb_mc_sphrect_setup(real x0, real y0, real z0, real ex, real ey)
+{
+    lb_mc_sphrect q;
+    real z = -fabs(z0);
+    q.x0 = x0;
+    q.x1 = x0 + ex;
+    q.y0 = y0;
+    q.y1 = y0 + ey;
+    q.z0 = z;
+    /* The edges' plane normals for this axis-aligned rectangle (the cross
+     * products of its corner directions, up to positive factors):
+     * n0 ~ (0, z, -y0), n1 ~ (-z, 0, x1), n2 ~ (0, -z, y1), n3 ~ (z, 0, -x0). */
+    real z2 = z * z;
+    real l0 = sqrt(z2 + q.y0 * q.y0), l1 = sqrt(z2 + q.x1 * q.x1);
+    real l2 = sqrt(z2 + q.y1 * q.y1), l3 = sqrt(z2 + q.x0 * q.x0);
+    /* interior angles g_i = angle(-n_i, n_{i+1}) */
+    real g0 = lb_mc_acos(q.y0 * q.x1 / (l0 * l1));
+    real g1 = lb_mc_acos(-q.x1 * q.y1 / (l1 * l2));
+    real g2 = lb_mc_acos(q.y1 * q.x0 / (l2 * l3));
+    real g3 = lb_mc_acos(-q.x0 * q.y0 / (l3 * l0));
+    q.b0 = -q.y0 / l0;
+    q.b1 = q.y1 / l2;
+    q.k = LB_TWO_PI - g2 - g3;
+    q.s = g0 + g1 - q.k;
+    return q;
+}
+
+/* The point (x, y) of the rectangle (at height z0) for (u0, u1) in [0,1)^2;
+ * the directions to the points are uniform in solid angle. */
+LB_FN void lb_mc_sphrect_sample(lb_mc_sphrect q, real u0, real u1, real* x, real* y)
+{
+    real au = u0 * q.s + q.k;
+    real fu = (LB_MC_COS(au) * q.b0 - q.b1) / LB_MC_SIN(au);
+    real cu = (fu >= R(0) ? R(1) : R(-1)) / LB_MC_SQRT(fu * fu + q.b0 * q.b0);
+    cu = LB_MC_CLAMP(cu, R(-0.99999994), R(0.99999994));
+    real c2 = R(1) - cu * cu;
+    real xu = -(cu * q.z0) / LB_MC_SQRT(c2 > R(0) ? c2 : R(0));
+    xu = LB_MC_CLAMP(xu, q.x0, q.x1);
+    real d2 = xu * xu + q.z0 * q.z0;
+    real h0 = q.y0 / LB_MC_SQRT(d2 + q.y0 * q.y0);
+    real h1 = q.y1 / LB_MC_SQRT(d2 + q.y1 * q.y1);
+    real hv = h0 + u1 * (h1 - h0), hv2 = hv * hv;
+    real yv = hv2 < R(1) - R(1e-6) ? hv * LB_MC_SQRT(d2) / LB_MC_SQRT(R(1) - hv2) : q.y1;
+    *x = xu;
+    *y = LB_MC_CLAMP(yv, q.y0, q.y1);
+}
+
+/* ---- the bilinear warp (Hart, Pharr, Mueller, Lopes, McGuire, Shirley 2020) */
+
+/* (u0, u1) warped by the density bilinear in the corner weights w00 (at
+ * (0, 0)), w10, w01, w11 (all > 0); returns that density at the result. */
+LB_FN real lb_mc_linear(real u, real a, real b)
+{
+    real x = u * (a + b) / (a + LB_MC_SQRT(a * a + u * (b * b - a * a)));
+    return x < R(0.99999994) ? x : R(0.99999994);
+}
+
+LB_FN real lb_mc_bilinear(real* u0, real* u1, real w00, real w10, real w01, real w11)
+{
+    real y = lb_mc_linear(*u1, w00 + w10, w01 + w11);
+    real x = lb_mc_linear(*u0, w00 + y * (w01 - w00), w10 + y * (w11 - w10));
+    *u0 = x;
+    *u1 = y;
+    return R(4) * ((R(1) - x) * (R(1) - y) * w00 + x * (R(1) - y) * w10 + (R(1) - x) * y * w01 + x * y * w11) /
+        (w00 + w10 + w01 + w11);
+}
+
+/* ---- projected solid angle (the receiver's cosine as the density) --------
+ *
+ * A convex polygon above the receiver's horizon, seen from the origin,
+ * projects orthographically onto the unit disk of the receiver's tangent
+ * plane; cos(theta) d(omega) is area there (Nusselt), so sampling that region
+ * uniformly samples the projected solid angle. Each edge projects onto an arc
+ * of an ellipse centred at the origin; the area swept from the origin along
+ * the arc is |m_z| theta / 2 (theta the arc's angle, m the unit normal of its
+ * great circle: the projection of a circular sector of area theta / 2). In
+ * polar coordinates (phi, rho) of the disk the region is
+ * {rho_in(phi) <= rho <= rho_out(phi)}, rho_in = 0 where the zenith lies
+ * inside; its area up to an azimuth phi, A(phi) = sum over edges of
+ * (+-) |m_z| theta_k(phi) / 2 (outer arcs +, inner -), is inverted for phi by
+ * a bracketed Newton iteration (dA / dphi = (rho_out^2 - rho_in^2) / 2), and
+ * rho^2 is then uniform between rho_in^2 and rho_out^2: a bijection of
+ * [0,1)^2 onto the region that keeps the sequence's stratification. (Peters
+ * 2021 samples the same density; this inversion is the suite's own.) */
+#define LB_MC_PV 4 /* edges of the sampled polygon (the rectangle the horizon leaves) */
+
+typedef struct {
+    real ax[LB_MC_PV], ay[LB_MC_PV], az[LB_MC_PV]; /* the edge's endpoint at its lower azimuth */
+    real bx[LB_MC_PV], by[LB_MC_PV], bz[LB_MC_PV]; /* unit tangent of the great circle there */
+    real mx[LB_MC_PV], my[LB_MC_PV], mz[LB_MC_PV]; /* unit normal a x b */
+    real lo[LB_MC_PV], hi[LB_MC_PV];              /* the edge's unwrapped azimuth range */
+    real th[LB_MC_PV], w[LB_MC_PV];               /* arc angle; +-|m_z| / 2 (0 for no area) */
+    real pmin, pmax;                              /* the region's azimuth range */
+    real area;                                    /* projected solid angle (sr) */
+} lb_mc_proj;
+
+/* Set-up from the polygon's vertices q[0..4) in the receiver's frame (z along
+ * the receiver normal), in order (either orientation), all with z >= 0. */
+LB_FN lb_mc_proj lb_mc_proj_setup(const real3* q)
+{
+    lb_mc_proj p;
+    real3 d[LB_MC_PV];
+    for (int k = 0; k < LB_MC_PV; ++k)
+        d[k] = normalize(q[k]);
+    real psi = atan2(d[0].y, d[0].x);
+    real signedArea = R(0);
+    real dlt[LB_MC_PV];
+    p.pmin = psi;
+    p.pmax = psi;
+    for (int k = 0; k < LB_MC_PV; ++k) {
+        real3 s = d[k], e = d[(k + 1) % LB_MC_PV];
+        dlt[k] = atan2(s.x * e.y - s.y * e.x, s.x * e.x + s.y * e.y);
+        real next = psi + dlt[k];
+        bool up = dlt[k] >= R(0);
+        p.lo[k] = up ? psi : next;
+        p.hi[k] = up ? next : psi;
+        real3 a = up ? s : e, f = up ? e : s;
+        real3 c = cross(a, f);
+        real lc = length(c);
+        p.th[k] = atan2(lc, dot(a, f));
+        real3 m = lc > R(0) ? c / lc : R3(0, 0, 0);
+        real3 b = cross(m, a);
+        p.ax[k] = a.x, p.ay[k] = a.y, p.az[k] = a.z;
+        p.bx[k] = b.x, p.by[k] = b.y, p.bz[k] = b.z;
+        p.mx[k] = m.x, p.my[k] = m.y, p.mz[k] = m.z;
+        /* swept from a to f: counter-clockwise (dlt >= 0) when m_z >= 0 */
+        p.w[k] = (up ? R(0.5) : R(-0.5)) * fabs(m.z);
+        signedArea += p.w[k] * p.th[k];
+        psi = next;
+        p.pmin = fmin(p.pmin, psi);
+        p.pmax = fmax(p.pmax, psi);
+    }
+    /* orientation: outer arcs count positive */
+    if (signedArea < R(0))
+        for (int k = 0; k < LB_MC_PV; ++k)
+            p.w[k] = -p.w[k];
+    p.area = fabs(signedArea);
+    return p;
+}
+
+/* Area A(phi) of the region's part at azimuths pmin .. phi; *dA its
+ * derivative, *rin2 / *rout2 the squared radii of the inner / outer boundary
+ * at phi (rin2 = 0 where no inner arc covers phi). */
+LB_FN real lb_mc_proj_cdf(const lb_mc_proj* p, real phi, real* dA, real* rin2, real* rout2)
+{
+    real a = R(0), da = R(0), ri = R(0), ro = R(0);
+    for (int k = 0; k < LB_MC_PV; ++k) {
+        real f = clamp(phi, p->lo[k], p->hi[k]);
+        real cf = LB_MC_COS(f), sf = LB_MC_SIN(f);
+        /* the great circle's point at azimuth f: m x (-sin f, cos f, 0), signed
+         * to point along (cos f, sin f) */
+        real cx = -p->mz[k] * cf, cy = -p->mz[k] * sf, cz = p->mx[k] * cf + p->my[k] * sf;
+        real sg = cx * cf + cy * sf >= R(0) ? R(1) : R(-1);
+        cx *= sg, cy *= sg, cz *= sg;
+        real t = atan2(cx * p->bx[k] + cy * p->by[k] + cz * p->bz[k], cx * p->ax[k] + cy * p->ay[k] + cz * p->az[k]);
+        t = clamp(t, R(0), p->th[k]);
+        a += p->w[k] * t;
+        real c2 = cx * cx + cy * cy + cz * cz;
+        real r2 = c2 > R(0) ? (cx * cx + cy * cy) / c2 : R(0);
+        bool cover = phi >= p->lo[k] && phi <= p->hi[k] && p->w[k] != R(0);
+        da += cover ? (p->w[k] > R(0) ? R(0.5) : R(-0.5)) * r2 : R(0);
+        ro = cover && p->w[k] > R(0) ? fmax(ro, r2) : ro;
+        ri = cover && p->w[k] < R(0) ? fmax(ri, r2) : ri;
+    }
+    *dA = da;
+    *rin2 = ri;
+    *rout2 = ro;
+    return a;
+}
+
+#define LB_MC_NEWTON 12 /* iterations of the azimuth inversion (float converges in ~5) */
+
+/* The direction (receiver frame, unit) for (u0, u1) in [0,1)^2, distributed
+ * with density cos(theta) / p->area in solid angle over the polygon. */
+LB_FN real3 lb_mc_proj_sample(const lb_mc_proj* p, real u0, real u1)
+{
+    real target = u0 * p->area;
+    real lo = p->pmin, hi = p->pmax;
+    real phi = mix(lo, hi, u0);
+    real da, ri, ro;
+    for (int it = 0; it < LB_MC_NEWTON; ++it) {
+        real g = lb_mc_proj_cdf(p, phi, &da, &ri, &ro) - target;
+        lo = g <= R(0) ? phi : lo;
+        hi = g > R(0) ? phi : hi;
+        real next = da > R(0) ? phi - g / da : R(0.5) * (lo + hi);
+        phi = next >= lo && next <= hi ? next : R(0.5) * (lo + hi);
+    }
+    lb_mc_proj_cdf(p, phi, &da, &ri, &ro);
+    real r2 = mix(ri, ro, u1);
+    real rho = sqrt(r2);
+    return R3(rho * LB_MC_COS(phi), rho * LB_MC_SIN(phi), sqrt(fmax(R(0), R(1) - r2)));
+}
