@@ -119,8 +119,8 @@ std::vector<std::vector<std::string>> writers(const fs::path& in, const std::str
     const std::string lum = (in / "lum.ldt").string();
     const std::string ref = (in / "ref.exr").string();
     return {
-        {"render", "--luminaire", lum, "--method", "point", "--height", "1", "--rotation", "pi", "--res", "4",
-         "--out", name + ".exr"},
+        {"render", "--luminaire", lum, "--method", "point", "--height", "1", "--rotation", "pi", "--res", "4", "--out",
+         name + ".exr"},
         {"render", "--luminaire", lum, "--method", "reference:tol=1e-3", "--height", "1", "--rotation", "pi", "--res",
          "4", "--no-cache", "--out", name + "-ref.exr"},
         {"compare", ref, ref, "--png", name + "-cmp"},
@@ -130,10 +130,9 @@ std::vector<std::vector<std::string>> writers(const fs::path& in, const std::str
         {"tune", (in / "tune.json").string(), "--out", name + "-tune"},
         {"stability", "--quick", "--res", "8", "--case", "touching", "--method", "point", "--out", name + "-stab"},
         {"sequence", "--luminaire", lum, "--method", "vpl:rsm=16,n=16", "--path", "rotate", "--frames", "2", "--res",
-         "4", "--reference", "reference:tol=1e-2,dir_tol=1e-3,dir_cell=0.5", "--no-cache", "--out",
-         name + "-seq.json"},
-        {"ltc", "fit", "--out", name + "-ltc.json", "--size", "2", "--samples", "4", "--norm-panels", "4",
-         "--max-eval", "10", "--quiet"},
+         "4", "--reference", "reference:tol=1e-2,dir_tol=1e-3,dir_cell=0.5", "--no-cache", "--out", name + "-seq.json"},
+        {"ltc", "fit", "--out", name + "-ltc.json", "--size", "2", "--samples", "4", "--norm-panels", "4", "--max-eval",
+         "10", "--quiet"},
         {"luminaire", "synth", "lambert", "--out", name + "-syn.ldt"},
     };
 }
@@ -170,8 +169,9 @@ TEST(Hostile, NoSubcommandHandsAnOutputNameToAShell)
     const fs::path in = cwd.parent_path() / "in";
     fs::create_directories(in);
     prepareWriterInputs(in);
-    ASSERT_EQ(lumibench(in, {"render", "--luminaire", "lum.ldt", "--method", "point", "--height", "1", "--rotation",
-                             "pi", "--res", "4", "--out", "ref.exr"})
+    ASSERT_EQ(lumibench(in,
+                        {"render", "--luminaire", "lum.ldt", "--method", "point", "--height", "1", "--rotation", "pi",
+                         "--res", "4", "--out", "ref.exr"})
                   .code,
               0);
     for (const auto& name : kHostileNames) {
@@ -343,8 +343,9 @@ TEST(Hostile, TemporariesOfKilledRunsAreRemovedAtEveryLevel)
     writeText(d / "images" / "scene" / ("point_err.png.tmp." + alive + ".1"), "");  // a live writer's
     writeText(d / "images" / "scene" / "notes.tmp.txt", "the user's");
     EXPECT_EQ(util::removeStaleTemporaries(d.string()), 2u);
-    EXPECT_EQ(tree(d), (std::set<std::string>{"images", "images/scene", "images/scene/notes.tmp.txt",
-                                              "images/scene/point_err.png.tmp." + alive + ".1"}));
+    EXPECT_EQ(tree(d),
+              (std::set<std::string>{"images", "images/scene", "images/scene/notes.tmp.txt",
+                                     "images/scene/point_err.png.tmp." + alive + ".1"}));
 }
 
 TEST(Hostile, CopiesAreAtomicOnAFullDisk)
@@ -385,16 +386,16 @@ TEST(Hostile, FifosAndDevicesAreRefusedNotWaitedOn)
     if (fs::is_regular_file("/dev/null.err.exr")) fs::remove("/dev/null.err.exr");
     CliRun r = lumibench(d, {"luminaire", "info", "lum.ldt"}, 20);
     EXPECT_EQ(r.code, 2) << r.err;  // 124 would be: it blocked
-    EXPECT_NE(r.err.find("lum.ldt: expected a luminaire file, got a FIFO"), std::string::npos)
-        << r.err;
+    EXPECT_NE(r.err.find("lum.ldt: expected a luminaire file, got a FIFO"), std::string::npos) << r.err;
     for (const char* dev : {"/dev/zero", "/dev/null"}) {
         r = lumibench(d, {"luminaire", "info", dev}, 20);
         EXPECT_EQ(r.code, 2) << dev << r.err;
         EXPECT_NE(r.err.find("got a character device"), std::string::npos) << r.err;
     }
     for (const char* out : {"out.exr", "/dev/null", ""}) {
-        r = lumibench(d, {"render", "--luminaire", lambert().string(), "--method", "reference", "--height", "1",
-                          "--rotation", "pi", "--res", "4", "--out", out},
+        r = lumibench(d,
+                      {"render", "--luminaire", lambert().string(), "--method", "reference", "--height", "1",
+                       "--rotation", "pi", "--res", "4", "--out", out},
                       20);
         EXPECT_EQ(r.code, 2) << "--out '" << out << "': " << r.err;
         EXPECT_NE(r.err.find("--out"), std::string::npos) << r.err;
@@ -455,18 +456,18 @@ TEST(Hostile, MarkupAndFormulasInNamesAreEscapedForEachFormat)
 TEST(Hostile, NumbersAreDecimalTheWholeValueAndNeverEmpty)
 {
     const fs::path d = tmpDir("numbers");
-    const std::vector<std::string> bad = {"", "0x10", "0X1p3", "1e400", "nan", "inf", "-inf", "1 2", " 1", "1 ",
-                                          "1,5", "1.2.3", "1e", "e3", "+", "-", ".", "0b1", "1_000", "١"};
+    const std::vector<std::string> bad = {"",    "0x10",  "0X1p3", "1e400", "nan", "inf", "-inf", "1 2", " 1",    "1 ",
+                                          "1,5", "1.2.3", "1e",    "e3",    "+",   "-",   ".",    "0b1", "1_000", "١"};
     // Each numeric flag of render with each bad value, as --flag=VALUE (so
     // that "-inf" is a value, not an option): exit 2, naming the flag.
     const std::vector<std::pair<std::string, std::string>> flags = {
-        {"--height", "1"}, {"--res", "4"}, {"--extent", "5"}, {"--reps", "5"}, {"--device", "0"}, {"--alpha", ""},
-        {"--albedo", ""}};
+        {"--height", "1"}, {"--res", "4"},  {"--extent", "5"}, {"--reps", "5"},
+        {"--device", "0"}, {"--alpha", ""}, {"--albedo", ""}};
     int cases = 0;
     for (const auto& [flag, _] : flags) {
         for (const auto& v : bad) {
-            std::vector<std::string> args = {"render",   "--luminaire", lambert().string(), "--method", "point",
-                                             "--out",    "x.exr",       "--rotation",       "pi"};
+            std::vector<std::string> args = {"render", "--luminaire", lambert().string(), "--method", "point",
+                                             "--out",  "x.exr",       "--rotation",       "pi"};
             for (const auto& [other, ok] : flags)
                 if (other != flag && !ok.empty()) args.push_back(other + "=" + ok);
             args.push_back(flag + "=" + v);
@@ -519,9 +520,12 @@ TEST(Hostile, NegativeDimensionsAndBadTiltTablesAreRefused)
     writeText(d / "good.ies", ies("0 45 90", "1 0.9 0.8"));
     r = lumibench(d, {"luminaire", "info", "good.ies"}, 20);
     EXPECT_EQ(r.code, 0) << r.err;
-    for (const auto& [angles, factors] : std::vector<std::pair<std::string, std::string>>{
-             {"0 90 45", "1 1 1"}, {"0 45 45", "1 1 1"}, {"0 45 1e30", "1 1 1"}, {"-10 45 90", "1 1 1"},
-             {"0 45 90", "1 1e30 1"}, {"0 45 90", "1 -1 1"}}) {
+    for (const auto& [angles, factors] : std::vector<std::pair<std::string, std::string>>{{"0 90 45", "1 1 1"},
+                                                                                          {"0 45 45", "1 1 1"},
+                                                                                          {"0 45 1e30", "1 1 1"},
+                                                                                          {"-10 45 90", "1 1 1"},
+                                                                                          {"0 45 90", "1 1e30 1"},
+                                                                                          {"0 45 90", "1 -1 1"}}) {
         writeText(d / "bad.ies", ies(angles, factors));
         r = lumibench(d, {"luminaire", "info", "bad.ies"}, 20);
         EXPECT_EQ(r.code, 2) << angles << " / " << factors << ": " << r.err;
