@@ -1,5 +1,6 @@
 #include "methods/mc_options.h"
 
+#include "methods/registry.h"
 #include "methods/specialize.h"
 #include "util/error.h"
 
@@ -62,8 +63,15 @@ McOptions mcOptions(const MethodSpec& s)
 void validateMc(const MethodSpec& s)
 {
     if (s.integer("paper") == 0) return;
+    // A key given at its default overrides nothing: the canonical SPEC of a
+    // paper=1 spec (every key written out) parses again.
+    auto atDefault = [&](const std::string& k) {
+        for (const auto& p : family("mc").params)
+            if (p.name == k) return s.values.at(k) == p.canonical("mc", p.def);
+        return false;
+    };
     for (const char* k : {"domain", "sequence", "pattern", "shift", "min_solid"})
-        if (s.given.count(k))
+        if (s.given.count(k) && !atDefault(k))
             throw InputError(fmt::format("method mc: paper=1 sets {} itself (solid angle, shared Halton points with a "
                                          "per-pixel shift, area sampling below 1e-3 sr); drop {}= or paper=1",
                                          k, k));

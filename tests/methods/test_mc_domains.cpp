@@ -252,7 +252,10 @@ TEST(McDomains, PaperPresetAndDefaults)
     auto a = run(*rt, t, sc, "mc:n=8,paper=1", Precision::Float);
     auto b = run(*rt, t, sc, "mc:n=8,domain=solid,pattern=halton,shift=1,min_solid=1e-3", Precision::Float);
     EXPECT_EQ(a.image.px, b.image.px);
-    EXPECT_THROW(methods::parseSpec("mc:paper=1,domain=area"), InputError);
+    EXPECT_THROW(methods::parseSpec("mc:paper=1,domain=projected"), InputError);
+    // a key at its default overrides nothing, so the canonical SPEC (every key written out) parses again
+    const auto paper = methods::parseSpec("mc:paper=1");
+    EXPECT_EQ(methods::parseSpec(paper.canonical()).values, paper.values);
     auto d = run(*rt, t, sc, "mc:n=8", Precision::Float);
     EXPECT_EQ(d.stats["defines"].get<std::string>().find("LB_MC_EXT"), std::string::npos);
     EXPECT_NE(a.stats["defines"].get<std::string>().find("LB_MC_EXT"), std::string::npos);
