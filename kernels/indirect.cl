@@ -358,19 +358,9 @@ LB_FN real ind_radical_inverse(int b, uint i)
     return r;
 }
 
-LB_FN uint ind_hash(uint x)
-{
-    x ^= x >> 16;
-    x *= 0x7feb352du;
-    x ^= x >> 15;
-    x *= 0x846ca68bu;
-    x ^= x >> 16;
-    return x;
-}
-
 LB_FN real ind_unit(uint x)
 {
-    return (real)(ind_hash(x) >> 8) / R(16777216.0);
+    return (real)(lb_mc_hash(x) >> 8) / R(16777216.0);
 }
 
 /* Hierarchical warping (Clarberg et al. 2005, the seed's 4.5 and Alg. 5.3) of
@@ -512,7 +502,7 @@ __kernel void ac_evaluate(int K, int T, __global real* state, __global const rea
     int nf = 0;
     for (int k = 0; k < K; ++k) {
         __global real* s = state + LB_IND_TEX * k;
-        if (s[IND_S_FLAG] != R(0) || dbar[k] < R(0) || ind_hash((uint)frame * 7919u + (uint)k) % 3u != 0u)
+        if (s[IND_S_FLAG] != R(0) || dbar[k] < R(0) || lb_mc_hash((uint)frame * 7919u + (uint)k) % 3u != 0u)
             continue;
         real d = ind_delta(lights, centres, k, amax, bmax);
         if (d - dbar[k] < -eps_m) {
@@ -522,7 +512,7 @@ __kernel void ac_evaluate(int K, int T, __global real* state, __global const rea
     }
     for (int k = 0; k < K && nf > 0; ++k) {
         __global real* s = state + LB_IND_TEX * k;
-        if (s[IND_S_FLAG] != R(0) || dbar[k] < R(0) || ind_hash((uint)frame * 7919u + (uint)k) % 3u != 0u)
+        if (s[IND_S_FLAG] != R(0) || dbar[k] < R(0) || lb_mc_hash((uint)frame * 7919u + (uint)k) % 3u != 0u)
             continue;
         real d = ind_delta(lights, centres, k, amax, bmax);
         if (d - dbar[k] > eps_s) {
