@@ -10,7 +10,8 @@
 namespace lb::methods {
 
 // pattern: "poisson" (best-candidate Poisson-disk, Mitchell 1991, 10 candidates
-// per point), "halton" (bases 2, 3; seed != 0 adds a Cranley-Patterson shift),
+// per point, distances on the unit torus so that every point is uniform
+// over seeds), "halton" (bases 2, 3; seed != 0 adds a Cranley-Patterson shift),
 // "stratified" (one jittered point per cell of n equal-area cells in
 // floor(sqrt(n)) rows), "random" (independent uniform points).
 std::vector<double> samplePoints(const std::string& pattern, int n, std::uint64_t seed);

@@ -579,7 +579,9 @@ std::vector<double> bruteBestCandidate(int n, std::uint64_t seed)
         for (int c = 0; c < 10; ++c) {
             double s = U(rng), t = U(rng), dist = 1e300;
             for (int j = 0; j < i; ++j) {
-                double ds = s - st[2 * j], dt = t - st[2 * j + 1];
+                double ds = std::fabs(s - st[2 * j]), dt = std::fabs(t - st[2 * j + 1]);
+                ds = std::min(ds, 1 - ds);  // on the torus, as the set is built
+                dt = std::min(dt, 1 - dt);
                 dist = std::min(dist, ds * ds + dt * dt);
             }
             if (dist > bd) {
