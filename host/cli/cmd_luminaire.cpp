@@ -1,4 +1,4 @@
-// lumibench luminaire info|eval|dump|synth (issue: photometric data).
+// lumibench luminaire info|eval|dump|synth|convert.
 #include "cli/commands.h"
 
 #include "photometry/ies.h"
@@ -11,6 +11,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -37,13 +39,17 @@ nlohmann::json summary(const Table& t)
     j["c_planes"] = t.nc();
     j["gammas"] = t.ng();
     j["gamma_range"] = {t.gamma.front(), t.gamma.back()};
-    j["width_m"] = t.widthM;
-    j["length_m"] = t.lengthM;
+    // The luminous opening: length along C0-C180, width along C90-C270 (opening.h).
+    j["shape"] = photometry::shapeName(t.opening.shape);
+    j["length_m"] = t.opening.lengthM;
+    j["width_m"] = t.opening.widthM;
+    j["height_m"] = t.opening.heightM;
     if (t.format == "ies") {
         photometry::IesExtra x;
         photometry::readIes(t.source, &x);
         j["ies"] = {{"version", x.version},
                     {"tilt", x.tilt},
+                    {"tilt_factors_all_1", t.tilt.trivial()},
                     {"lamps", x.lamps},
                     {"lamp_lumens", x.lampLumens},
                     {"multiplier", x.multiplier},
@@ -61,6 +67,38 @@ double angleArg(const std::string& s, const char* what)
     if (!photometry::parseNumber(s, v, false))
         throw InputError(fmt::format("luminaire eval: expected {} in degrees, got {}", what, photometry::quote(s)));
     return v;
+}
+
+// Writes t as OUT's extension says (.ldt or .ies, any case), named by OUT's stem.
+void writeByExtension(const Table& t, const std::string& out, const std::string& verb)
+{
+    std::string ext = std::filesystem::path(out).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    std::string name = std::filesystem::path(out).stem().string();
+    if (ext == ".ldt")
+        photometry::writeLdt(t, out, name, "lumibench luminaire " + verb);
+    else if (ext == ".ies")
+        photometry::writeIes(t, out, name, "lumibench luminaire " + verb);
+    else
+        throw InputError(fmt::format("luminaire {}: expected an output file FILE.ldt or FILE.ies, got {}", verb,
+                                     photometry::quote(out)));
+}
+
+void addConvert(CLI::App* cmd)
+{
+    auto* conv = cmd->add_subcommand(
+        "convert", "Rewrite a luminaire file as EULUMDAT or IES LM-63, by OUT's extension (.ldt, .ies)");
+    conv->footer("The intensity table (absolute cd), the luminous opening (shape and size) and an IES TILT=INCLUDE "
+                 "table are kept; the other header fields are not. EULUMDAT holds only point, rectangular and "
+                 "round openings and no TILT table: such a file is refused. IN and OUT may be the same file.");
+    auto in = std::make_shared<std::string>();
+    auto out = std::make_shared<std::string>();
+    conv->add_option("in", *in, "IES or LDT file to read")->required();
+    conv->add_option("out", *out, "File to write, OUT.ldt or OUT.ies")->required()->check(outFilePath());
+    conv->callback([in, out] {
+        writeByExtension(photometry::load(*in), *out, "convert");
+        std::cout << summary(photometry::load(*out)).dump() << '\n';
+    });
 }
 
 }  // namespace
@@ -131,18 +169,12 @@ void addLuminaireCommand(CLI::App& app)
     syn->callback([kind, out, params] {
         Table t = photometry::synth(*kind, *params);
         if (!out->empty()) {
-            std::string ext = std::filesystem::path(*out).extension().string();
-            std::string name = std::filesystem::path(*out).stem().string();
-            if (ext == ".ldt")
-                photometry::writeLdt(t, *out, name);
-            else if (ext == ".ies")
-                photometry::writeIes(t, *out, name);
-            else
-                throw InputError(fmt::format("luminaire synth: expected --out FILE.ldt or FILE.ies, got \"{}\"", *out));
+            writeByExtension(t, *out, "synth");
             t = photometry::load(*out);
         }
         std::cout << summary(t).dump() << '\n';
     });
+    addConvert(cmd);
 }
 
 }  // namespace lb::cli

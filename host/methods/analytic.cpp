@@ -27,7 +27,11 @@ photometry::Table cosineTable(int n, double i0, bool twoSided, double stepDeg)
 photometry::Table loadLuminaire(const std::string& s)
 {
     const std::string pre = "analytic:cos";
-    if (s.rfind(pre, 0) != 0) return photometry::load(s);
+    if (s.rfind(pre, 0) != 0) {
+        photometry::Table t = photometry::load(s);
+        photometry::requireNoTilt(t);
+        return t;
+    }
     std::string rest = s.substr(pre.size());
     bool two = false;
     if (auto p = rest.find(":two"); p != std::string::npos && p + 4 == rest.size()) {

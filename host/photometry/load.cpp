@@ -7,6 +7,8 @@
 #include "photometry/text.h"
 #include "util/error.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -33,6 +35,16 @@ Table load(const std::string& pathIn)
     for (const auto& l : f.lines)
         if (l.find("TILT=") != std::string::npos) return readIes(f);
     return readLdt(f);
+}
+
+void requireNoTilt(const Table& t)
+{
+    if (t.tilt.trivial()) return;
+    auto [lo, hi] = std::minmax_element(t.tilt.factors.begin(), t.tilt.factors.end());
+    throw InputError(fmt::format("{}: expected TILT=NONE or TILT=INCLUDE with every factor 1, got TILT=INCLUDE with "
+                                 "factors {} .. {} over lamp tilts {} .. {} degrees: TILT=INCLUDE is not applied by "
+                                 "the scene, so this file cannot be rendered as it is",
+                                 t.source, *lo, *hi, t.tilt.anglesDeg.front(), t.tilt.anglesDeg.back()));
 }
 
 }  // namespace lb::photometry

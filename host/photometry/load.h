@@ -12,4 +12,9 @@ namespace lb::photometry {
 // with "FILE:LINE: expected ..., got ...".
 Table load(const std::string& path);
 
+// For a scene: throws InputError naming the file when its TILT=INCLUDE
+// table has a factor other than 1, which the scene does not apply (the
+// factor of the lamp's tilt angle would scale every candela value).
+void requireNoTilt(const Table& t);
+
 }  // namespace lb::photometry

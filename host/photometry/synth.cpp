@@ -161,7 +161,7 @@ Table synth(const std::string& kind, const SynthParams& p)
     }
     t.format = "synth";
     t.source = kind;
-    t.widthM = t.lengthM = 1.0;
+    t.opening = Opening::rectangle(1.0, 1.0);  // the scene's 1 x 1 m light
     return t;
 }
 

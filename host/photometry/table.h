@@ -4,6 +4,8 @@
 // kernels receive packed() (layout: kernels/common/photometry.h).
 #pragma once
 
+#include "photometry/opening.h"
+
 #include <functional>
 #include <string>
 #include <vector>
@@ -21,7 +23,10 @@ struct Table {
     int isym = -1;  // EULUMDAT symmetry indicator 0..4, or the IES equivalent
     std::string symmetry;  // "none", "rotational", "C0-C180", "C90-C270", "quadrant"
     double declaredFluxLm = -1;  // luminaire flux the file declares (LDT: lamp flux x LOR), < 0 if none
-    double widthM = 0, lengthM = 0;  // luminous area the file declares, metres (0 if none)
+    // The luminous opening the file declares (a point if none). The scene
+    // does not use it yet: every light is the rectangle of DESIGN section 2.
+    Opening opening;
+    Tilt tilt;  // IES TILT=INCLUDE (kept; a scene refuses a non-trivial one, see load.h)
 
     size_t nc() const { return c.size(); }
     size_t ng() const { return gamma.size(); }

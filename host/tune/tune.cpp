@@ -397,6 +397,7 @@ private:
         ro.progress = !opt_.quiet;
         for (const auto& lum : s.luminaires) {
             auto table = std::make_shared<photometry::Table>(photometry::load(lum));
+            photometry::requireNoTilt(*table);
             for (double h : s.heights)
                 for (size_t r = 0; r < s.rotations.size(); ++r)
                     for (double alpha : e_.sceneKeys.alphas) {

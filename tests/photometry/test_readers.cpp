@@ -257,8 +257,7 @@ TEST(Readers, IesHorizontalSetsAndMultipliers)
     Table f = ies("0 90 180 270", 4, "1", "1 1");
     EXPECT_EQ(f.nc(), 5u);
     EXPECT_EQ(node(f, 360, 2), 2.0);
-    EXPECT_EQ(f.widthM, 0.5);
-    EXPECT_EQ(f.lengthM, 0.25);
+    EXPECT_EQ(f.opening, Opening::rectangle(0.25, 0.5));  // width 0.5 (C90-C270), length 0.25 (C0-C180)
     // A full set with its own 360 plane keeps it.
     Table g = ies("0 120 240 360", 4, "1", "1 1");
     EXPECT_EQ(node(g, 360, 2), 302.0);
