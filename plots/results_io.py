@@ -2,9 +2,12 @@
 the two files it writes: results.json (the document: context and records,
 also .json.xz) or results.csv (one flat row per record, docs/experiments.md, "Results as a
 table"). Both give the same list of record dicts, shaped as in results.json:
-`time_ms` a dict (median, min, max, reps, res), `params` a dict, keys a record
-does not have (empty CSV fields) absent, undefined metrics None. Standard
-library only.
+`time_ms` a dict (median, min, max, reps, res, cv), `params` a dict, `ci95`
+a dict of [lo, hi] by metric (seed-dependent methods), keys a record does
+not have (empty CSV fields) absent, undefined metrics None. An equal-time
+partner's result is read through equal_time(), whichever file and schema
+version it came from; verdict() is the report's win / tie / loss rule.
+Standard library only.
 """
 import csv
 import json
@@ -41,6 +44,9 @@ def _record(row):
             continue
         if col.startswith("param_"):
             params[col[len("param_"):]] = _value(s)
+        elif col.endswith("_ci95_lo") or col.endswith("_ci95_hi"):
+            pair = r.setdefault("ci95", {}).setdefault(col[:-len("_ci95_lo")], [None, None])
+            pair[col.endswith("_hi")] = _value(s)
         elif col.startswith("time_ms_"):
             time_ms[col[len("time_ms_"):]] = _value(s)
         else:
@@ -96,3 +102,57 @@ def pooled_nmse(recs):
         sse += r["nmse"] * pi * r["mean_ref"] * r["mean_test"]
     mr, mt = (sr / p, st / p) if p > 0 else (0.0, 0.0)
     return sse / p / (mr * mt) if mr > 0 and mt > 0 else float("nan")
+
+
+# The keys of a partner's equal-time result (results.h, EqualTime).
+EQUAL_TIME_KEYS = ("label", "n", "ratio", "ok", "bracketed", "method_ms", "method_cv", "partner_ms", "partner_cv",
+                   "cell_ms", "tolerance")
+
+
+def equal_time(r):
+    """The equal-time result of a partner record as a dict of EQUAL_TIME_KEYS
+    (None where unknown), from results.json (schema 2: "equal_time": {...};
+    schema 1: flat equal_time_* keys, equal_time_target_ms the method's time)
+    or results.csv (equal_time_<key> columns). None for a record that is no
+    equal-time partner. The one place the plots read these fields."""
+    if "equal_time_to" not in r:
+        return None
+    et = r.get("equal_time")
+    if isinstance(et, dict):
+        out = {k: et.get(k) for k in EQUAL_TIME_KEYS}
+    else:
+        out = {k: r.get("equal_time_" + k) for k in EQUAL_TIME_KEYS}
+        if out["method_ms"] is None:
+            out["method_ms"] = r.get("equal_time_target_ms")
+        if out["partner_ms"] is None:
+            out["partner_ms"] = (r.get("time_ms") or {}).get("median")
+    if out["n"] is None:
+        out["n"] = r.get("n")
+    if out["label"] is None:
+        out["label"] = r["equal_time_to"]
+    return out
+
+
+def interval(r, metric="nmse"):
+    """[lo, hi] of a metric: its 95 % interval over seeds where the record has
+    one, else [value, value] (None where undefined)."""
+    ci = (r.get("ci95") or {}).get(metric)
+    if ci and ci[0] is not None and ci[1] is not None:
+        return list(ci)
+    v = r.get(metric)
+    return [v, v]
+
+
+def verdict(method, partner, metric="nmse"):
+    """The equal-time verdict of `method` against its MC partner (results.h
+    results::verdict): "win" where the method's interval lies below the
+    partner's, "loss" where above, "tie" where they overlap, "n/a" where a
+    value is undefined. Lower is better (NMSE and the other error metrics)."""
+    m, p = interval(method, metric), interval(partner, metric)
+    if any(v is None or v != v for v in m + p):
+        return "n/a"
+    if m[1] < p[0]:
+        return "win"
+    if m[0] > p[1]:
+        return "loss"
+    return "tie"

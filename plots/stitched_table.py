@@ -27,7 +27,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from results_io import load_records, pooled_nmse as stitched  # noqa: E402
+from results_io import equal_time, load_records, pooled_nmse as stitched, verdict  # noqa: E402
 
 
 def fmt(x):
@@ -45,7 +45,8 @@ def main():
     for path in a.results:
         try:
             for r in load_records(path):
-                key = (r.get("scene"), r.get("role"), r.get("equal_time_label") or r.get("spec"))
+                et = equal_time(r)
+                key = (r.get("scene"), r.get("role"), et["label"] if et else r.get("spec"))
                 by_key.pop(key, None)  # re-inserted last: the later file's order
                 by_key[key] = r
         except (OSError, ValueError, lzma.LZMAError) as e:
@@ -59,9 +60,10 @@ def main():
             if col not in methods:
                 methods.append(col)
         elif r.get("role") == "equal_time":
-            col = "mci@" + r["equal_time_label"]
-            if r["equal_time_label"] not in eq_labels:
-                eq_labels.append(r["equal_time_label"])
+            lab = equal_time(r)["label"]
+            col = "mci@" + lab
+            if lab not in eq_labels:
+                eq_labels.append(lab)
         else:
             continue
         groups[(os.path.splitext(r["luminaire"])[0], r["height"], col)].append(r)
@@ -83,7 +85,7 @@ def main():
             if not g:
                 cells.append("-")
             elif c.startswith("mci@"):
-                n = sum(r.get("equal_time_n", r["n"]) for r in g) / len(g)
+                n = sum(equal_time(r)["n"] for r in g) / len(g)
                 cells.append(f"{fmt(stitched(g))} ({n:.0f})")
             else:
                 cells.append(fmt(stitched(g)))
@@ -91,20 +93,24 @@ def main():
     print()
     by_scene = {(r["scene"], r["spec"]): r for r in recs if r.get("role") == "method"}
     for lab in eq_labels:
-        eq = [r for r in recs if r.get("role") == "equal_time" and r["equal_time_label"] == lab]
-        wins = sum(1 for r in eq if (r["scene"], lab) in by_scene and by_scene[(r["scene"], lab)]["nmse"] < r["nmse"])
-        missed = sum(1 for r in eq if not r.get("equal_time_ok", True))
+        eq = [r for r in recs if r.get("role") == "equal_time" and equal_time(r)["label"] == lab]
+        verdicts = collections.Counter(verdict(by_scene[(r["scene"], lab)], r) for r in eq
+                                       if (r["scene"], lab) in by_scene)
+        ets = [equal_time(r) for r in eq]
+        missed = sum(1 for et in ets if et["ok"] is False)
         # bracketed: N_eq's measured neighbour lies on the other side (no integer N is closer)
-        closest = sum(1 for r in eq if r.get("equal_time_ok", True) or r.get("equal_time_bracketed", False))
-        ns = sorted(r.get("equal_time_n", r["n"]) for r in eq)
+        closest = sum(1 for et in ets if et["ok"] is not False or et["bracketed"])
+        ns = sorted(et["n"] for et in ets)
         rows_won = sum(1 for lum, h in keys
                        if groups.get((lum, h, lab)) and groups.get((lum, h, "mci@" + lab))
                        and stitched(groups[(lum, h, lab)]) < stitched(groups[(lum, h, "mci@" + lab)]))
-        print(f"- {lab}: beats its equal-time MCI in {wins} of {len(eq)} scenes and {rows_won} of {len(keys)} "
+        print(f"- {lab}: against its equal-time MCI {verdicts['win']} wins, {verdicts['tie']} ties, "
+              f"{verdicts['loss']} losses in {len(eq)} scenes (95 % intervals over seeds; a tie where they overlap), "
+              f"lower in {rows_won} of {len(keys)} "
               f"stitched rows; MCI N {ns[0]:g}..{ns[-1]:g} (median {ns[len(ns) // 2]:g}); pairs outside the tolerance: "
               f"{missed} ({100 * (len(eq) - missed) / len(eq):.0f} % within"
               + (f", {100 * closest / len(eq):.0f} % within or bracketed)"
-                 if any("equal_time_bracketed" in r for r in eq) else ")"))
+                 if any(et["bracketed"] is not None for et in ets) else ")"))
 
 
 if __name__ == "__main__":

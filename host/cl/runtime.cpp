@@ -182,6 +182,12 @@ Timing summarize(std::vector<double> s)
     t.median_ms = n % 2 ? s[n / 2] : 0.5 * (s[n / 2 - 1] + s[n / 2]);
     t.min_ms = s.front();
     t.max_ms = s.back();
+    if (n > 1) {
+        double mean = 0, ss = 0;
+        for (double v : s) mean += v / static_cast<double>(n);
+        for (double v : s) ss += (v - mean) * (v - mean);
+        t.cv = mean > 0 ? std::sqrt(ss / static_cast<double>(n - 1)) / mean : 0;
+    }
     return t;
 }
 

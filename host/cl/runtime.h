@@ -57,6 +57,7 @@ std::string kernelSourceDigest(const std::string& file);
 // Robust statistics of repeated timings, in milliseconds.
 struct Timing {
     double median_ms = 0, min_ms = 0, max_ms = 0;
+    double cv = 0;  // coefficient of variation: sample standard deviation / mean (google/benchmark's "cv")
     int reps = 0;
     std::vector<double> samples_ms;
 };

@@ -43,6 +43,7 @@ const std::set<std::string> kKeys = {"name",
                                      "equal_time_tolerance",
                                      "equal_time_rounds",
                                      "save_images",
+                                     "seeds",
                                      "time_res",
                                      "scene",
                                      "alpha",
@@ -170,6 +171,7 @@ void readSettings(const Reader& r, const Overrides& ov, Experiment& e)
     if (r.has("equal_time_rounds"))
         e.equalTimeRounds = static_cast<int>(r.integer("equal_time_rounds", kMinExperimentReps, ocl::kMaxReps));
     if (r.has("save_images")) e.saveImages = r.boolean("save_images");
+    if (r.has("seeds")) e.seeds = static_cast<int>(r.integer("seeds", 1, kMaxSeeds));
 }
 
 }  // namespace

@@ -12,6 +12,8 @@
 //    "reference": "reference",               // the reference SPEC
 //    "res": 64, "precision": ["float"], "size": [1, 1], "extent": 5,
 //    "reps": 5, "equal_time_tolerance": 0.10, "save_images": true,   // reps: 5 .. 1000
+//    "seeds": 8,                             // seed-dependent methods (mc) rendered with seeds
+//                                            // seed, seed + 1, ...: metrics are means with 95 % intervals
 //    "time_res": 512,                        // every method is timed at time_res^2 pixels,
 //                                            // whatever res the error image has (docs/design.md section 6)
 //    "scene": "specular", "alpha": [0.1, 0.5], "eye": [0, 4, 2]}   // scene/scene_keys.h
@@ -59,6 +61,12 @@ struct Experiment {
     // decides the verdict, and a round is a few launches.
     int equalTimeRounds = 11;
     bool saveImages = false;
+    // A method whose family has a "seed" parameter (MC of every sequence,
+    // the shared set's draw included) is rendered this many times, seeds
+    // s, s + 1, ... from its SPEC's seed s: its record carries the mean of
+    // each metric with a 95 % interval (metrics::overSeeds), its time taken
+    // once (the seed does not change the kernel). 1: one draw.
+    int seeds = 8;
     SceneKindKeys sceneKeys;  // scene, alpha, eye, albedo
     SceneKind kind() const { return sceneKeys.kind; }
     nlohmann::json raw;  // the file as read
@@ -66,6 +74,7 @@ struct Experiment {
 
 // docs/design.md section 6: every time is the median of at least 5 timed runs.
 constexpr int kMinExperimentReps = 5;
+constexpr int kMaxSeeds = 1000;
 
 // Overrides applied after reading the file (range-checked like the keys they
 // replace; unset = the file's value).

@@ -36,11 +36,17 @@ std::string str(const json& j, const std::string& key, const std::string& def = 
     return j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : def;
 }
 
+// The method an equal-time partner was timed against, as the experiment wrote it.
+std::string matched(const results::Record& r)
+{
+    return r.equalTime ? r.equalTime->label : r.equal_time_to.value_or("");
+}
+
 // The column a record belongs to: the SPEC as the experiment wrote it, and
 // "MCI=<spec>" for the equal-time partner of <spec>.
 std::string label(const results::Record& r)
 {
-    if (r.equal_time_to) return "MCI=" + str(r.extra, "equal_time_label", *r.equal_time_to);
+    if (r.equal_time_to) return "MCI=" + matched(r);
     return str(r.extra, "spec", r.method);
 }
 
@@ -134,6 +140,14 @@ std::string inlineHtml(const std::string& md)
         } else if (md[i] == '`') {
             o += code ? "</code>" : "<code>";
             code = !code;
+        } else if (!code && md[i] == '[' && md.find("](", i) != std::string::npos &&
+                   md.find(')', md.find("](", i)) != std::string::npos) {
+            // [text](#fragment): the report's own links (record text inside is
+            // mdLiteral-escaped, so a '[' of a name never gets here)
+            const size_t mid = md.find("](", i), end = md.find(')', mid);
+            o += "<a href=\"" + htmlEscape(md.substr(mid + 2, end - mid - 2)) + "\">" +
+                inlineHtml(md.substr(i + 1, mid - i - 1)) + "</a>";
+            i = end;
         } else if (!code && md.compare(i, 2, "**") == 0) {
             o += bold ? "</b>" : "<b>";
             bold = !bold;
@@ -274,13 +288,18 @@ json viewerData(const std::string& dir, const std::vector<results::Record>& recs
         json methods = json::array(), mci = json::object();
         for (const auto* r : byScene[s]) {
             const bool eq = role(*r) == "equal_time";
-            const std::string spec = eq ? str(r->extra, "equal_time_label", *r->equal_time_to) : label(*r);
+            const std::string spec = eq ? matched(*r) : label(*r);
             fs::path stem = idir / cellImageName(role(*r), spec);
             fs::path exr = stem.string() + ".exr", err = stem.string() + "_err.png";
             if (!fs::is_regular_file(exr)) continue;
             Image img = readExr(exr.string());
             if (img.width != ref.width || img.height != ref.height) continue;
-            json m = {{"label", eq ? fmt::format("MCI at the time of {} (N = {})", spec, r->n ? *r->n : 0) : spec},
+            const std::string pairText = eq && r->equalTime
+                ? fmt::format("; paired: {} {:.4g} ms, MCI {:.4g} ms", spec, r->equalTime->method_ms,
+                              r->equalTime->partner_ms)
+                : std::string();
+            json m = {{"label",
+                       eq ? fmt::format("MCI at the time of {} (N = {}{})", spec, r->n ? *r->n : 0, pairText) : spec},
                       {"img", floatsB64(img)},
                       {"err", fs::is_regular_file(err) ? dataUri(err) : ""},
                       {"caption", caption(r->error)},
@@ -353,8 +372,9 @@ std::vector<std::string> columns(const results::Results& doc, std::string* summa
         if (std::find(cols.begin(), cols.end(), label(r)) == cols.end()) cols.push_back(label(r));
         if (r.equal_time_to) {
             ++eqAll;
-            eqOk += r.extra.value("equal_time_ok", false);
-            eqClosest += r.extra.value("equal_time_ok", false) || r.extra.value("equal_time_bracketed", false);
+            const bool ok = r.equalTime && r.equalTime->ok;
+            eqOk += ok;
+            eqClosest += ok || (r.equalTime && r.equalTime->bracketed);
         }
     }
     std::stable_partition(cols.begin(), cols.end(), [](const std::string& s) { return s.rfind("MCI=", 0) != 0; });
@@ -363,7 +383,8 @@ std::vector<std::string> columns(const results::Results& doc, std::string* summa
     double tol = doc.context.value("equal_time_tolerance", NAN);
     *summary = fmt::format(
         "{} records, {} scenes, {} x {} pixels{}; {} of {} equal-time MCI partners ({:.0f} %) within "
-        "{} of the matched method's median time, {} ({:.0f} %) within or at the closest integer N.\n"
+        "{} of the matched method's time in their paired rounds (the `ratio` of the equal-time pairs), {} "
+        "({:.0f} %) within or at the closest integer N.\n"
         "Times are OpenCL profiling-event medians (DESIGN section 6); errors against the reference (section 5). "
         "The same records as a table: `results.csv`.\n",
         doc.records.size(), scenes.size(), res, res,
@@ -393,7 +414,7 @@ Table mainTable(const results::Results& doc, const std::vector<std::string>& col
         auto& a = rows[{r.luminaire, kindText(r), r.precision, r.height}][label(r)];
         a.parts.push_back(r.error);
         carried += std::isfinite(metrics::minimisable(r.error, key));
-        if (r.n) a.nsum += r.extra.value("equal_time_n", double(*r.n));  // N + extra: MC's mean count
+        if (r.n) a.nsum += r.equalTime ? r.equalTime->n : double(*r.n);  // N + extra: MC's mean count
     }
     Table t{heading, note, {"luminaire", "precision", "h"}, {}, ""};
     if (kinds) t.head.insert(t.head.begin() + 1, "scene");
@@ -402,24 +423,41 @@ Table mainTable(const results::Results& doc, const std::vector<std::string>& col
                               key == "flip" ? ", or flip-evaluator was not available: scripts/install-deps.sh" : "");
         return t;
     }
-    t.note += "MCI=M is Monte Carlo at the time of method M (its mean N over the rotations in brackets).";
+    t.note += "MCI=M is Monte Carlo at the time of method M (its mean N over the rotations in brackets); "
+              "M / MCI is the ratio of the two (below 1: M is better). The lowest of each row is bold.";
     for (const auto& col : cols) t.head.push_back(mdLiteral(col));
+    std::vector<std::string> ratioOf;  // the methods with a partner column
+    for (const auto& col : cols)
+        if (col.rfind("MCI=", 0) == 0 && std::find(cols.begin(), cols.end(), col.substr(4)) != cols.end())
+            ratioOf.push_back(col.substr(4));
+    for (const auto& m : ratioOf) t.head.push_back(mdLiteral(m) + " / MCI");
     for (const auto& [k, m] : rows) {
         std::vector<Cell> row = {{mdLiteral(std::get<0>(k))},
                                  {mdLiteral(std::get<2>(k))},
                                  num(std::get<3>(k), fmt::format("{}", std::get<3>(k)))};
         if (kinds) row.insert(row.begin() + 1, Cell{mdLiteral(std::get<1>(k))});
+        std::map<std::string, double> value;
+        for (const auto& [col, acc] : m) value[col] = metrics::minimisable(metrics::pooled(acc.parts), key);
+        double best = INFINITY;
+        for (const auto& [col, v] : value)
+            if (std::isfinite(v)) best = std::min(best, v);
         for (const auto& col : cols) {
             auto it = m.find(col);
             if (it == m.end()) {
                 row.push_back({});
                 continue;
             }
-            const double v = metrics::minimisable(metrics::pooled(it->second.parts), key);
+            const double v = value[col];
             std::string text = sci(v);
+            if (v == best) text = "**" + text + "**";
             if (col.rfind("MCI=", 0) == 0)
                 text += fmt::format(" ({:.0f})", it->second.nsum / double(it->second.parts.size()));
             row.push_back(num(v, text));
+        }
+        for (const auto& mname : ratioOf) {
+            const bool both = value.count(mname) && value.count("MCI=" + mname);
+            const double q = both ? value[mname] / value["MCI=" + mname] : NAN;
+            row.push_back(both ? num(q, std::isfinite(q) ? fmt::format("{:.3g}", q) : "n/a") : Cell{});
         }
         t.rows.push_back(std::move(row));
     }
@@ -475,49 +513,146 @@ Table timesTable(const results::Results& doc, const std::vector<std::string>& co
     return times;
 }
 
-// Every equal-time pair: the method's and MCI's times and errors.
-Table pairsTable(const results::Results& doc)
+// An equal-time pair of the results: the partner and the method it was timed against.
+struct Pair {
+    const results::Record* method = nullptr;  // null: the method's record is missing
+    const results::Record* partner = nullptr;
+};
+
+std::vector<Pair> pairsOf(const results::Results& doc)
 {
-    std::map<std::string, metrics::Metrics> errBy;  // scene|label -> errors
-    for (const auto& r : doc.records) errBy[sceneKey(r) + "|" + str(r.extra, "spec", r.method)] = r.error;
-    Table pairs{"Equal-time pairs",
-                "",
-                {"luminaire", "h", "R (rad)", "method", "t method (ms)", "N", "t MCI (ms)", "ratio", "NMSE method",
-                 "NMSE MCI", "grad_nmse method", "grad_nmse MCI", "FLIP method", "FLIP MCI"},
-                {},
-                ""};
+    std::map<std::string, const results::Record*> bySpec;  // scene|label -> the method's record
+    for (const auto& r : doc.records)
+        if (!r.equal_time_to) bySpec[sceneKey(r) + "|" + str(r.extra, "spec", r.method)] = &r;
+    std::vector<Pair> out;
     for (const auto& r : doc.records) {
         if (!r.equal_time_to) continue;
-        std::string m = str(r.extra, "equal_time_label", *r.equal_time_to);
-        auto it = errBy.find(sceneKey(r) + "|" + m);
-        auto of = [&](double metrics::Metrics::*f) {
-            double v = it != errBy.end() ? it->second.*f : NAN;
-            return num(v, sci(v));
+        auto it = bySpec.find(sceneKey(r) + "|" + matched(r));
+        out.push_back({it == bySpec.end() ? nullptr : it->second, &r});
+    }
+    return out;
+}
+
+// A value with its 95 % interval where the record has one (seeds > 1).
+std::string withInterval(const results::Record& r, double v, const std::string& key)
+{
+    auto it = r.ci95.find(key);
+    if (it == r.ci95.end()) return sci(v);
+    return fmt::format("{} [{}, {}]", sci(v), sci(it->second[0]), sci(it->second[1]));
+}
+
+// Every equal-time pair: the two times of its paired rounds and the errors.
+Table pairsTable(const results::Results& doc)
+{
+    Table pairs{"Equal-time pairs",
+                "t method and t MCI are the medians of the same alternating rounds (method, then MCI at N, round "
+                "after round); ratio is the median over those rounds of t MCI / t method, (!) where it lies outside "
+                "the tolerance. N is MCI's mean sample count (N + extra). MCI's errors are means over its seeds "
+                "with their 95 % intervals in brackets; the verdict (NMSE) is a win where the method's interval "
+                "(or value) lies below MCI's, a loss where above, a tie where they overlap.",
+                {"luminaire", "h", "R (rad)", "method", "t method (ms)", "N", "t MCI (ms)", "ratio", "NMSE method",
+                 "NMSE MCI", "verdict", "grad_nmse method", "grad_nmse MCI", "FLIP method", "FLIP MCI"},
+                {},
+                ""};
+    for (const Pair& p : pairsOf(doc)) {
+        const results::Record& r = *p.partner;
+        auto of = [&](double metrics::Metrics::*f, const char* key) {
+            double v = p.method ? p.method->error.*f : NAN;
+            return num(v, p.method ? withInterval(*p.method, v, key) : sci(v));
         };
-        const double tm = r.extra.value("equal_time_target_ms", NAN), ratio = r.extra.value("equal_time_ratio", NAN);
-        const double n = r.n ? r.extra.value("equal_time_n", double(*r.n)) : 0;  // N + extra
-        pairs.rows.push_back(
-            {{mdLiteral(r.luminaire)},
-             num(r.height, fmt::format("{}", r.height)),
-             num(r.rotation, fmt::format("{:.4f}", r.rotation)),
-             {mdLiteral(m)},
-             num(tm, fmt::format("{:.4f}", tm)),
-             num(n, fmt::format("{:g}", n)),
-             num(r.time_ms.median, fmt::format("{:.4f}", r.time_ms.median)),
-             num(ratio, fmt::format("{:.3f}{}", ratio, r.extra.value("equal_time_ok", false) ? "" : " (!)")),
-             of(&metrics::Metrics::nmse),
-             num(r.error.nmse, sci(r.error.nmse)),
-             of(&metrics::Metrics::grad_nmse),
-             num(r.error.grad_nmse, sci(r.error.grad_nmse)),
-             of(&metrics::Metrics::flip),
-             num(r.error.flip, sci(r.error.flip))});
+        const results::EqualTime et = r.equalTime.value_or(results::EqualTime{});
+        const char* v = p.method ? results::verdictName(results::verdict(*p.method, r)) : "n/a";
+        pairs.rows.push_back({{mdLiteral(r.luminaire)},
+                              num(r.height, fmt::format("{}", r.height)),
+                              num(r.rotation, fmt::format("{:.4f}", r.rotation)),
+                              {mdLiteral(matched(r))},
+                              num(et.method_ms, fmt::format("{:.4f}", et.method_ms)),
+                              num(et.n, fmt::format("{:g}", et.n)),
+                              num(et.partner_ms, fmt::format("{:.4f}", et.partner_ms)),
+                              num(et.ratio, fmt::format("{:.3f}{}", et.ratio, et.ok ? "" : " (!)")),
+                              of(&metrics::Metrics::nmse, "nmse"),
+                              num(r.error.nmse, withInterval(r, r.error.nmse, "nmse")),
+                              {v},
+                              of(&metrics::Metrics::grad_nmse, "grad_nmse"),
+                              num(r.error.grad_nmse, withInterval(r, r.error.grad_nmse, "grad_nmse")),
+                              of(&metrics::Metrics::flip, "flip"),
+                              num(r.error.flip, withInterval(r, r.error.flip, "flip"))});
     }
     return pairs;
+}
+
+// Per method with an equal-time partner: wins, ties and losses in NMSE over
+// the scenes, the geometric mean of NMSE method / NMSE MCI, and the scenes it
+// loses (links to their pictures where the viewer has them).
+struct VerdictAcc {
+    int win = 0, tie = 0, loss = 0, undefined = 0, logs = 0;
+    double logSum = 0;
+    std::vector<std::string> lost;
+    int scenes() const { return win + tie + loss + undefined; }
+};
+
+std::string sceneLink(const results::Record& r, const std::map<std::string, size_t>& viewerIndex)
+{
+    const std::string scene = str(r.extra, "scene", r.luminaire);
+    auto vi = viewerIndex.find(scene);
+    return vi == viewerIndex.end() ? mdLiteral(scene)
+                                   : fmt::format("[{}](#scene={}&view=mci)", mdLiteral(scene), vi->second);
+}
+
+// The answer first: the report's opening table.
+Table verdictTable(const results::Results& doc, const std::map<std::string, size_t>& viewerIndex)
+{
+    std::vector<std::string> order;
+    std::map<std::string, VerdictAcc> by;
+    int seeds = 1;
+    for (const Pair& p : pairsOf(doc)) {
+        if (!p.method) continue;
+        const std::string m = matched(*p.partner);
+        if (!by.count(m)) order.push_back(m);
+        VerdictAcc& a = by[m];
+        seeds = std::max(seeds, p.partner->seeds);
+        const results::Verdict v = results::verdict(*p.method, *p.partner);
+        a.win += v == results::Verdict::Win;
+        a.tie += v == results::Verdict::Tie;
+        a.loss += v == results::Verdict::Loss;
+        a.undefined += v == results::Verdict::Undefined;
+        const double q = p.method->error.nmse / p.partner->error.nmse;
+        if (std::isfinite(q) && q > 0) {
+            a.logSum += std::log(q);
+            ++a.logs;
+        }
+        if (v == results::Verdict::Loss) a.lost.push_back(sceneLink(*p.partner, viewerIndex));
+    }
+    Table t{"Verdicts at equal time",
+            fmt::format("Each method against Monte Carlo at its own time, scene by scene, in NMSE: a win where the "
+                        "method's error (its 95 % interval where it has seeds) lies below MCI's (the mean over {} "
+                        "seed{}), a loss where above, a tie where they overlap. The ratio is the geometric mean over "
+                        "the scenes of NMSE method / NMSE MCI (below 1: the method is better).",
+                        seeds, seeds == 1 ? ", one draw: no interval" : "s with its 95 % interval"),
+            {"method", "scenes", "wins", "ties", "losses", "NMSE ratio (geometric mean)", "loses at"},
+            {},
+            "No equal-time pairs in these results."};
+    for (const auto& m : order) {
+        const VerdictAcc& a = by[m];
+        const double g = a.logs ? std::exp(a.logSum / a.logs) : NAN;
+        std::string lost;
+        for (size_t i = 0; i < a.lost.size(); ++i) lost += (i ? ", " : "") + a.lost[i];
+        t.rows.push_back({{mdLiteral(m)},
+                          num(a.scenes(), std::to_string(a.scenes())),
+                          num(a.win, std::to_string(a.win)),
+                          num(a.tie, std::to_string(a.tie)),
+                          num(a.loss, std::to_string(a.loss)),
+                          num(g, std::isfinite(g) ? fmt::format("{:.3g}", g) : "n/a"),
+                          {lost.empty() ? "none" : lost}});
+    }
+    return t;
 }
 
 // What report.md and report.html both show.
 struct ReportContent {
     std::string title;
+    std::string description;  // the experiment's, Markdown literal
+    Table verdicts;  // the answer, first on the page
     Table info;
     std::string summary;
     std::vector<Table> tables;
@@ -542,10 +677,14 @@ std::vector<std::string> plotFiles(const fs::path& pd)
     return pngs;
 }
 
-ReportContent reportContent(const std::string& dir, const results::Results& doc, const std::string& plotNote)
+ReportContent reportContent(const std::string& dir, const results::Results& doc, const std::string& plotNote,
+                            const std::map<std::string, size_t>& viewerIndex)
 {
     ReportContent c;
     c.title = "Experiment " + mdLiteral(str(doc.context, "experiment", "?"));
+    if (doc.context.contains("experiment_spec") && doc.context["experiment_spec"].is_object())
+        c.description = mdLiteral(str(doc.context["experiment_spec"], "description"));
+    c.verdicts = verdictTable(doc, viewerIndex);
     c.info = runInfo(doc);
     const std::vector<std::string> cols = columns(doc, &c.summary);
     const std::string pooledNote =
@@ -573,7 +712,9 @@ ReportContent reportContent(const std::string& dir, const results::Results& doc,
 std::string reportMarkdown(const ReportContent& c)
 {
     std::ostringstream o;
-    o << "# " << c.title << "\n\n| | |\n|---|---|\n";
+    o << "# " << c.title << "\n\n";
+    if (!c.description.empty()) o << c.description << "\n";
+    o << mdTable(c.verdicts) << "\n## Run\n\n| | |\n|---|---|\n";
     for (const auto& row : c.info.rows) o << "| " << row[0].text << " | " << row[1].text << " |\n";
     o << '\n' << c.summary;
     for (const auto& t : c.tables) o << mdTable(t);
@@ -606,7 +747,9 @@ std::string reportHtml(const ReportContent& c, const json& viewer, size_t shown,
     std::ostringstream o;
     o << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>" << inlineHtml(c.title)
       << "</title>\n<style>" << report_page::kCss << "</style></head>\n<body>\n<h1>" << inlineHtml(c.title)
-      << "</h1>\n<table class=\"info\">";
+      << "</h1>\n";
+    if (!c.description.empty()) o << "<p class=\"description\">" << inlineHtml(c.description) << "</p>\n";
+    o << "<section id=\"verdicts\">" << htmlTable(c.verdicts) << "</section>\n<h2>Run</h2>\n<table class=\"info\">";
     for (const auto& row : c.info.rows)
         o << "<tr><th>" << inlineHtml(row[0].text) << "</th><td>" << inlineHtml(row[1].text) << "</td></tr>";
     o << "</table>\n<p>" << inlineHtml(c.summary) << " Click a column head to sort.</p>\n";
@@ -640,10 +783,12 @@ void writeReport(const std::string& dir, const std::string& plotNote)
 {
     results::Results doc = results::load((fs::path(dir) / "results.json").string());
     results::dedupe(doc.records);  // files of older versions may hold two partners of one method
-    const ReportContent c = reportContent(dir, doc, plotNote);
-    util::writeFileAtomic((fs::path(dir) / "report.md").string(), reportMarkdown(c));
     size_t shown = 0, left = 0;
     json viewer = viewerData(dir, doc.records, shown, left);
+    std::map<std::string, size_t> viewerIndex;  // scene label -> its index in the viewer (the #scene= fragment)
+    for (size_t i = 0; i < viewer.size(); ++i) viewerIndex[viewer[i]["label"].get<std::string>()] = i;
+    const ReportContent c = reportContent(dir, doc, plotNote, viewerIndex);
+    util::writeFileAtomic((fs::path(dir) / "report.md").string(), reportMarkdown(c));
     util::writeFileAtomic((fs::path(dir) / "report.html").string(), reportHtml(c, viewer, shown, left));
 }
 

@@ -70,9 +70,18 @@ double numField(const json& j, const char* key)
 }
 
 const std::set<std::string> kKnownKeys = {
-    "method",    "params",    "luminaire",  "height", "rotation",      "res", "precision", "device", "driver",
-    "time_ms",   "nmse",      "nrmse",      "relmse", "ueb",           "leb", "nonfinite", "pixels", "mean_ref",
-    "mean_test", "grad_nmse", "grad_pairs", "flip",   "equal_time_to", "n",   "inputs"};
+    "method", "params",        "luminaire", "height",   "rotation",   "res",       "precision",
+    "device", "driver",        "time_ms",   "nmse",     "nrmse",      "relmse",    "ueb",
+    "leb",    "nonfinite",     "pixels",    "mean_ref", "mean_test",  "grad_nmse", "grad_pairs",
+    "flip",   "equal_time_to", "n",         "inputs",   "equal_time", "seeds",     "ci95"};
+// The equal-time result's columns of the CSV (equal_time_<key>), its
+// candidates and fit (lists) left out.
+const char* const kEqualTimeCsv[] = {"label",     "n",          "ratio",      "ok",      "bracketed", "method_ms",
+                                     "method_cv", "partner_ms", "partner_cv", "cell_ms", "tolerance"};
+// The equal-time fields of a version 1 record, read into Record::equalTime.
+const char* const kLegacyEqualTime[] = {"equal_time_n",     "equal_time_candidates", "equal_time_cell_ms",
+                                        "equal_time_label", "equal_time_target_ms",  "equal_time_ratio",
+                                        "equal_time_ok",    "equal_time_bracketed",  "equal_time_fit"};
 // The scene-kind keys (scene/scene_keys.h), collected into Record::sceneKeys.
 const std::set<std::string> kSceneKeys = {"scene_kind", "alpha", "eye", "albedo"};
 
@@ -90,7 +99,67 @@ std::string gitOutput(const std::vector<std::string>& args)
     return b == std::string::npos ? "" : out.substr(b, e - b + 1);
 }
 
+// A version 1 record's equal-time fields (extra keys, read with their
+// defaults as the code of that version did) as the typed result.
+EqualTime legacyEqualTime(const json& x, const Record& r)
+{
+    EqualTime e;
+    e.label = x.value("equal_time_label", r.equal_time_to.value_or(""));
+    e.n = x.contains("equal_time_n") && x["equal_time_n"].is_number() ? x["equal_time_n"].get<double>()
+                                                                      : double(r.n.value_or(0));
+    e.method_ms = x.value("equal_time_target_ms", kNaN);
+    e.partner_ms = r.time_ms.median;  // version 1 timed the partner in the pairing too
+    e.method_cv = e.partner_cv = kNaN;
+    e.ratio = x.value("equal_time_ratio", kNaN);
+    e.cell_ms = x.value("equal_time_cell_ms", kNaN);
+    e.tolerance = kNaN;
+    e.ok = x.value("equal_time_ok", false);
+    e.bracketed = x.value("equal_time_bracketed", false);
+    e.candidates = x.value("equal_time_candidates", json::array());
+    e.fit = x.value("equal_time_fit", json::array());
+    return e;
+}
+
 }  // namespace
+
+void to_json(json& j, const EqualTime& e)
+{
+    j = json{{"label", e.label},
+             {"n", num(e.n)},
+             {"method_ms", num(e.method_ms)},
+             {"partner_ms", num(e.partner_ms)},
+             {"method_cv", num(e.method_cv)},
+             {"partner_cv", num(e.partner_cv)},
+             {"ratio", num(e.ratio)},
+             {"cell_ms", num(e.cell_ms)},
+             {"tolerance", num(e.tolerance)},
+             {"ok", e.ok},
+             {"bracketed", e.bracketed},
+             {"candidates", e.candidates},
+             {"fit", e.fit}};
+}
+
+void from_json(const json& j, EqualTime& e)
+{
+    if (!j.is_object()) throw InputError(fmt::format("key \"equal_time\": expected an object, found {}", j.dump()));
+    try {
+        e.label = field<std::string>(j, "label");
+        e.n = numField(j, "n");
+        e.method_ms = numField(j, "method_ms");
+        e.partner_ms = numField(j, "partner_ms");
+        e.method_cv = numField(j, "method_cv");
+        e.partner_cv = numField(j, "partner_cv");
+        e.ratio = numField(j, "ratio");
+        e.cell_ms = numField(j, "cell_ms");
+        e.tolerance = numField(j, "tolerance");
+        e.ok = field<bool>(j, "ok");
+        e.bracketed = field<bool>(j, "bracketed");
+        e.candidates = field<json>(j, "candidates");
+        e.fit = field<json>(j, "fit");
+    } catch (const InputError& err) {
+        throw InputError(fmt::format("key \"equal_time\": {}", err.what()));
+    }
+}
 
 std::string Record::key() const
 {
@@ -100,6 +169,44 @@ std::string Record::key() const
                           partner ? json(*equal_time_to) : json(nullptr)});
     if (!sceneKeys.empty()) k.push_back(sceneKeys);  // diffuse keys stay as they were
     return k.dump();  // objects dump with sorted keys: a canonical string
+}
+
+namespace {
+
+// [lo, hi] of metric `key` as a quantity to minimise (metrics::minimisable):
+// the interval where the record has one, else the value twice.
+std::array<double, 2> minimisableRange(const Record& r, const std::string& key)
+{
+    const double v = metrics::minimisable(r.error, key);
+    auto it = r.ci95.find(key);
+    if (it == r.ci95.end()) return {v, v};
+    return key == "leb" ? std::array<double, 2>{-it->second[1], -it->second[0]} : it->second;
+}
+
+}  // namespace
+
+Verdict verdict(const Record& method, const Record& partner, const std::string& metric)
+{
+    const auto m = minimisableRange(method, metric), p = minimisableRange(partner, metric);
+    for (double v : {m[0], m[1], p[0], p[1]})
+        if (!std::isfinite(v)) return Verdict::Undefined;
+    if (m[1] < p[0]) return Verdict::Win;
+    if (m[0] > p[1]) return Verdict::Loss;
+    return Verdict::Tie;
+}
+
+const char* verdictName(Verdict v)
+{
+    switch (v) {
+    case Verdict::Win:
+        return "win";
+    case Verdict::Tie:
+        return "tie";
+    case Verdict::Loss:
+        return "loss";
+    default:
+        return "n/a";
+    }
 }
 
 size_t dedupe(std::vector<Record>& records)
@@ -130,14 +237,18 @@ void to_json(json& j, const Record& r)
     j["precision"] = r.precision;
     j["device"] = r.device;
     j["driver"] = r.driver;
-    j["time_ms"] = {{"median", num(r.time_ms.median)},
-                    {"min", num(r.time_ms.min)},
-                    {"max", num(r.time_ms.max)},
-                    {"reps", r.time_ms.reps},
-                    {"res", r.time_ms.res}};
+    j["time_ms"] = {{"median", num(r.time_ms.median)}, {"min", num(r.time_ms.min)}, {"max", num(r.time_ms.max)},
+                    {"cv", num(r.time_ms.cv)},         {"reps", r.time_ms.reps},    {"res", r.time_ms.res}};
     j.update(json(r.error));  // nmse, ..., mean_test, grad_nmse, grad_pairs, flip (metrics.h)
     if (r.equal_time_to) j["equal_time_to"] = *r.equal_time_to;
     if (r.n) j["n"] = *r.n;
+    if (r.equalTime) j["equal_time"] = *r.equalTime;
+    if (r.seeds > 1) {
+        j["seeds"] = r.seeds;
+        json ci = json::object();
+        for (const auto& [k, v] : r.ci95) ci[k] = {num(v[0]), num(v[1])};
+        j["ci95"] = ci;
+    }
     if (r.inputs.is_object() && !r.inputs.empty()) j["inputs"] = r.inputs;
     if (r.sceneKeys.is_object()) j.update(r.sceneKeys);
 }
@@ -165,6 +276,7 @@ void from_json(const json& j, Record& r)
     // max and res came later: older files read as 0
     r.time_ms.max = t.contains("max") ? numField(t, "max") : 0;
     r.time_ms.res = t.contains("res") ? field<int>(t, "res") : 0;
+    r.time_ms.cv = t.contains("cv") ? numField(t, "cv") : 0;
     r.error.nmse = numField(j, "nmse");
     r.error.nrmse = numField(j, "nrmse");
     r.error.relmse = numField(j, "relmse");
@@ -181,6 +293,18 @@ void from_json(const json& j, Record& r)
     r.error.flip = j.contains("flip") ? numField(j, "flip") : kNaN;
     if (j.contains("equal_time_to")) r.equal_time_to = field<std::string>(j, "equal_time_to");
     if (j.contains("n")) r.n = field<int64_t>(j, "n");
+    if (j.contains("equal_time")) r.equalTime = field<EqualTime>(j, "equal_time");
+    if (j.contains("seeds")) r.seeds = field<int>(j, "seeds");
+    if (j.contains("ci95")) {
+        const json ci = field<json>(j, "ci95");
+        if (!ci.is_object()) throw InputError("key \"ci95\": expected an object of [lo, hi] by metric");
+        for (auto it = ci.begin(); it != ci.end(); ++it) {
+            if (!it->is_array() || it->size() != 2)
+                throw InputError(fmt::format("key \"ci95\".{}: expected [lo, hi], found {}", it.key(), it->dump()));
+            r.ci95[it.key()] = {it->at(0).is_number() ? it->at(0).get<double>() : kNaN,
+                                it->at(1).is_number() ? it->at(1).get<double>() : kNaN};
+        }
+    }
     if (j.contains("inputs")) {
         r.inputs = j["inputs"];
         if (!r.inputs.is_object())
@@ -192,9 +316,16 @@ void from_json(const json& j, Record& r)
         else if (!kKnownKeys.count(it.key()))
             r.extra[it.key()] = it.value();
     }
+    if (r.equal_time_to && !r.equalTime && r.extra.contains("equal_time_ratio")) {
+        r.equalTime = legacyEqualTime(r.extra, r);
+        for (const char* k : kLegacyEqualTime) r.extra.erase(k);
+    }
 }
 
-void to_json(json& j, const Results& d) { j = json{{"context", d.context}, {"records", d.records}}; }
+void to_json(json& j, const Results& d)
+{
+    j = json{{"schema_version", kResultsSchemaVersion}, {"context", d.context}, {"records", d.records}};
+}
 
 void from_json(const json& j, Results& d)
 {
@@ -202,6 +333,11 @@ void from_json(const json& j, Results& d)
         throw InputError("expected a JSON object with \"context\" and \"records\"");
     if (!j["context"].is_object()) throw InputError("\"context\" must be an object");
     if (!j["records"].is_array()) throw InputError("\"records\" must be an array");
+    const json version = j.value("schema_version", json(1));
+    if (!version.is_number_integer() || version.get<int>() < 1 || version.get<int>() > kResultsSchemaVersion)
+        throw InputError(fmt::format("\"schema_version\" {}: this lumibench reads versions 1 to {} (a newer "
+                                     "lumibench wrote it?)",
+                                     version.dump(), kResultsSchemaVersion));
     d.context = j["context"];
     d.records.clear();
     size_t i = 0;
@@ -496,8 +632,9 @@ std::string csvValue(const json& v)
 std::string toCsv(const Results& doc)
 {
     const std::vector<std::string> head = {
-        "method",    "spec",   "role",   "scene",          "luminaire",   "height",      "rotation",     "res",
-        "precision", "device", "driver", "time_ms_median", "time_ms_min", "time_ms_max", "time_ms_reps", "time_ms_res"};
+        "method",      "spec",        "role",         "scene",       "luminaire", "height",
+        "rotation",    "res",         "precision",    "device",      "driver",    "time_ms_median",
+        "time_ms_min", "time_ms_max", "time_ms_reps", "time_ms_res", "time_ms_cv"};
     std::vector<std::string> metricCols;
     const json metricKeys = metrics::Metrics{};
     for (auto it = metricKeys.begin(); it != metricKeys.end(); ++it) metricCols.push_back(it.key());
@@ -510,8 +647,9 @@ std::string toCsv(const Results& doc)
             if (!x.is_number()) return false;
         return true;
     };
-    std::set<std::string> params, extras;
+    std::set<std::string> params, extras, intervals;
     for (const auto& r : doc.records) {
+        for (const auto& kv : r.ci95) intervals.insert(kv.first);
         for (auto it = r.params.begin(); it != r.params.end(); ++it) params.insert(it.key());
         for (const json* o : {&r.extra, &r.sceneKeys})
             if (o->is_object())
@@ -521,8 +659,11 @@ std::string toCsv(const Results& doc)
     }
     std::vector<std::string> cols = head;
     cols.insert(cols.end(), metricCols.begin(), metricCols.end());
+    cols.push_back("seeds");
+    for (const auto& m : intervals) cols.insert(cols.end(), {m + "_ci95_lo", m + "_ci95_hi"});
     cols.push_back("equal_time_to");
     cols.push_back("n");
+    for (const char* k : kEqualTimeCsv) cols.push_back(std::string("equal_time_") + k);
     for (const auto& p : params) cols.push_back("param_" + p);
     cols.insert(cols.end(), extras.begin(), extras.end());
 
@@ -547,10 +688,18 @@ std::string toCsv(const Results& doc)
                                       csvValue(t["min"]),
                                       csvValue(t["max"]),
                                       csvValue(t["reps"]),
-                                      csvValue(t["res"])};
+                                      csvValue(t["res"]),
+                                      csvValue(t["cv"])};
         for (const auto& m : metricCols) f.push_back(csvValue(j.value(m, json(nullptr))));
+        f.push_back(csvValue(r.seeds));
+        for (const auto& m : intervals) {
+            auto it = r.ci95.find(m);
+            f.push_back(it == r.ci95.end() ? "" : csvValue(num(it->second[0])));
+            f.push_back(it == r.ci95.end() ? "" : csvValue(num(it->second[1])));
+        }
         f.push_back(csvValue(j.value("equal_time_to", json(nullptr))));
         f.push_back(csvValue(j.value("n", json(nullptr))));
+        for (const char* k : kEqualTimeCsv) f.push_back(r.equalTime ? csvValue(j["equal_time"][k]) : "");
         for (const auto& p : params)
             f.push_back(r.params.contains(p) && !r.params[p].is_structured()
                             ? csvValue(r.params[p])

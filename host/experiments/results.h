@@ -9,7 +9,9 @@
 //                 "nmse": ..., "nrmse": ..., "relmse": ..., "ueb": ..., "leb": ...,
 //                 "nonfinite": 0, "pixels": ..., "mean_ref": ..., "mean_test": ...,
 //                 "grad_nmse": ..., "grad_pairs": ..., "flip": ... (null: FLIP not available),
-//                 "equal_time_to": "cubature:...", "n": 40}, ...]}
+//                 "seeds": 8, "ci95": {"nmse": [lo, hi], ...} (seed-dependent methods),
+//                 "equal_time_to": "cubature:...", "n": 40, "equal_time": {...}}, ...],
+//    "schema_version": 2}
 //
 // One record is one cell of an experiment: a method with its parameters at
 // one scene, precision and device. Its cell key (Record::key) is what
@@ -25,7 +27,9 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
+#include <array>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -37,7 +41,34 @@ struct TimeMs {
     double median = 0, min = 0, max = 0;
     int reps = 0;
     int res = 0;  // pixels per side of the timed launches (0: not recorded, older files)
+    double cv = 0;  // coefficient of variation of the reps (std / mean; 0: not recorded, older files)
 };
+
+// How an equal-time MC partner was found (docs/design.md section 6), on the
+// partner's record as "equal_time": {...}. Both times are medians of the
+// same alternating rounds (the method, then MC at n, round after round), the
+// pair a report shows.
+struct EqualTime {
+    std::string label;  // the matched method as the experiment writes it
+    double n = 0;  // MC's mean sample count N + extra (the record's n is N)
+    double method_ms = 0, partner_ms = 0;  // medians of the paired rounds
+    double method_cv = 0, partner_cv = 0;  // their coefficients of variation
+    double ratio = 0;  // the median over the rounds of partner / method
+    double cell_ms = 0;  // the method's own cell, timed apart
+    double tolerance = 0;  // |ratio - 1| allowed
+    bool ok = false;  // |ratio - 1| <= tolerance
+    bool bracketed = false;  // no integer N is closer on this device
+    nlohmann::json candidates = nlohmann::json::array();  // [{"n", "extra"?, "ratio", "ms"}, ...] as timed
+    nlohmann::json fit = nlohmann::json::array();  // [[N, ms], ...]: the t(N) the search started from
+};
+void to_json(nlohmann::json& j, const EqualTime& e);
+// Throws lb::InputError naming a missing or mistyped key.
+void from_json(const nlohmann::json& j, EqualTime& e);
+
+// The version of the results document this code writes (its top-level
+// "schema_version"; files without one are version 1, whose equal-time
+// fields lay in the record as equal_time_ratio, equal_time_ok, ...).
+constexpr int kResultsSchemaVersion = 2;
 
 struct Record {
     std::string method;  // docs/design.md section 4 name, e.g. "mc"
@@ -51,6 +82,12 @@ struct Record {
     metrics::Metrics error;  // serialised flat: nmse, nrmse, ... at the record's top level
     std::optional<std::string> equal_time_to;  // MC at equal time: the method spec it matches
     std::optional<int64_t> n;  // sample count where it is a result (N_eq), not a parameter
+    std::optional<EqualTime> equalTime;  // with equal_time_to: how the partner was found
+    // Seed-dependent methods (Experiment::seeds): `error` holds the means over
+    // this many draws and ci95 their 95 % intervals by metric key
+    // (metrics::overSeeds); 1 and empty for one draw.
+    int seeds = 1;
+    std::map<std::string, std::array<double, 2>> ci95;
     // Everything else the record was computed from, as the runner writes it
     // (runner.h): light size, extent, reps, time_res, the reference SPEC and
     // digests of the luminaire file and of the kernel sources. Empty in
@@ -71,6 +108,16 @@ struct Record {
     // of it: a record whose inputs changed is the same cell, out of date.
     std::string key() const;
 };
+
+// The equal-time verdict of a method against its MC partner on one metric
+// (metrics::minimisable: lower is better). Each side is its 95 % interval
+// where it has one (seeds > 1), else its value: the method wins when its
+// upper end lies below the partner's lower end, loses when its lower end
+// lies above the partner's upper end, and ties when they overlap. Undefined
+// when either value is not finite.
+enum class Verdict { Win, Tie, Loss, Undefined };
+Verdict verdict(const Record& method, const Record& partner, const std::string& metric = "nmse");
+const char* verdictName(Verdict v);  // "win", "tie", "loss", "n/a"
 
 // Keeps one record per cell key: the last one (in file order), at the
 // position of the first. Returns how many were dropped. The rule of
@@ -161,7 +208,10 @@ Results mergeResults(const std::vector<std::string>& paths, MergeStats* stats = 
 // undefined numbers are empty fields). Columns, in this order:
 //   method, spec, role, scene, luminaire, height, rotation, res, precision,
 //   device, driver, time_ms_median, time_ms_min, time_ms_max, time_ms_reps,
-//   time_ms_res, the metrics of metrics::to_json (nmse, ...), equal_time_to, n,
+//   time_ms_res, time_ms_cv, the metrics of metrics::to_json (nmse, ...;
+//   means over the seeds where seeds > 1), seeds, <metric>_ci95_lo and
+//   _hi for every metric some record has an interval of, equal_time_to, n,
+//   equal_time_<key> for the keys of EqualTime but candidates and fit,
 //   param_<name> for every method parameter met in any record (empty where a
 //   record's method has no such parameter), then every other key a record
 //   carries whose value is a number, string, boolean or null (build_s,

@@ -188,15 +188,40 @@ struct SceneRun {
         results::Record r = base();
         r.method = spec.name;
         r.params = spec.paramsJson();
-        r.time_ms = {rr.timing.median_ms, rr.timing.min_ms, rr.timing.max_ms, rr.timing.reps, rr.timeRes};
+        r.time_ms = {rr.timing.median_ms, rr.timing.min_ms, rr.timing.max_ms, rr.timing.reps, rr.timeRes, rr.timing.cv};
         r.error = metrics::compare(ref, rr.image);
         r.error.flip = metrics::flip(ref, rr.image);  // null, with one warning per run, without flip-evaluator
+        if (seeded(spec)) {
+            std::vector<metrics::Metrics> draws = {r.error};
+            for (int k = 1; k < e.seeds; ++k) draws.push_back(drawError(spec, k));
+            metrics::SeedSummary s = metrics::overSeeds(draws);
+            r.error = s.mean;
+            r.seeds = s.seeds;
+            r.ci95 = s.ci95;
+        }
         r.extra["spec"] = cell.role == "equal_time" ? mcLabel(spec) : cell.spec;
         r.extra["role"] = cell.role;
         r.extra["build_s"] = rr.buildSeconds;
         if (!rr.stats.empty()) r.extra["stats"] = rr.stats;
         if (!imageDir.empty()) saveImages(cellName, rr.image, r.error);
         return r;
+    }
+
+    // Whether the method's output depends on a seed (its family has one) and
+    // the experiment asks for more than one draw.
+    bool seeded(const methods::MethodSpec& spec) const { return e.seeds > 1 && spec.has("seed"); }
+
+    // The error of draw k: the image of `spec` at seed s + k (s its own,
+    // wrapped below 2^31, the smallest of the families' bounds), untimed.
+    metrics::Metrics drawError(const methods::MethodSpec& spec, int k) const
+    {
+        const long seed = (spec.integer("seed") + k) % 2147483648L;
+        methods::RenderOptions imageOnly;
+        imageOnly.reps = 1;
+        Image img = methods::render(rt, table, scene, spec.with("seed", std::to_string(seed)), prec, imageOnly).image;
+        metrics::Metrics m = metrics::compare(ref, img);
+        m.flip = metrics::flip(ref, img);
+        return m;
     }
 
     // <cell>.exr and the PNG triple of `lumibench compare --png`, one k per scene.
@@ -411,15 +436,21 @@ results::Record equalTimePartner(const SceneRun& sr, const Cell& c, double tM, s
     results::Record r = sr.record(s1, r1, c, cellImageName(c.role, c.spec));
     r.equal_time_to = c.parsed.canonical();
     r.n = q.partnerN;
-    r.extra["equal_time_n"] = double(q.partnerN) + q.partnerExtra;  // N + extra: MC's mean sample count
-    r.extra["equal_time_candidates"] = q.candJson;
-    r.extra["equal_time_cell_ms"] = tM;  // the method's own cell, timed apart
-    r.extra["equal_time_label"] = c.spec;
-    r.extra["equal_time_target_ms"] = q.bestT[0].median_ms;  // the method, in the paired rounds
-    r.extra["equal_time_ratio"] = q.ratio;
-    r.extra["equal_time_ok"] = std::abs(q.ratio - 1) <= e.equalTimeTolerance;
-    r.extra["equal_time_bracketed"] = bracketed;
-    r.extra["equal_time_fit"] = fitJson;
+    results::EqualTime et;
+    et.label = c.spec;
+    et.n = double(q.partnerN) + q.partnerExtra;  // N + extra: MC's mean sample count
+    et.method_ms = q.bestT[0].median_ms;  // the method and MC in the same paired rounds
+    et.partner_ms = q.bestT[1].median_ms;
+    et.method_cv = q.bestT[0].cv;
+    et.partner_cv = q.bestT[1].cv;
+    et.ratio = q.ratio;
+    et.cell_ms = tM;  // the method's own cell, timed apart
+    et.tolerance = e.equalTimeTolerance;
+    et.ok = std::abs(q.ratio - 1) <= e.equalTimeTolerance;
+    et.bracketed = bracketed;
+    et.candidates = q.candJson;
+    et.fit = fitJson;
+    r.equalTime = et;
     return r;
 }
 
@@ -469,6 +500,11 @@ public:
         } else {
             in["kernel"] = kernel(c.parsed.name);
         }
+        // The draws over seeds (Experiment::seeds) of a seed-dependent cell:
+        // MC's for a partner. Absent at one draw, as before the key existed.
+        const bool seeded =
+            c.role == "equal_time" ? methods::parseSpec(e_.mc, e_.kind()).has("seed") : c.parsed.has("seed");
+        if (seeded && e_.seeds > 1) in["seeds"] = e_.seeds;
         // A presets file is an input too: the SPEC its entry for this
         // luminaire resolves to (an edited entry is a different input; the
         // other luminaires' entries are not this cell's).
@@ -691,13 +727,12 @@ private:
         if (!st.times.count(target))
             throw Error(fmt::format("equal time: no time of '{}' at scene {}", c.spec, sr.sid.label()));
         results::Record r = equalTimePartner(sr, c, st.times[target], st.curve);
-        if (!r.extra["equal_time_ok"].get<bool>()) {
+        if (!r.equalTime->ok) {
             ++sum_.equalTimeOff;
             std::cerr << fmt::format("lumibench: warning: {}: MCI at equal time to {}: N = {}, {:.4g} ms vs "
                                      "{:.4g} ms (ratio {:.3f}, outside +-{:.0f}%)\n",
-                                     sr.sid.label(), c.spec, *r.n, r.time_ms.median,
-                                     r.extra["equal_time_target_ms"].get<double>(),
-                                     r.extra["equal_time_ratio"].get<double>(), 100 * e_.equalTimeTolerance);
+                                     sr.sid.label(), c.spec, *r.n, r.equalTime->partner_ms, r.equalTime->method_ms,
+                                     r.equalTime->ratio, 100 * e_.equalTimeTolerance);
         }
         return r;
     }

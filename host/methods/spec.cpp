@@ -125,6 +125,18 @@ std::vector<std::string> MethodSpec::list(const std::string& key) const
     return items;
 }
 
+MethodSpec MethodSpec::with(const std::string& key, const std::string& value) const
+{
+    std::string text = name;
+    char sep = ':';
+    for (const auto& k : given)
+        if (k != key) {
+            text += sep + k + "=" + values.at(k);
+            sep = ',';
+        }
+    return parseSpec(text + sep + key + "=" + value, kind);
+}
+
 std::string MethodSpec::canonical() const
 {
     std::string out = name;

@@ -23,6 +23,10 @@ struct MethodSpec {
     const std::string& str(const std::string& key) const;  // Choice parameters
     std::vector<std::string> list(const std::string& key) const;  // List parameters
     bool has(const std::string& key) const { return values.count(key) != 0; }
+    // A copy with `key` set to `value` (the keys given stay given), checked
+    // as parseSpec checks a SPEC: InputError for a key the family lacks or a
+    // bad value.
+    MethodSpec with(const std::string& key, const std::string& value) const;
 
     // name:key=value,... with every parameter, keys sorted (cache keys, logs).
     std::string canonical() const;

@@ -181,4 +181,51 @@ void from_json(const nlohmann::json& j, Metrics& m)
     m.flip = newerNum(j, "flip");
 }
 
+double studentT975(int dof)
+{
+    // Abramowitz and Stegun, Table 26.10 (97.5 % points).
+    static const double t[] = {12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228,
+                               2.201,  2.179, 2.160, 2.145, 2.131, 2.120, 2.110, 2.101, 2.093, 2.086,
+                               2.080,  2.074, 2.069, 2.064, 2.060, 2.056, 2.052, 2.048, 2.045, 2.042};
+    if (dof < 1) throw InputError("studentT975: degrees of freedom must be >= 1");
+    if (dof <= 30) return t[dof - 1];
+    if (dof <= 40) return 2.042 + (2.021 - 2.042) * (dof - 30) / 10.0;
+    if (dof <= 60) return 2.021 + (2.000 - 2.021) * (dof - 40) / 20.0;
+    if (dof <= 120) return 2.000 + (1.980 - 2.000) * (dof - 60) / 60.0;
+    return 1.960;
+}
+
+SeedSummary overSeeds(const std::vector<Metrics>& draws)
+{
+    if (draws.empty()) throw InputError("overSeeds: no draws");
+    static const std::pair<const char*, double Metrics::*> kReal[] = {{"nmse", &Metrics::nmse},
+                                                                      {"nrmse", &Metrics::nrmse},
+                                                                      {"relmse", &Metrics::relmse},
+                                                                      {"ueb", &Metrics::ueb},
+                                                                      {"leb", &Metrics::leb},
+                                                                      {"mean_test", &Metrics::mean_test},
+                                                                      {"grad_nmse", &Metrics::grad_nmse},
+                                                                      {"flip", &Metrics::flip}};
+    SeedSummary out;
+    out.seeds = static_cast<int>(draws.size());
+    out.mean = draws[0];
+    const double r = static_cast<double>(draws.size());
+    for (const auto& [key, field] : kReal) {
+        double sum = 0;
+        for (const auto& d : draws) sum += d.*field;
+        const double mean = sum / r;
+        out.mean.*field = mean;
+        if (draws.size() < 2 || !std::isfinite(mean)) continue;
+        double ss = 0;
+        for (const auto& d : draws) ss += (d.*field - mean) * (d.*field - mean);
+        const double half = studentT975(out.seeds - 1) * std::sqrt(ss / (r - 1) / r);
+        out.ci95[key] = {mean - half, mean + half};
+    }
+    for (const auto& d : draws) {
+        out.mean.nonfinite = std::max(out.mean.nonfinite, d.nonfinite);
+        out.mean.grad_pairs = std::min(out.mean.grad_pairs, d.grad_pairs);
+    }
+    return out;
+}
+
 }  // namespace lb::metrics

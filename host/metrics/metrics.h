@@ -36,8 +36,10 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include <array>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -77,6 +79,25 @@ Metrics compare(const Image& reference, const Image& test);
 // Parts with equal pixel counts give mean(SSE/P) / (mean(mean_ref)
 // mean(mean_test)), the form plots/stitched_table.py computes.
 Metrics pooled(const std::vector<Metrics>& parts);
+
+// The metrics of R renders that differ only in their seed (a Monte Carlo
+// method's draws), as an expectation: each real-valued metric the mean over
+// the draws with its two-sided 95 % Student-t interval, mean -+ t(0.975,
+// R - 1) s / sqrt(R) with s the draws' sample standard deviation (R >= 2;
+// t from a table, exact to 3 digits). nonfinite is the largest of the
+// draws' (one draw's non-finite pixel is a defect of the method), pixels
+// the first's, grad_pairs the smallest. mean_ref, the same in every draw,
+// gets no interval. flip's interval is left out when a draw has no FLIP.
+struct SeedSummary {
+    Metrics mean;
+    int seeds = 1;
+    std::map<std::string, std::array<double, 2>> ci95;  // metric key (to_json) -> [lo, hi]
+};
+// Throws lb::InputError for no draws.
+SeedSummary overSeeds(const std::vector<Metrics>& draws);
+// t(0.975, dof): the 97.5 % quantile of Student's t with dof >= 1 degrees of
+// freedom (1.96 beyond 120).
+double studentT975(int dof);
 
 // The record keys of the metrics a search can minimise (tune's "metric"):
 // nmse, nrmse, relmse, grad_nmse, flip, ueb, leb.
