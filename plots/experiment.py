@@ -99,8 +99,11 @@ def curve_labels(ax, curve):
     would crowd the panel; the last always)."""
     step = 2 if len(curve) > 6 else 1
     for i, (n, t, v) in enumerate(curve):
-        if i % step == 0 or i == len(curve) - 1:
-            ax.annotate(str(n), (t, v), xytext=(2, 2), textcoords="offset points", fontsize=style.MIN_FONT_PT,
+        last = i == len(curve) - 1
+        if i % step == 0 or last:
+            # the last one below-left of its point: inside the panel, not under the next one
+            ax.annotate(str(n), (t, v), xytext=(-2, -3) if last else (2, 2), textcoords="offset points",
+                        ha="right" if last else "left", va="top" if last else "bottom", fontsize=style.MIN_FONT_PT,
                         color="0.25", gid="curve-label")
 
 
@@ -148,7 +151,7 @@ def metric_time(records, out, dpi, key, name):
         rots = sorted({r["rotation"] for r in rs})
         # at most the text width: 0.75 in for the y labels, panels of at most 1.8 in
         pw = min(1.8, (style.TEXT_WIDTH - 0.8) / len(rots))
-        W, H = 0.75 + pw * len(rots) + 0.05, 0.45 + 0.3 + 0.85 * pw * len(heights)
+        W, H = 0.75 + pw * len(rots) + 0.05, 0.45 + 0.42 + 0.85 * pw * len(heights)
         fig, axes = plt.subplots(len(heights), len(rots), figsize=(W, H), squeeze=False, sharex=True, sharey=True)
         ns = sorted({r["params"]["n"] for r in rs if on_curve(r, rs)})
         for i, h in enumerate(heights):
@@ -166,7 +169,7 @@ def metric_time(records, out, dpi, key, name):
         # Fixed margins in inches instead of tight_layout, which took 70 % of
         # the plotting time (it measures every tick label of every panel);
         # the saved file's bounding box takes in the legend below.
-        fig.subplots_adjust(left=0.75 / W, right=1 - 0.05 / W, top=1 - 0.45 / H, bottom=0.3 / H,
+        fig.subplots_adjust(left=0.75 / W, right=1 - 0.05 / W, top=1 - 0.45 / H, bottom=0.42 / H,
                             wspace=0.06, hspace=0.08)
         path = os.path.join(out, "{}_time_{}_{}.png".format(key, safe(stem(lum)), prec))
         files += style.save(fig, path, dpi=dpi)
@@ -189,8 +192,11 @@ def metric_per_height(records, out, dpi, key, name):
     for h, prec in sorted({(k[0], k[1]) for k in acc}):
         lums = sorted({k[3] for k in acc if k[0] == h and k[1] == prec})
         series = sorted({k[2] for k in acc if k[0] == h and k[1] == prec}, key=style.order)
-        W = min(style.TEXT_WIDTH, max(style.COLUMN_WIDTH, 0.8 + 0.45 * len(lums) * max(1, len(series)) ** 0.5))
+        # the legend's width (style.legend_columns' estimate) in a margin at the right, all within the text width
+        legend_w = 0.45 + 0.065 * max(len(line) for s in series for line in style.wrap(s).split("\n"))
+        W = min(style.TEXT_WIDTH, max(style.COLUMN_WIDTH, 0.8 + legend_w + 0.45 * len(lums) * len(series) ** 0.5))
         fig, ax = plt.subplots(figsize=(W, 2.6))
+        fig.subplots_adjust(left=0.65 / W, right=1 - (legend_w + 0.1) / W, top=1 - 0.25 / 2.6, bottom=0.75 / 2.6)
         slot = 0.8 / len(series)
         for j, s in enumerate(series):
             xs, ys = [], []

@@ -28,10 +28,9 @@ TEST(Plots, FiguresFollowTheSuiteStyle)
     const fs::path work = fs::temp_directory_path() / ("lb_figures_" + std::to_string(getpid()));
     fs::remove_all(work);
     const std::string src = test::sourceDir();
-    const std::string out =
-        test::shellOutput(python() + " '" + src + "/tests/plots/check_figures.py' '" + src + "/plots' '" + src +
-                              "/tests/plots/data' '" + work.string() + "' 2>&1",
-                          &code);
+    const std::string out = test::shellOutput(python() + " '" + src + "/tests/plots/check_figures.py' '" + src +
+                                                  "/plots' '" + src + "/tests/plots/data' '" + work.string() + "' 2>&1",
+                                              &code);
     EXPECT_EQ(code, 0) << out;
     EXPECT_NE(out.find("check_figures: 9 figures of 6 kinds pass"), std::string::npos) << out;
     fs::remove_all(work);
