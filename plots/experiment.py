@@ -194,7 +194,8 @@ def metric_per_height(records, out, dpi, key, name):
         series = sorted({k[2] for k in acc if k[0] == h and k[1] == prec}, key=style.order)
         # the legend's width (style.legend_columns' estimate) in a margin at the right, all within the text width
         legend_w = 0.45 + 0.065 * max(len(line) for s in series for line in style.wrap(s).split("\n"))
-        W = min(style.TEXT_WIDTH, max(style.COLUMN_WIDTH, 0.8 + legend_w + 0.45 * len(lums) * len(series) ** 0.5))
+        # (0.2 in spare: the first rotated luminaire name reaches left of the figure)
+        W = min(style.TEXT_WIDTH - 0.2, max(style.COLUMN_WIDTH, 0.8 + legend_w + 0.45 * len(lums) * len(series) ** 0.5))
         fig, ax = plt.subplots(figsize=(W, 2.6))
         fig.subplots_adjust(left=0.65 / W, right=1 - (legend_w + 0.1) / W, top=1 - 0.25 / 2.6, bottom=0.75 / 2.6)
         slot = 0.8 / len(series)

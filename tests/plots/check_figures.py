@@ -184,6 +184,14 @@ ys = list(line.get_ydata())
 expect(len(ys) == 2 and abs(ys[0] / want - 1) < 1e-9,  # the same arithmetic: only rounding apart
        f"nmse_h0.1: cubature on ARCOS at {ys[:1]}, pooled {want}, mean {mean}")
 
+# Eight luminaires (the test's two, copied under other names) at one height:
+# the widest per-height figure still fits the text width with its legend.
+many = [dict(r, luminaire=f"L{k}_{r['luminaire']}") for k in range(4)
+        for r in load_records(os.path.join(DATA, "results.json")) if r["height"] == 0.1]
+wide_dir = os.path.join(WORK, "wide")
+os.makedirs(wide_dir, exist_ok=True)
+run_kind("experiment (8 luminaires)", lambda: experiment.metric_per_height(many, wide_dir, style.DPI, "nmse", "NMSE"))
+
 # 2. specular.py --fig
 run_kind("specular", main_with_argv("specular", [os.path.join(DATA, "specular.json"),
                                                   "--md", os.path.join(WORK, "spec.md"),
