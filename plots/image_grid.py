@@ -33,7 +33,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import style  # noqa: E402
 
 # The colours of host/metrics/tonemap.h (kOrange, kBlue, kNonFinite), for the legend.
-ORANGE, BLUE, MAGENTA = (1.0, 128 / 255, 0.0), (0.0, 102 / 255, 1.0), (1.0, 0.0, 1.0)
+ORANGE, BLUE, MAGENTA = (213 / 255, 94 / 255, 0.0), (0.0, 128 / 255, 1.0), (1.0, 0.0, 1.0)
 
 
 def parse_row(spec):
