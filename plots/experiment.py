@@ -1,15 +1,19 @@
 #!/usr/bin/python3
 """Figures of an experiment run: reads DIR/results.json (or DIR/results.csv),
-writes DIR/plots/*.png.
+writes DIR/plots/*.png (300 dpi) and a PDF beside each, in the suite's style
+(plots/style.py, docs/figures.md: fixed colours and markers per method).
 
     /usr/bin/python3 plots/experiment.py DIR|DIR/results.json|DIR/results.csv [--max-grids K]
 
 - nmse_time_<luminaire>_<precision>.png: NMSE against median kernel time,
   log-log, one panel per height (rows) and rotation (columns): the MCI curve
-  (MC at N = 1..1024, `role` mci_curve) as a line, every method as a point,
-  equal-time MCI partners as stars.
-- nmse_h<height>_<precision>.png: mean NMSE over the rotations per luminaire,
-  one line per method (thesis Figs. 6.7-6.10: one figure per height).
+  (MC at N = 1..1024, `role` mci_curve) as a line with N beside its points,
+  every method as a point, equal-time MCI partners hollow in their method's
+  colour; one legend below the panels.
+- nmse_h<height>_<precision>.png: NMSE per luminaire (categories on x), the
+  rotations pooled into one stitched image as the report's tables do, each
+  method a marker beside its hollow equal-time partner (thesis Figs.
+  6.7-6.10: one figure per height).
 - grad_nmse_time_*, grad_nmse_h*, flip_time_*, flip_h*: the same for
   grad_nmse and FLIP (docs/design.md section 5), when some record carries them
   (flip is null where flip-evaluator was not available).
@@ -38,8 +42,8 @@ except ImportError:
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import image_grid  # noqa: E402
-from atomic import save_figure  # noqa: E402
-from results_io import load_records  # noqa: E402
+import style  # noqa: E402
+from results_io import load_records, pooled  # noqa: E402
 
 
 def finite(v):
@@ -90,6 +94,52 @@ def value(r, key):
     return v if finite(v) and v > 0 else None
 
 
+def curve_labels(ax, curve):
+    """N beside the MCI curve's points (every other one where more than six
+    would crowd the panel; the last always)."""
+    step = 2 if len(curve) > 6 else 1
+    for i, (n, t, v) in enumerate(curve):
+        last = i == len(curve) - 1
+        if i % step == 0 or last:
+            # the last one below-left of its point: inside the panel, not under the next one
+            ax.annotate(str(n), (t, v), xytext=(-2, -3) if last else (2, 2), textcoords="offset points",
+                        ha="right" if last else "left", va="top" if last else "bottom", fontsize=style.MIN_FONT_PT,
+                        color="0.25", gid="curve-label")
+
+
+def time_panel(ax, cell, key):
+    """One scene's panel: the MCI curve, each method as a point, each equal-time partner hollow."""
+    curve = sorted((r["params"]["n"], r["time_ms"]["median"], value(r, key))
+                   for r in cell if on_curve(r, cell) and value(r, key) and finite(r["time_ms"]["median"]))
+    if curve:
+        ax.plot([c[1] for c in curve], [c[2] for c in curve], **style.plot_kw(style.CURVE))
+        curve_labels(ax, curve)
+    for r in sorted(cell, key=lambda r: style.order(style.series_of(r))):
+        if not (value(r, key) and finite(r["time_ms"]["median"])) or role(r) not in ("method", "equal_time"):
+            continue
+        if on_curve(r, cell):
+            continue
+        ax.plot(r["time_ms"]["median"], value(r, key), **style.plot_kw(style.series_of(r)))
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    # no minor ticks: on log axes over many decades they were most of the drawing time
+    ax.minorticks_off()
+
+
+def figure_legend(fig, width_in, curve_ns):
+    """One legend for every panel, below them (outside the data): the MCI
+    curve first, then each method followed by its equal-time partner."""
+    handles = {}
+    for ax in fig.axes:
+        for hd, lb in zip(*ax.get_legend_handles_labels()):
+            handles.setdefault(lb, hd)
+    names = sorted(handles, key=style.order)
+    labels = [style.wrap(n if n != style.CURVE else "MCI curve (N {} at the points)".format(curve_ns))
+              for n in names]
+    ncol = style.legend_columns(labels, width_in)
+    fig.legend([handles[n] for n in names], labels, loc="upper center", bbox_to_anchor=(0.5, 0.0), ncol=ncol)
+
+
 def metric_time(records, out, dpi, key, name):
     """One figure per luminaire and precision; a panel per (height, rotation)."""
     by = collections.defaultdict(list)
@@ -99,110 +149,81 @@ def metric_time(records, out, dpi, key, name):
     for (lum, prec), rs in sorted(by.items()):
         heights = sorted({r["height"] for r in rs})
         rots = sorted({r["rotation"] for r in rs})
-        fig, axes = plt.subplots(len(heights), len(rots), figsize=(2.8 * len(rots), 2.4 * len(heights)),
-                                 squeeze=False, sharex=True, sharey=True)
-        methods = sorted({label(r) for r in rs if role(r) == "method"})
+        # at most the text width: 0.75 in for the y labels, panels of at most 1.8 in
+        pw = min(1.8, (style.TEXT_WIDTH - 0.8) / len(rots))
+        W, H = 0.75 + pw * len(rots) + 0.05, 0.45 + 0.42 + 0.85 * pw * len(heights)
+        fig, axes = plt.subplots(len(heights), len(rots), figsize=(W, H), squeeze=False, sharex=True, sharey=True)
         ns = sorted({r["params"]["n"] for r in rs if on_curve(r, rs)})
-        curve_ns = "{}..{}".format(ns[0], ns[-1]) if ns else ""  # one legend entry for every panel
-        colours = {m: "C{}".format(i % 10) for i, m in enumerate(methods)}
         for i, h in enumerate(heights):
             for j, rot in enumerate(rots):
                 ax = axes[i][j]
-                cell = [r for r in rs if r["height"] == h and r["rotation"] == rot]
-                curve = sorted((r["params"]["n"], r["time_ms"]["median"], value(r, key))
-                               for r in cell if on_curve(r, cell) and value(r, key))
-                if curve:
-                    ax.plot([c[1] for c in curve], [c[2] for c in curve], "-", color="0.5", lw=1,
-                            marker=".", ms=3, label="MCI curve (N = {})".format(curve_ns))
-                for r in cell:
-                    if not (value(r, key) and finite(r["time_ms"]["median"])):
-                        continue
-                    if role(r) == "method":
-                        ax.plot(r["time_ms"]["median"], value(r, key), "o", color=colours[label(r)], ms=5,
-                                label=label(r))
-                    elif role(r) == "equal_time":
-                        m = r.get("equal_time_label", "")
-                        ax.plot(r["time_ms"]["median"], value(r, key), "*", ms=9, mec="k", mew=0.5,
-                                color=colours.get(m, "k"), label="MCI=" + m + " (N={})".format(r.get("n")))
-                ax.set_xscale("log")
-                ax.set_yscale("log")
-                # no minor ticks: on log axes over many decades they were most of the drawing time
-                ax.minorticks_off()
-                ax.grid(True, which="major", lw=0.3, alpha=0.5)
+                time_panel(ax, [r for r in rs if r["height"] == h and r["rotation"] == rot], key)
                 if i == 0:
-                    ax.set_title(rot_label(rot), fontsize=9)
+                    ax.set_title(rot_label(rot))
                 if j == 0:
-                    ax.set_ylabel("h={} m\n{}".format(h, name), fontsize=9)
+                    ax.set_ylabel("h={} m\n{}".format(h, name))
                 if i == len(heights) - 1:
-                    ax.set_xlabel("time (ms)", fontsize=9)
-        handles, labels = {}, []
-        for ax in axes.flat:
-            for hd, lb in zip(*ax.get_legend_handles_labels()):
-                entry = lb.split(" (N=")[0]
-                if entry not in handles:
-                    handles[entry] = hd
-                    labels.append(entry)
-        ncol = max(1, min(len(labels), 2 * len(rots)))
-        rows = (len(labels) + ncol - 1) // ncol
-        fig.legend([handles[k] for k in labels], labels, loc="lower center", ncol=ncol, fontsize=7)
-        fig.suptitle("{} ({}): {} against run time".format(stem(lum), prec, name))
+                    ax.set_xlabel("time (ms)")
+        figure_legend(fig, W, "{}..{}".format(ns[0], ns[-1]) if ns else "")
+        fig.suptitle("{} ({}): {} against kernel time".format(stem(lum), prec, name))
         # Fixed margins in inches instead of tight_layout, which took 70 % of
-        # the plotting time (it measures every tick label of every panel):
-        # left the two-line y label and tick labels, bottom the x label and
-        # the legend's rows, top the title and the column titles.
-        W, H = fig.get_size_inches()
-        fig.set_size_inches(W, H + 0.2 * rows)
-        H += 0.2 * rows
-        fig.subplots_adjust(left=0.85 / W, right=1 - 0.12 / W, top=1 - 0.6 / H, bottom=(0.55 + 0.2 * rows) / H,
-                            wspace=0.06, hspace=0.1)
+        # the plotting time (it measures every tick label of every panel);
+        # the saved file's bounding box takes in the legend below.
+        fig.subplots_adjust(left=0.75 / W, right=1 - 0.05 / W, top=1 - 0.45 / H, bottom=0.42 / H,
+                            wspace=0.06, hspace=0.08)
         path = os.path.join(out, "{}_time_{}_{}.png".format(key, safe(stem(lum)), prec))
-        save_figure(fig, path, dpi=dpi)
+        files += style.save(fig, path, dpi=dpi)
         plt.close(fig)
-        files.append(path)
     return files
 
 
 def metric_per_height(records, out, dpi, key, name):
-    """Mean of a metric over the rotations per luminaire, one figure per height and precision."""
+    """A metric per luminaire at one height, the rotations pooled as one
+    stitched image (results_io.pooled, the report's metrics::pooled, not the
+    mean of the rotations' values): luminaires are categories on x, each
+    method a marker beside its equal-time partner (hollow). One figure per
+    height and precision."""
     acc = collections.defaultdict(list)
     for r in records:
         if role(r) == "mci_curve" or not finite(r.get(key)):
             continue
-        acc[(r["height"], r["precision"], label(r), stem(r["luminaire"]))].append(r[key])
+        acc[(r["height"], r["precision"], style.series_of(r), stem(r["luminaire"]))].append(r)
     files = []
     for h, prec in sorted({(k[0], k[1]) for k in acc}):
         lums = sorted({k[3] for k in acc if k[0] == h and k[1] == prec})
-        labels = []
-        for k in acc:
-            if k[0] == h and k[1] == prec and k[2] not in labels:
-                labels.append(k[2])
-        labels.sort(key=lambda s: (s.startswith("MCI="), s))
-        fig, ax = plt.subplots(figsize=(max(5, 1.0 * len(lums) + 2), 3.6))
-        for i, lb in enumerate(labels):
+        series = sorted({k[2] for k in acc if k[0] == h and k[1] == prec}, key=style.order)
+        # the legend's width (style.legend_columns' estimate) in a margin at the right, all within the text width
+        legend_w = 0.45 + 0.065 * max(len(line) for s in series for line in style.wrap(s).split("\n"))
+        # (0.2 in spare: the first rotated luminaire name reaches left of the figure)
+        W = min(style.TEXT_WIDTH - 0.2, max(style.COLUMN_WIDTH, 0.8 + legend_w + 0.45 * len(lums) * len(series) ** 0.5))
+        fig, ax = plt.subplots(figsize=(W, 2.6))
+        fig.subplots_adjust(left=0.65 / W, right=1 - (legend_w + 0.1) / W, top=1 - 0.25 / 2.6, bottom=0.75 / 2.6)
+        slot = 0.8 / len(series)
+        for j, s in enumerate(series):
             xs, ys = [], []
             for x, lum in enumerate(lums):
-                v = acc.get((h, prec, lb, lum))
-                if v and sum(v) > 0:
-                    xs.append(x)
-                    ys.append(sum(v) / len(v))
-            ax.plot(xs, ys, "--" if lb.startswith("MCI=") else "-", marker="*" if lb.startswith("MCI=") else "o",
-                    color="C{}".format(i % 10), label=lb)
+                v = pooled(acc[(h, prec, s, lum)], key) if (h, prec, s, lum) in acc else float("nan")
+                if finite(v) and v > 0:
+                    xs.append(x - 0.4 + slot * (j + 0.5))
+                    ys.append(v)
+            ax.plot(xs, ys, **style.plot_kw(s, label=style.wrap(s)))
         ax.set_xticks(range(len(lums)))
-        ax.set_xticklabels(lums, rotation=30, ha="right", fontsize=8)
+        ax.set_xticklabels(lums, rotation=30, ha="right")
+        ax.set_xlim(-0.5, len(lums) - 0.5)
+        for x in range(1, len(lums)):
+            ax.axvline(x - 0.5, color="0.85", lw=0.6)
+        ax.grid(False, axis="x")
         ax.set_yscale("log")
-        ax.set_ylabel("{} (mean over rotations)".format(name))
+        ax.set_ylabel("{} (rotations pooled)".format(name))
         ax.set_title("h = {} m ({})".format(h, prec))
-        ax.grid(True, which="both", lw=0.3, alpha=0.5)
-        ax.legend(fontsize=7)
-        fig.tight_layout()
+        ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0))
         path = os.path.join(out, "{}_h{}_{}.png".format(key, h, prec))
-        save_figure(fig, path, dpi=dpi)
+        files += style.save(fig, path, dpi=dpi)
         plt.close(fig)
-        files.append(path)
     return files
 
 
-def grids(records, dir_, out, max_grids):
+def grids(records, dir_, out, max_grids, dpi):
     """reference | method | error per scene from DIR/images/<scene>/<cell>_{ref,test,err}.png."""
     by = collections.OrderedDict()
     for r in records:
@@ -220,8 +241,8 @@ def grids(records, dir_, out, max_grids):
                 rows.append("{}={}".format(name, prefix))
         if rows:
             path = os.path.join(out, "grid_{}.png".format(safe(scene)))
-            image_grid.main(rows + ["--out", path, "--title", scene, "--size", "2.0", "--dpi", "100"])
-            files.append(path)
+            image_grid.main(rows + ["--out", path, "--title", scene, "--size", "2.0", "--dpi", str(dpi)])
+            files += [path, os.path.splitext(path)[0] + ".pdf"]
     return files
 
 
@@ -230,8 +251,9 @@ def main(argv=None):
     ap.add_argument("dir", help="results directory (with results.json or results.csv), or one of those files; "
                     "the figures go to plots/ beside it")
     ap.add_argument("--max-grids", type=int, default=8, help="image grids for at most this many scenes")
-    ap.add_argument("--dpi", type=int, default=110)
+    ap.add_argument("--dpi", type=int, default=style.DPI, help="PNG resolution (default %(default)s)")
     args = ap.parse_args(argv)
+    style.use()
     try:
         records = load_records(args.dir)
     except (OSError, ValueError) as e:
@@ -244,7 +266,7 @@ def main(argv=None):
     for key, name in METRICS:
         if any(value(r, key) for r in records):  # none: older records, or no flip-evaluator
             files += metric_time(records, out, args.dpi, key, name) + metric_per_height(records, out, args.dpi, key, name)
-    files += grids(records, args.dir, out, args.max_grids)
+    files += grids(records, args.dir, out, args.max_grids, args.dpi)
     print("experiment.py: {} figures in {}".format(len(files), out))
 
 

@@ -29,10 +29,11 @@ matplotlib.use("Agg")  # files only, no display
 import matplotlib.image as mpimg  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.patches import Patch  # noqa: E402
-from atomic import save_figure  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import style  # noqa: E402
 
 # The colours of host/metrics/tonemap.h (kOrange, kBlue, kNonFinite), for the legend.
-ORANGE, BLUE, MAGENTA = (1.0, 128 / 255, 0.0), (0.0, 102 / 255, 1.0), (1.0, 0.0, 1.0)
+ORANGE, BLUE, MAGENTA = (213 / 255, 94 / 255, 0.0), (0.0, 128 / 255, 1.0), (1.0, 0.0, 1.0)
 
 
 def parse_row(spec):
@@ -92,9 +93,10 @@ def main(argv=None):
     ap.add_argument("--columns", default="Reference,Method,Error", help="three column titles, comma separated")
     ap.add_argument("--title", default="", help="figure title")
     ap.add_argument("--size", type=float, default=2.6, help="size of one picture in inches (default 2.6)")
-    ap.add_argument("--dpi", type=int, default=150)
+    ap.add_argument("--dpi", type=int, default=style.DPI)
     ap.add_argument("--no-legend", action="store_true", help="leave out the legend of the error colours")
     args = ap.parse_args(argv)
+    style.use()
 
     columns = args.columns.split(",")
     if len(columns) != 3:
@@ -118,7 +120,7 @@ def main(argv=None):
             if i == 0:
                 ax.set_title(columns[j])
         axes[i][0].set_ylabel(label)
-        axes[i][2].set_xlabel(caption(prefix), fontsize=7)
+        axes[i][2].set_xlabel(caption(prefix), fontsize=style.MIN_FONT_PT)
     if args.title:
         fig.suptitle(args.title)
     # Room at the bottom for the legend of the error colours (0.3 inch).
@@ -129,11 +131,11 @@ def main(argv=None):
                   Patch(facecolor="white", edgecolor="0.5", label="no error"),
                   Patch(color=BLUE, label="too dark (full at |LEB|)"),
                   Patch(color=MAGENTA, label="non-finite")]
-        fig.legend(handles=legend, loc="lower center", ncol=4, fontsize=7, frameon=False)
+        fig.legend(handles=legend, loc="lower center", ncol=4, frameon=False)
     for ax in axes[:, 2]:
         if ax.xaxis.label.get_text() and not inside(fig, ax.xaxis.label):
             sys.stderr.write("image_grid: warning: a caption does not fit the figure (--size larger?)\n")
-    save_figure(fig, args.out, dpi=args.dpi)
+    style.save(fig, args.out, dpi=args.dpi)  # and a PDF (or PNG) beside it
     plt.close(fig)
     print(args.out)
     return fig

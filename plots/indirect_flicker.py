@@ -12,6 +12,7 @@ before it existed get it from their per-frame records (flicker x mean_ref x
 mean_test is the frame's mean squared difference). A markdown table of every
 SPEC goes to stdout."""
 import json
+import os
 import re
 import sys
 
@@ -20,7 +21,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from atomic import save_figure  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import style  # noqa: E402
 
 
 def count(spec):
@@ -60,22 +62,28 @@ def main(argv):
                 continue
             fam = spec.split(":")[0]
             series.setdefault((f"{label} {path_kind}", fam), []).append((k, fl, doc["mean"][spec]["nmse"]))
-    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+    style.use()
+    fig, axes = plt.subplots(1, 2, figsize=(style.TEXT_WIDTH, 2.6))
+    # one line style per sequence (file), the colour and marker of the method family
+    dashes = {}
     for (label, fam), pts in sorted(series.items()):
         pts.sort()
         ks = [p[0] for p in pts]
-        style = {"kmeans": "o-", "acrsm": "s-", "vpl": "^--", "mc": "^--"}.get(fam, "x-")
-        axes[0].plot(ks, [p[1] for p in pts], style, label=f"{fam} ({label})")
-        axes[1].plot(ks, [p[2] for p in pts], style, label=f"{fam} ({label})")
+        ls = ["-", "--", ":", "-."][dashes.setdefault(label, len(dashes)) % 4]
+        for ax, col in ((axes[0], 1), (axes[1], 2)):
+            kw = style.plot_kw(fam, line=True, label=f"{fam} ({label})")
+            kw["linestyle"] = ls
+            ax.plot(ks, [p[col] for p in pts], **kw)
     for ax, title in zip(axes, ["flicker (per sequence)", "mean NMSE over the frames"]):
         ax.set_xscale("log", base=2)
         ax.set_yscale("log")
         ax.set_xlabel("K clusters (vpl: N lights)")
         ax.set_title(title)
-        ax.grid(True, which="both", alpha=0.3)
-    axes[0].legend(fontsize=7)
+    labels = [lb for lb in axes[0].get_legend_handles_labels()[1]]
+    fig.legend(*axes[0].get_legend_handles_labels(), loc="upper center", bbox_to_anchor=(0.5, 0.0),
+               ncol=style.legend_columns(labels, style.TEXT_WIDTH))
     fig.tight_layout()
-    save_figure(fig, argv[1], dpi=120)
+    style.save(fig, argv[1])
     return 0
 
 

@@ -22,7 +22,9 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
-from atomic import save_figure  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import style  # noqa: E402
 
 
 def load(src, binary):
@@ -49,27 +51,31 @@ def main():
     here = os.path.dirname(os.path.abspath(__file__))
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("src", help="luminaire file, dump JSON, or - for stdin")
-    ap.add_argument("-o", "--out", default="polar.png", help="output picture (PNG, PDF, SVG)")
+    ap.add_argument("-o", "--out", default="polar.png", help="output picture (.png or .pdf: both are written; .svg as well)")
     ap.add_argument("--binary", default=os.path.join(here, "..", "build", "lumibench"))
     ap.add_argument("--title", default=None)
     a = ap.parse_args()
     d = load(a.src, a.binary)
 
-    fig = plt.figure(figsize=(5, 5))
+    style.use()
+    fig = plt.figure(figsize=(style.COLUMN_WIDTH, style.COLUMN_WIDTH))
     ax = fig.add_subplot(projection="polar")
     ax.set_theta_zero_location("S")  # gamma 0 down
     ax.set_theta_direction(1)        # counter-clockwise: right half first
-    for (c_right, c_left), style, label in (((0, 180), "-", "C0-C180"), ((90, 270), "--", "C90-C270")):
+    blue, vermillion = style.OKABE_ITO["blue"], style.OKABE_ITO["vermillion"]
+    planes = (((0, 180), "-", blue, "C0-C180"), ((90, 270), "--", vermillion, "C90-C270"))
+    for (c_right, c_left), ls, colour, label in planes:
         g, right = plane(d, c_right)
         _, left = plane(d, c_left)
         theta = np.concatenate([np.radians(g), -np.radians(g[::-1])])
         r = np.concatenate([right, left[::-1]])
-        ax.plot(theta, r, style, label=label)
+        ax.plot(theta, r, ls, color=colour, label=label)
     ax.set_thetagrids(range(0, 360, 30), [f"{x if x <= 180 else 360 - x}" for x in range(0, 360, 30)])
-    ax.set_title(a.title or os.path.basename(d.get("file") or "luminaire"), fontsize=10)
-    ax.legend(loc="upper right", fontsize=8, bbox_to_anchor=(1.15, 1.1))
-    fig.text(0.02, 0.02, f"cd, max {d['max_cd']:.0f}; flux {d['flux_lm']:.0f} lm", fontsize=8)
-    save_figure(fig, a.out, dpi=120, bbox_inches="tight")
+    ax.set_title(a.title or os.path.basename(d.get("file") or "luminaire"))
+    # the legend and the summary below the plot, outside the data
+    ax.legend(loc="upper left", bbox_to_anchor=(-0.1, -0.12), ncol=2)
+    fig.text(0.02, -0.13, f"cd, max {d['max_cd']:.0f}; flux {d['flux_lm']:.0f} lm")
+    style.save(fig, a.out)
 
 
 if __name__ == "__main__":

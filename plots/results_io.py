@@ -104,6 +104,38 @@ def pooled_nmse(recs):
     return sse / p / (mr * mt) if mr > 0 and mt > 0 else float("nan")
 
 
+def pooled(recs, key):
+    """A metric of the records' images stitched into one, as metrics::pooled
+    (host/metrics/metrics.h): nmse as pooled_nmse; grad_nmse the same over the
+    neighbour pairs (each record's squared-difference sum grad_nmse *
+    grad_pairs * mean_ref * mean_test, divided by the pairs and the pooled
+    means); flip the pixel-weighted mean. NaN where a record lacks the metric
+    or a pooled mean is not positive."""
+    def num(r, k):
+        v = r.get(k)
+        return float(v) if isinstance(v, (int, float)) and v == v else float("nan")
+    if key == "nmse":
+        return pooled_nmse(recs) if all(num(r, "nmse") == num(r, "nmse") for r in recs) else float("nan")
+    p = sr = st = acc = pairs = 0.0
+    for r in recs:
+        pi = float(r["pixels"] - r.get("nonfinite", 0)) if "pixels" in r else 1.0
+        p += pi
+        sr += pi * num(r, "mean_ref")
+        st += pi * num(r, "mean_test")
+        if key == "grad_nmse":
+            gp = float(r.get("grad_pairs", pi))  # files without grad_pairs: the pixels
+            acc += num(r, key) * gp * num(r, "mean_ref") * num(r, "mean_test")
+            pairs += gp
+        else:
+            acc += num(r, key) * pi
+    if p <= 0:
+        return float("nan")
+    if key != "grad_nmse":
+        return acc / p
+    mr, mt = sr / p, st / p
+    return acc / pairs / (mr * mt) if mr > 0 and mt > 0 and pairs > 0 else float("nan")
+
+
 # The keys of a partner's equal-time result (results.h, EqualTime).
 EQUAL_TIME_KEYS = ("label", "n", "ratio", "ok", "bracketed", "method_ms", "method_cv", "partner_ms", "partner_cv",
                    "cell_ms", "tolerance")

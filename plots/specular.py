@@ -104,33 +104,56 @@ def main():
     else:
         sys.stdout.write(text)
     if a.fig:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        from atomic import save_figure
-        fig, axes = plt.subplots(1, len(alphas), figsize=(4 * len(alphas), 4), sharey=True)
-        axes = axes if len(alphas) > 1 else [axes]
-        for ax, x in zip(axes, alphas):
-            pts = [(gmean([r["time_ms"]["median"] for r in by[(x, l)]]), gmean([r.get(m) for r in by[(x, l)]]))
-                   for l in curve if (x, l) in by]
-            if pts:
-                ax.plot([p[0] for p in pts], [p[1] for p in pts], "k.-", label="mc (light), N = %s..%s" %
-                        (curve[0].split("=")[1], curve[-1].split("=")[1]))
-            for l in shown:
-                if l in curve or (x, l) not in by:
-                    continue
-                t = gmean([r["time_ms"]["median"] for r in by[(x, l)]])
-                e = gmean([r.get(m) for r in by[(x, l)]])
-                ax.plot([t], [e], "o" if l.startswith("ltc") else ("s" if l.startswith("MCI") else "^"), label=l)
-            ax.set_xscale("log")
-            ax.set_yscale("log")
-            ax.set_title("alpha %g" % x)
-            ax.set_xlabel("time (ms)")
-            ax.grid(True, which="both", alpha=0.3)
-        axes[0].set_ylabel("%s (geometric mean over scenes)" % m.upper())
-        axes[-1].legend(fontsize=6)
-        fig.tight_layout()
-        save_figure(fig, a.fig, dpi=110)
+        figure(by, alphas, curve, shown, m, a.fig)
+
+
+def figure(by, alphas, curve, shown, m, path):
+    """Error against time per alpha (a panel each), in the suite's style:
+    the MC curve with N beside its points, each method in its fixed colour
+    and marker, MCI at equal time hollow. Written as PNG and PDF."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import style
+    style.use()
+    pw = min(2.2, (style.TEXT_WIDTH - 0.7) / len(alphas))
+    fig, axes = plt.subplots(1, len(alphas), figsize=(0.7 + pw * len(alphas), 0.6 + 0.9 * pw), sharey=True,
+                             squeeze=False)
+    axes = axes[0]
+    for ax, x in zip(axes, alphas):
+        pts = [(int(l.split("=")[1]), gmean([r["time_ms"]["median"] for r in by[(x, l)]]),
+                gmean([r.get(m) for r in by[(x, l)]])) for l in curve if (x, l) in by]
+        if pts:
+            ax.plot([p[1] for p in pts], [p[2] for p in pts], **style.plot_kw(style.CURVE))
+            for i, (n, t, e) in enumerate(pts):
+                if len(pts) <= 6 or i % 2 == 0 or i == len(pts) - 1:
+                    ax.annotate(str(n), (t, e), xytext=(2, 2), textcoords="offset points", color="0.25")
+        for l in shown:
+            if l in curve or (x, l) not in by:
+                continue
+            t = gmean([r["time_ms"]["median"] for r in by[(x, l)]])
+            e = gmean([r.get(m) for r in by[(x, l)]])
+            ax.plot([t], [e], **style.plot_kw(l))
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_title("alpha %g" % x)
+        ax.set_xlabel("time (ms)")
+    axes[0].set_ylabel("%s (geometric mean over scenes)" % m.upper())
+    handles = {}
+    for ax in axes:
+        for hd, lb in zip(*ax.get_legend_handles_labels()):
+            handles.setdefault(lb, hd)
+    names = sorted(handles, key=style.order)
+    if curve:
+        names_l = [style.wrap(n if n != style.CURVE else "MCI curve (light sampling; N %s..%s at the points)" %
+                              (curve[0].split("=")[1], curve[-1].split("=")[1])) for n in names]
+    else:
+        names_l = [style.wrap(n) for n in names]
+    W = fig.get_figwidth()
+    fig.legend([handles[n] for n in names], names_l, loc="upper center", bbox_to_anchor=(0.5, 0.0),
+               ncol=style.legend_columns(names_l, W))
+    fig.subplots_adjust(left=0.6 / W, right=1 - 0.05 / W, bottom=0.45 / fig.get_figheight(), wspace=0.08)
+    style.save(fig, path)
 
 
 if __name__ == "__main__":

@@ -7,23 +7,38 @@ namespace lb::experiments::report_page {
 
 inline constexpr const char* kCss = R"CSS(
 body { font: 14px/1.4 system-ui, sans-serif; margin: 1em 2em; color: #222; background: #fff; }
+@media (max-width: 900px) { body { margin: 0.5em 0.8em; } }
 h1 { font-size: 1.5em; } h2 { font-size: 1.2em; margin-top: 1.6em; }
-table { border-collapse: collapse; margin: 0.5em 0; }
-th, td { border: 1px solid #ccc; padding: 2px 6px; text-align: right; }
+p, figcaption, li, h1, h2 { overflow-wrap: anywhere; }
+/* A table is its own scrolling box, never wider than the page; its first
+   column (the row's key: luminaire or method) stays in view while the
+   others scroll under it. */
+table { border-collapse: separate; border-spacing: 0; margin: 0.5em 0; display: block; width: fit-content;
+        max-width: 100%; overflow-x: auto; border-top: 1px solid #ccc; border-left: 1px solid #ccc; }
+th, td { border-right: 1px solid #ccc; border-bottom: 1px solid #ccc; padding: 2px 6px; text-align: right;
+         white-space: nowrap; }
+thead th { white-space: normal; overflow-wrap: anywhere; min-width: 4em; max-width: 16em; vertical-align: bottom; }
+th:first-child, td:first-child { position: sticky; left: 0; z-index: 1; background: #fff;
+                                 box-shadow: 1px 0 0 #ccc; }
+table.info td { white-space: normal; overflow-wrap: anywhere; }
 td:first-child, th:first-child, table.info td, table.info th { text-align: left; }
 table.sortable th { cursor: pointer; background: #f0f0f0; user-select: none; }
 table.sortable th[data-dir="asc"]::after { content: " \25B2"; }
 table.sortable th[data-dir="desc"]::after { content: " \25BC"; }
-table.sortable tbody tr:hover { background: #f6f6ff; }
+table.sortable tbody tr:hover td { background: #f6f6ff; }
 code { background: #f3f3f3; padding: 0 2px; }
 nav { margin: 0.8em 0; }
-figure { display: inline-block; margin: 0.5em; } figure img { max-width: 100%; }
+/* Plots scale to the page: one per row, at most their own width. */
+figure { display: block; margin: 0.8em 0; max-width: 100%; }
+figure img { display: block; max-width: 100%; height: auto; }
 figcaption { font-size: 0.85em; color: #555; }
 #lbv .ctl { display: flex; flex-wrap: wrap; gap: 0.4em 1.2em; align-items: center; margin-bottom: 0.5em; }
 #lbv .ctl button { font: inherit; padding: 1px 8px; }
 #lbv .ctl button.on { background: #333; color: #fff; }
-#lbCanvas { border: 1px solid #888; image-rendering: pixelated; cursor: pointer; background: #000; }
-#lbCap { margin: 0.3em 0; font-weight: 600; }
+#lbv select { max-width: 100%; }
+#lbCanvas { border: 1px solid #888; image-rendering: pixelated; cursor: pointer; background: #000; max-width: 100%;
+            height: auto; }
+#lbCap { margin: 0.3em 0; font-weight: 600; overflow-wrap: anywhere; }
 #lbv .help { color: #555; font-size: 0.9em; max-width: 60em; }
 )CSS";
 

@@ -26,11 +26,15 @@ struct Picture {
 };
 
 // Colours of the pictures. Orange: too bright; blue: too dark; white: no error
-// (thesis 6.2, Fig. 6.5). Magenta marks a non-finite test pixel in every
-// picture, so that it is seen and never passes for black or white.
+// (thesis 6.2, Fig. 6.5). The two ends have the same CIELAB lightness (L* 54.2
+// and 54.7), so that errors of equal size look equally strong on either side,
+// and stay apart under protan, deutan and tritan colour vision (orange turns
+// olive or pink, blue stays blue; tests/metrics/test_tonemap.cpp). Magenta
+// marks a non-finite test pixel in every picture, so that it is seen and never
+// passes for black or white.
 inline constexpr Rgb8 kWhite{255, 255, 255};
-inline constexpr Rgb8 kOrange{255, 128, 0};
-inline constexpr Rgb8 kBlue{0, 102, 255};
+inline constexpr Rgb8 kOrange{213, 94, 0};
+inline constexpr Rgb8 kBlue{0, 128, 255};
 inline constexpr Rgb8 kNonFinite{255, 0, 255};
 
 // Display value in [0, 1] of irradiance E: L / (1 + L) with L = k E (thesis
@@ -50,9 +54,10 @@ double defaultK(const Image& reference);
 // Grey picture of E tone mapped with k; non-finite pixels in kNonFinite.
 Picture tonemapPicture(const Image& E, double k);
 
-// Colour of a signed error d = A - R: white at 0, blending linearly to orange
-// at d = +overBound and to blue at d = -underBound (both > 0, magnitudes in
-// lux), saturated beyond. A zero bound means nothing to show on that side:
+// Colour of a signed error d = A - R: white at 0, blending to orange at d =
+// +overBound and to blue at d = -underBound (both > 0, magnitudes in lux),
+// saturated beyond; the blend is linear in CIELAB (perceptually uniform: equal
+// steps of |d| are equal colour differences, lightness falls linearly). A zero bound means nothing to show on that side:
 // the colour stays white. kNonFinite for non-finite d.
 Rgb8 errorColour(double d, double overBound, double underBound);
 
