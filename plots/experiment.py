@@ -43,7 +43,7 @@ except ImportError:
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import image_grid  # noqa: E402
 import style  # noqa: E402
-from results_io import load_records, pooled  # noqa: E402
+from results_io import equal_time, load_records, pooled  # noqa: E402
 
 
 def finite(v):
@@ -58,7 +58,7 @@ def role(r):
 
 def label(r):
     if "equal_time_to" in r:
-        return "MCI=" + r.get("equal_time_label", r["equal_time_to"])
+        return "MCI=" + equal_time(r)["label"]
     return r.get("spec", r["method"])
 
 
@@ -234,7 +234,7 @@ def grids(records, dir_, out, max_grids, dpi):
         rows = []
         for r in rs:
             cell = safe(r.get("spec", r["method"])) if role(r) == "method" else \
-                "mci_eq_" + safe(r.get("equal_time_label", ""))
+                "mci_eq_" + safe(equal_time(r)["label"] if "equal_time_to" in r else "")
             prefix = os.path.join(dir_, "images", scene, cell)
             if os.path.exists(prefix + "_err.png"):
                 name = label(r) + (" N={}".format(r["n"]) if "n" in r else "")

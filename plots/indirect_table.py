@@ -17,8 +17,12 @@ experiments/indirect*.json):
 import json
 import lzma
 import math
+import os
 import statistics
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from results_io import equal_time  # noqa: E402
 
 
 def short(lum):
@@ -37,7 +41,7 @@ def load(path):
 
 
 def label_of(r):
-    return r.get("equal_time_label") or r["equal_time_to"]
+    return equal_time(r)["label"]
 
 
 def main(argv):
@@ -112,8 +116,8 @@ def main(argv):
                 continue
             ratios.append(m["nmse"] / p["nmse"])
             wins += m["nmse"] < p["nmse"]
-        ok = sum(bool(p.get("equal_time_ok")) for p in ps)
-        n = statistics.median(p.get("equal_time_n", p.get("n", 0)) for p in ps)
+        ok = sum(bool(equal_time(p)["ok"]) for p in ps)
+        n = statistics.median(equal_time(p)["n"] or 0 for p in ps)
         print(f"| {lab} | {len(ps)} | {ok} ({100 * ok / len(ps):.0f} %) | {wins} of {len(ratios)} | {n:g} | "
               f"{gmean(ratios):.3g} |")
     print()
@@ -124,8 +128,8 @@ def main(argv):
         for p in pairs:
             m = by_cell.get((p["scene"], label_of(p)))
             nm = f"{m['nmse']:.3g}" if m else ""
-            print(f"| {p['scene']} | {label_of(p)} | {nm} | {p.get('equal_time_n', p.get('n'))} | {p['nmse']:.3g} | "
-                  f"{p.get('equal_time_ratio', float('nan')):.3f} |")
+            print(f"| {p['scene']} | {label_of(p)} | {nm} | {equal_time(p)['n']} | {p['nmse']:.3g} | "
+                  f"{equal_time(p)['ratio'] if equal_time(p)['ratio'] is not None else float('nan'):.3f} |")
     return 0
 
 

@@ -147,7 +147,7 @@ def equal_time(r):
     schema 1: flat equal_time_* keys, equal_time_target_ms the method's time)
     or results.csv (equal_time_<key> columns). None for a record that is no
     equal-time partner. The one place the plots read these fields."""
-    if "equal_time_to" not in r:
+    if r.get("role") != "equal_time" and "equal_time_to" not in r and "equal_time" not in r:
         return None
     et = r.get("equal_time")
     if isinstance(et, dict):
@@ -158,10 +158,13 @@ def equal_time(r):
             out["method_ms"] = r.get("equal_time_target_ms")
         if out["partner_ms"] is None:
             out["partner_ms"] = (r.get("time_ms") or {}).get("median")
+        for k in ("ok", "bracketed"):  # as lumibench reads a schema 1 record (results.cpp)
+            if out[k] is None:
+                out[k] = False
     if out["n"] is None:
         out["n"] = r.get("n")
     if out["label"] is None:
-        out["label"] = r["equal_time_to"]
+        out["label"] = r.get("equal_time_to")
     return out
 
 

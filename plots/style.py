@@ -144,7 +144,8 @@ def series_of(r):
     if r.get("role") == "mci_curve":
         return CURVE
     if r.get("equal_time_to") or r.get("role") == "equal_time":
-        return PARTNER + (r.get("equal_time_label") or r.get("equal_time_to") or "?")
+        et = (r.get("equal_time") or {}) if isinstance(r.get("equal_time"), dict) else {}
+        return PARTNER + (et.get("label") or r.get("equal_time_label") or r.get("equal_time_to") or "?")
     return r.get("spec") or r.get("method", "?")
 
 

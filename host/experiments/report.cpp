@@ -438,9 +438,11 @@ Table mainTable(const results::Results& doc, const std::vector<std::string>& col
         if (kinds) row.insert(row.begin() + 1, Cell{mdLiteral(std::get<1>(k))});
         std::map<std::string, double> value;
         for (const auto& [col, acc] : m) value[col] = metrics::minimisable(metrics::pooled(acc.parts), key);
-        double best = INFINITY;
+        double best = INFINITY;  // bold where there is a choice: two values or more
+        int finite = 0;
         for (const auto& [col, v] : value)
-            if (std::isfinite(v)) best = std::min(best, v);
+            if (std::isfinite(v)) best = std::min(best, v), ++finite;
+        if (finite < 2) best = NAN;
         for (const auto& col : cols) {
             auto it = m.find(col);
             if (it == m.end()) {

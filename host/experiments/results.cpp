@@ -627,6 +627,45 @@ std::string csvValue(const json& v)
     return csvField(v.dump());
 }
 
+// A key beside the fixed columns: a single value, or a short list of numbers
+// (the specular scene's eye) written as its JSON text; objects and longer
+// lists stay out.
+bool flatValue(const json& v)
+{
+    if (!v.is_structured()) return true;
+    if (!v.is_array() || v.size() > 4) return false;
+    for (const auto& x : v)
+        if (!x.is_number()) return false;
+    return true;
+}
+
+// The columns of results.csv beyond the fixed head: what some record has.
+struct CsvColumns {
+    std::vector<std::string> metrics;
+    std::set<std::string> params, extras, intervals;
+};
+
+CsvColumns csvColumns(const Results& doc)
+{
+    CsvColumns c;
+    const json metricKeys = metrics::Metrics{};
+    for (auto it = metricKeys.begin(); it != metricKeys.end(); ++it) c.metrics.push_back(it.key());
+    for (const auto& r : doc.records) {
+        for (const auto& kv : r.ci95) c.intervals.insert(kv.first);
+        for (auto it = r.params.begin(); it != r.params.end(); ++it) c.params.insert(it.key());
+        for (const json* o : {&r.extra, &r.sceneKeys})
+            if (o->is_object())
+                for (auto it = o->begin(); it != o->end(); ++it)
+                    if (flatValue(it.value()) && it.key() != "spec" && it.key() != "role" && it.key() != "scene")
+                        c.extras.insert(it.key());
+    }
+    // a key of `extra` named like a column of its own (a version 1 record's
+    // equal_time_ok, ...) is that column's, not a second one
+    for (const char* k : kEqualTimeCsv) c.extras.erase(std::string("equal_time_") + k);
+    c.extras.erase("seeds");
+    return c;
+}
+
 }  // namespace
 
 std::string toCsv(const Results& doc)
@@ -635,28 +674,9 @@ std::string toCsv(const Results& doc)
         "method",      "spec",        "role",         "scene",       "luminaire", "height",
         "rotation",    "res",         "precision",    "device",      "driver",    "time_ms_median",
         "time_ms_min", "time_ms_max", "time_ms_reps", "time_ms_res", "time_ms_cv"};
-    std::vector<std::string> metricCols;
-    const json metricKeys = metrics::Metrics{};
-    for (auto it = metricKeys.begin(); it != metricKeys.end(); ++it) metricCols.push_back(it.key());
-    // Other keys: a single value, or a short list of numbers (the specular
-    // scene's eye) written as its JSON text; objects and longer lists stay out.
-    auto flat = [](const json& v) {
-        if (!v.is_structured()) return true;
-        if (!v.is_array() || v.size() > 4) return false;
-        for (const auto& x : v)
-            if (!x.is_number()) return false;
-        return true;
-    };
-    std::set<std::string> params, extras, intervals;
-    for (const auto& r : doc.records) {
-        for (const auto& kv : r.ci95) intervals.insert(kv.first);
-        for (auto it = r.params.begin(); it != r.params.end(); ++it) params.insert(it.key());
-        for (const json* o : {&r.extra, &r.sceneKeys})
-            if (o->is_object())
-                for (auto it = o->begin(); it != o->end(); ++it)
-                    if (flat(it.value()) && it.key() != "spec" && it.key() != "role" && it.key() != "scene")
-                        extras.insert(it.key());
-    }
+    const CsvColumns c = csvColumns(doc);
+    const auto& [metricCols, params, extras, intervals] = c;
+    const auto flat = flatValue;
     std::vector<std::string> cols = head;
     cols.insert(cols.end(), metricCols.begin(), metricCols.end());
     cols.push_back("seeds");

@@ -73,9 +73,11 @@ Record rec(const std::string& spec, const std::string& role, double rotation, co
     if (role == "equal_time") {
         r.equal_time_to = "cubature";
         r.n = 4;
-        r.extra["equal_time_label"] = "cubature";
-        r.extra["equal_time_ratio"] = 1.02;
-        r.extra["equal_time_ok"] = true;
+        results::EqualTime et;
+        et.label = "cubature";
+        et.ratio = 1.02;
+        et.ok = true;
+        r.equalTime = et;
     }
     return r;
 }
@@ -96,6 +98,8 @@ TEST_F(Report, CsvHasOneFlatRowPerRecordAndLoadsWithPandas)
     results::Results doc;
     doc.records = {rec("cubature", "method", 1.5, ref, a), rec("mc:n=4", "equal_time", 1.5, ref, ramp(8, 0.5))};
     doc.records[0].extra["stats"] = {{"form", "straight-line"}};  // objects stay out of the table
+    doc.records[1].seeds = 8;  // a mean over seeds: its interval as two columns
+    doc.records[1].ci95["nmse"] = {0.25, 0.75};
     doc.records[1].error.flip = NAN;  // undefined: an empty field
     doc.records[0].sceneKeys = {{"scene_kind", "specular"}, {"alpha", 0.25}, {"eye", {0, 4, 2}}};  // columns too
     const std::string csv = results::toCsv(doc);
@@ -105,11 +109,12 @@ TEST_F(Report, CsvHasOneFlatRowPerRecordAndLoadsWithPandas)
                          0),
               0u)
         << head;
-    for (const char* c :
-         {",nmse,", ",flip,", ",grad_nmse,", ",equal_time_to,", ",n,", ",param_n,", ",param_pattern,",
-          ",param_triangulation,", ",equal_time_ratio", ",equal_time_ok", ",scene_kind", ",alpha,", ",eye,"})
+    for (const char* c : {",nmse,", ",flip,", ",grad_nmse,", ",equal_time_to,", ",n,", ",param_n,", ",param_pattern,",
+                          ",param_triangulation,", ",equal_time_ratio", ",equal_time_ok", ",scene_kind", ",alpha,",
+                          ",eye,", ",seeds,", ",nmse_ci95_lo,nmse_ci95_hi,", ",equal_time_partner_ms,", ",time_ms_cv,"})
         EXPECT_NE(head.find(c), std::string::npos) << c << " in " << head;
     EXPECT_EQ(head.find("stats"), std::string::npos) << head;
+    EXPECT_EQ(head.find("equal_time_ok"), head.rfind("equal_time_ok")) << "one column per field: " << head;
     EXPECT_NE(csv.find("\"A, \"\"quoted\"\".ldt\""), std::string::npos) << csv;
     EXPECT_NE(csv.find(",\"[0,4,2]\","), std::string::npos) << csv;  // a short list: its JSON text
     EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3);
@@ -137,6 +142,7 @@ assert df["param_triangulation"][0] == "fan"
 assert math.isnan(df["flip"][1])
 assert df["equal_time_to"][1] == "cubature" and df["n"][1] == 4
 assert df["equal_time_ok"][1] == True
+assert df["seeds"].tolist() == [1, 8] and df["nmse_ci95_lo"][1] == 0.25 and math.isnan(df["nmse_ci95_hi"][0])
 assert df["scene_kind"][0] == "specular" and df["alpha"][0] == 0.25 and df["eye"][0] == "[0,4,2]"
 print("pandas ok", df.shape)
 )PY";

@@ -320,21 +320,27 @@ TEST_F(ExperimentRun, RecordsAreSaneAndAnInterruptedRunResumes)
             // N_eq (with its fractional part `extra`, where integers could
             // only bracket the method) is the timed candidate whose paired
             // ratio is closest to 1
-            const double ratio = r.extra["equal_time_ratio"].get<double>();
+            ASSERT_TRUE(r.equalTime.has_value()) << r.key();
+            const results::EqualTime& et = *r.equalTime;
+            const double ratio = et.ratio;
             const double extra = r.params.value("extra", 0.0);
             EXPECT_GE(extra, 0.0);
             EXPECT_LT(extra, 1.0);
-            EXPECT_DOUBLE_EQ(r.extra["equal_time_n"].get<double>(), double(*r.n) + extra) << r.key();
+            EXPECT_DOUBLE_EQ(et.n, double(*r.n) + extra) << r.key();
             bool found = false;
-            for (const auto& c : r.extra["equal_time_candidates"]) {
+            for (const auto& c : et.candidates) {
                 EXPECT_GE(std::fabs(std::log(c["ratio"].get<double>())), std::fabs(std::log(ratio)) - 1e-12);
                 found =
                     found || (c["n"] == *r.n && c.value("extra", 0.0) == extra && c["ratio"].get<double>() == ratio);
             }
             EXPECT_TRUE(found) << r.key();
-            EXPECT_GT(r.extra["equal_time_target_ms"].get<double>(), 0);
+            // the pair's two times come from the same paired rounds
+            EXPECT_GT(et.method_ms, 0);
+            EXPECT_GT(et.partner_ms, 0);
+            EXPECT_NEAR(et.partner_ms / et.method_ms, ratio, 0.5 * ratio) << r.key();
             EXPECT_EQ(r.time_ms.res, 24);  // the experiment's time_res, not the 16 x 16 image
-            eqOk += r.extra["equal_time_ok"].get<bool>();
+            EXPECT_EQ(et.ok, std::fabs(ratio - 1) <= et.tolerance) << r.key();
+            eqOk += et.ok;
         }
     }
     // MC converges on every scene: with the same point set, N = 128 has an
