@@ -3,6 +3,7 @@
 // The page is no wider than the window, tables scroll inside their own box
 // with their first column sticky, and plots are no wider than the page. A
 // page with one over-wide element, measured the same way, fails the check.
+// The first screen holds the answer: the verdict table per method.
 #include "testutil.h"
 
 #include <fmt/format.h>
@@ -11,6 +12,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 
 #include <unistd.h>
@@ -43,6 +45,18 @@ window.addEventListener("load", function () {
   document.querySelectorAll("img, canvas").forEach(function (im) {
     if (im.getBoundingClientRect().width > im.parentElement.getBoundingClientRect().width + 1) r.wideImages++;
   });
+  // the opening verdict table: where it lies in the window, what it says
+  var v = document.querySelector("#verdicts table"), viewer = document.getElementById("viewer");
+  r.height = window.innerHeight;
+  if (v) {
+    var box = v.getBoundingClientRect(), text = function (e) { return e.textContent.trim(); };
+    r.verdicts = { top: box.top, bottom: box.bottom,
+      heads: Array.prototype.map.call(v.querySelectorAll("thead th"), text),
+      rows: Array.prototype.map.call(v.querySelectorAll("tbody tr"), function (tr) {
+        return Array.prototype.map.call(tr.children, text); }),
+      links: Array.prototype.map.call(v.querySelectorAll("a"), function (a) { return a.getAttribute("href"); }),
+      beforeViewer: viewer ? (v.compareDocumentPosition(viewer) & Node.DOCUMENT_POSITION_FOLLOWING) !== 0 : null };
+  }
   var out = document.createElement("div");
   out.hidden = true;
   out.id = "lbprobe";
@@ -94,7 +108,18 @@ struct Browser {
     }
 };
 
-TEST(ReportLayout, PageFitsTheWindowAt800And1400Px)
+// The matched methods of the equal-time partners in results.json, with
+// their number of scenes: the rows the verdict table must have.
+std::map<std::string, int> equalTimeMethods(const fs::path& results)
+{
+    std::map<std::string, int> rows;
+    const json doc = json::parse(slurp(results));
+    for (const auto& r : doc["records"])
+        if (r.contains("equal_time")) ++rows[r["equal_time"]["label"].get<std::string>()];
+    return rows;
+}
+
+TEST(ReportLayout, PageFitsTheWindowAt800And1400PxAndOpensWithTheVerdicts)
 {
     const fs::path dir = test::freshDir("report-layout");
     fs::copy_file(test::sourceDir() + "/tests/plots/data/results.json", dir / "results.json");
@@ -102,6 +127,8 @@ TEST(ReportLayout, PageFitsTheWindowAt800And1400Px)
     const std::string out = test::shellOutput(test::binary() + " report '" + dir.string() + "' 2>&1", &code);
     ASSERT_EQ(code, 0) << out;
     ASSERT_TRUE(fs::exists(dir / "report.html")) << out;
+    const std::map<std::string, int> expectRows = equalTimeMethods(dir / "results.json");
+    ASSERT_GE(expectRows.size(), 2u);  // the data has equal-time partners of several methods
     const Browser browser;
     if (browser.exe.empty())
         GTEST_SKIP() << "no Chromium on this machine (Debian: apt-get install chromium; scripts/install-deps.sh "
@@ -123,6 +150,32 @@ TEST(ReportLayout, PageFitsTheWindowAt800And1400Px)
         if (width == 800) {
             EXPECT_GE(m["scrolling"].get<int>(), 1) << m.dump();
         }
+        // The answer on the first screen: the verdict table lies wholly inside
+        // the window's viewport (857 px high of the 1000 px window; the table
+        // ends at 378 px at 800 px wide, 339 px at 1400), before the pictures,
+        // one row per method with equal-time partners, wins + ties + losses =
+        // scenes.
+        ASSERT_TRUE(m.contains("verdicts")) << width << " px: no #verdicts table: " << m.dump();
+        const json& v = m["verdicts"];
+        EXPECT_GE(v["top"].get<double>(), 0.0) << v.dump();
+        EXPECT_LE(v["bottom"].get<double>(), m["height"].get<double>())
+            << width << " px: below the first screen " << v.dump();
+        EXPECT_EQ(v["beforeViewer"], true) << v.dump();
+        EXPECT_EQ(v["heads"],
+                  json({"method", "scenes", "wins", "ties", "losses", "NMSE ratio (geometric mean)", "loses at"}))
+            << v.dump();
+        ASSERT_EQ(v["rows"].size(), expectRows.size()) << v.dump();
+        for (const auto& row : v["rows"]) {
+            const std::string method = row[0].get<std::string>();
+            ASSERT_TRUE(expectRows.count(method)) << method << " " << v.dump();
+            EXPECT_EQ(std::stoi(row[1].get<std::string>()), expectRows.at(method)) << method;
+            EXPECT_EQ(std::stoi(row[2].get<std::string>()) + std::stoi(row[3].get<std::string>()) +
+                          std::stoi(row[4].get<std::string>()),
+                      expectRows.at(method))
+                << method << " " << row.dump();
+        }
+        for (const auto& href : v["links"])  // a lost scene opens its viewer on the MCI picture
+            EXPECT_EQ(href.get<std::string>().rfind("#scene=", 0), 0u) << href;
     }
     // The measurement can fail: one element wider than the window.
     std::ofstream(dir / "wide.html") << "<!DOCTYPE html><html><body><div style=\"width:1200px\">x</div></body></html>";

@@ -312,6 +312,21 @@ TEST_F(ExperimentRun, RecordsAreSaneAndAnInterruptedRunResumes)
         // exactly 0 would mean the reference was compared with itself.
         EXPECT_GT(r.error.nmse, 0) << r.key();
         EXPECT_TRUE(std::isfinite(r.error.nmse)) << r.key();
+        // MC's error is a draw: its record is the mean over the default 8
+        // seeds with a 95 % interval around it; a method without a seed is
+        // one deterministic image (timed once either way).
+        if (r.method == "mc") {
+            EXPECT_EQ(r.seeds, 8) << r.key();
+            ASSERT_TRUE(r.ci95.count("nmse")) << r.key();
+            const auto& ci = r.ci95.at("nmse");
+            EXPECT_LE(ci[0], r.error.nmse) << r.key();
+            EXPECT_GE(ci[1], r.error.nmse) << r.key();
+            EXPECT_LT(ci[0], ci[1]) << r.key() << ": eight seeds of a random set give eight errors";
+            EXPECT_TRUE(r.ci95.count("flip") == flipOk) << r.key();
+        } else {
+            EXPECT_EQ(r.seeds, 1) << r.key();
+            EXPECT_TRUE(r.ci95.empty()) << r.key();
+        }
         if (r.equal_time_to) {
             EXPECT_EQ(r.method, "mc");
             ASSERT_TRUE(r.n.has_value());
