@@ -1,5 +1,6 @@
 #include "bench/bench.h"
 
+#include "equaltime/equaltime.h"
 #include "experiments/results.h"
 #include "methods/cubature_options.h"
 #include "methods/registry.h"
@@ -13,6 +14,7 @@
 
 #include <cmath>
 #include <map>
+#include <memory>
 #include <sstream>
 
 namespace lb::bench {
@@ -164,6 +166,7 @@ nlohmann::json samplesPerSecond(Bench& b)
 struct McFit {
     double t0 = 0, slope = 0;
     double mc8 = 0;  // t(8), measured
+    equaltime::Curve points;  // (N, ms) as measured
     nlohmann::json json;
 };
 
@@ -177,6 +180,7 @@ McFit mcFit(Bench& b)
         double t = b.mc(k);
         if (k == 8) f.mc8 = t;
         pts.push_back({k, t});
+        f.points.emplace_back(k, t);
         sx += k, sy += t, sxx += double(k) * k, sxy += k * t;
     }
     double m = double(ns.size());
@@ -214,21 +218,40 @@ double methodTimes(Bench& b, double naiveMs, const McFit& fit, nlohmann::json& d
     return ms.at("cubature");
 }
 
-// 4. Cubature against MC 8, and its equal-time sample count: from the fit,
-// then one secant correction on the measured t(N) (the fit is only near
-// linear, and the machine's load drifts).
+// 4. Cubature against MC 8, and its equal-time sample count by the runner's
+// search (equaltime::search): aimed on the measured t(N), decided by the
+// paired rounds of cubature and MC, whose two medians are the pair's times.
 nlohmann::json cubatureAgainstMc(Bench& b, double cub, const McFit& fit)
 {
-    int neq = std::max(1, int(std::lround((cub - fit.t0) / fit.slope)));
-    double verify = b.mc(neq);
-    int fitN = neq;
-    if (verify > 0 && std::fabs(verify - cub) > 0.1 * cub) {
-        neq = std::max(1, int(std::lround(neq * cub / verify)));
-        verify = b.mc(neq);
-    }
-    double cr = cub / fit.mc8;
-    return {{"time_ms", cub},  {"mc8_ms", fit.mc8},   {"ratio", cr},         {"target", 1.0},
-            {"ok", cr <= 1.0}, {"equal_time_n", neq}, {"verify_ms", verify}, {"fit_n", fitN}};
+    methods::Prepared pc(b.rt, b.table, b.scene, methods::parseSpec("cubature"), methods::Precision::Float);
+    pc.setLocal(b.opt.lx, b.opt.ly);
+    equaltime::Sides sides;
+    sides.method = [&] { return pc.launchMs(); };
+    sides.mc = [&](long n, double extra) -> equaltime::Launch {
+        std::string spec = fmt::format("mc:n={}", n) + (extra > 0 ? fmt::format(",extra={:.3f}", extra) : "");
+        auto p = std::make_shared<methods::Prepared>(b.rt, b.table, b.scene, methods::parseSpec(spec),
+                                                     methods::Precision::Float);
+        p->setLocal(b.opt.lx, b.opt.ly);
+        return [p] { return p->launchMs(); };
+    };
+    sides.fractional = methods::parseSpec("mc").has("extra");
+    equaltime::Options o;
+    o.rounds = std::max(b.opt.reps, 11);
+    const equaltime::Result q = equaltime::search(sides, o, fit.points, cub);
+    const double cr = cub / fit.mc8;
+    return {{"time_ms", cub},
+            {"mc8_ms", fit.mc8},
+            {"ratio", cr},
+            {"target", 1.0},
+            {"ok", cr <= 1.0},
+            {"equal_time_n", q.n},
+            {"equal_time_extra", q.extra},
+            {"verify_ms", q.partner.median_ms},
+            {"paired_ms", q.method.median_ms},
+            {"equal_time_ratio", q.ratio},
+            {"equal_time_ok", q.ok},
+            {"equal_time_bracketed", q.bracketed},
+            {"equal_time_candidates", q.candidates}};
 }
 
 // 5. The fair-equal-time goals: every variant in its fastest form before
@@ -399,9 +422,11 @@ std::string format(const nlohmann::json& d)
     o << fmt::format("MC t(N) = {:.3f} ms + {:.4f} ms/sample\n", f["t0_ms"].get<double>(),
                      f["ms_per_sample"].get<double>());
     const auto& c = d["cubature"];
-    o << fmt::format("cubature / MC 8 = {:.2f} (target <= 1: {}); equal-time MC N = {} (t = {:.3f} ms vs {:.3f} ms)\n",
-                     c["ratio"].get<double>(), c["ok"].get<bool>() ? "met" : "MISSED", c["equal_time_n"].get<int>(),
-                     c["verify_ms"].get<double>(), c["time_ms"].get<double>());
+    o << fmt::format("cubature / MC 8 = {:.2f} (target <= 1: {}); equal-time MC N = {:g} (paired: {:.3f} ms vs "
+                     "cubature {:.3f} ms)\n",
+                     c["ratio"].get<double>(), c["ok"].get<bool>() ? "met" : "MISSED",
+                     c["equal_time_n"].get<double>() + c.value("equal_time_extra", 0.0), c["verify_ms"].get<double>(),
+                     c.value("paired_ms", c["time_ms"].get<double>()));
     if (d.contains("goals"))
         for (const auto& g : d["goals"])
             o << fmt::format("{:<36} {:>6.2f} (target <= {:g}: {})\n", g["name"].get<std::string>(),

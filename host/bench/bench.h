@@ -29,7 +29,10 @@ struct Options {
 //   mc: {n, naive_ms, fast_ms, fast_exact_ms, general_lut_ms, naive_sps, fast_sps, ratio, target 10, ok},
 //   methods: [{method, time_ms, ns_per_pixel, defines}],
 //   mc_fit: {points [[n, ms]], t0_ms, ms_per_sample},
-//   cubature: {time_ms, mc8_ms, ratio, target 1, ok, equal_time_n, verify_ms}.
+//   cubature: {time_ms, mc8_ms, ratio, target 1, ok, and equaltime::search's
+//     equal_time_n (+ equal_time_extra), verify_ms and paired_ms (MC's and
+//     cubature's medians over the same paired rounds), equal_time_ratio,
+//     equal_time_ok, equal_time_bracketed, equal_time_candidates}.
 nlohmann::json run(ocl::Runtime& rt, const photometry::Table& table, const Scene& scene, const Options& opt);
 
 // Human-readable table of run()'s document.

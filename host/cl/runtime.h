@@ -95,8 +95,9 @@ public:
     // methods::Prepared::launchMs). Timing::samples_ms keeps the rounds in
     // order, so ratios can be taken round by round and a shared machine's
     // drift hits every launch alike.
-    std::vector<Timing> timeInterleaved(const std::vector<std::function<double()>>& launches, int reps = 5,
-                                        int warmup = 1);
+    // Needs no device of its own (the launches time themselves): static.
+    static std::vector<Timing> timeInterleaved(const std::vector<std::function<double()>>& launches, int reps = 5,
+                                               int warmup = 1);
 
 private:
     DeviceInfo info_;

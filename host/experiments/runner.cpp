@@ -1,5 +1,6 @@
 #include "experiments/runner.h"
 
+#include "equaltime/equaltime.h"
 #include "experiments/results.h"
 #include "methods/analytic.h"
 #include "methods/render.h"
@@ -30,41 +31,6 @@ namespace lb::experiments {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-long solveN(std::vector<std::pair<long, double>> pts, double targetMs)
-{
-    std::sort(pts.begin(), pts.end());
-    auto clampN = [](double n) {
-        return static_cast<long>(std::clamp(std::isfinite(n) ? std::round(n) : 1.0, 1.0, double(1 << 20)));
-    };
-    if (pts.empty()) return 1;
-    if (pts.size() == 1) return clampN(double(pts[0].first) * targetMs / pts[0].second);  // t proportional to N
-    if (targetMs <= pts.front().second)
-        return pts.front().first > 1 ? clampN(pts.front().first * targetMs / pts.front().second) : 1;
-    // The first segment whose end reaches the target, else the last one (extrapolated).
-    size_t i = 1;
-    while (i + 1 < pts.size() && pts[i].second < targetMs) ++i;
-    auto [n0, t0] = pts[i - 1];
-    auto [n1, t1] = pts[i];
-    if (!(t1 > t0)) return clampN(targetMs <= t1 ? double(n1) : double(n1) * targetMs / t1);  // flat by noise
-    return clampN(double(n0) + (targetMs - t0) * double(n1 - n0) / (t1 - t0));
-}
-
-// t at n on the piecewise-linear curve through pts (sorted by N inside),
-// extrapolated proportionally beyond its ends.
-double interpolateMs(std::vector<std::pair<long, double>> pts, long n)
-{
-    std::sort(pts.begin(), pts.end());
-    if (pts.empty()) return NAN;
-    if (n <= pts.front().first) return pts.front().second * double(n) / double(pts.front().first);
-    for (size_t i = 1; i < pts.size(); ++i)
-        if (n <= pts[i].first) {
-            auto [n0, t0] = pts[i - 1];
-            auto [n1, t1] = pts[i];
-            return t0 + (t1 - t0) * double(n - n0) / double(n1 - n0);
-        }
-    return pts.back().second * double(n) / double(pts.back().first);
-}
 
 std::string cellImageName(const std::string& role, const std::string& spec)
 {
@@ -248,208 +214,56 @@ methods::MethodSpec mcAt(const Experiment& e, long n, double extra = 0)
     return methods::parseSpec(s, e.kind());
 }
 
-// The Ns one try of the equal-time search times: the aimed N and its
-// neighbour towards the target on the curve pts (first try), or the aimed N
-// and both neighbours (later tries); none measured before, none below 1.
-std::vector<long> triesAround(long next, int attempt, const std::vector<std::pair<long, double>>& pts, double tM,
-                              const std::map<long, double>& measured)
-{
-    long n1 = std::max(1L, next);
-    std::vector<long> tries = {n1};
-    if (attempt == 0)
-        tries.push_back(interpolateMs(pts, n1) > tM ? n1 - 1 : n1 + 1);
-    else
-        tries.insert(tries.end(), {n1 - 1, n1 + 1});
-    std::vector<long> cand;
-    for (long n : tries)
-        if (n >= 1 && !measured.count(n) && std::find(cand.begin(), cand.end(), n) == cand.end()) cand.push_back(n);
-    return cand;
-}
-
-// The search for MC's N at the time of one method (docs/design.md section 6): candidates
-// timed against the method in alternating rounds, the ratio of each the
-// median of the rounds' ratios; the best is the closest to 1 in log.
-struct EqualTimeSearch {
-    const SceneRun& sr;
-    Scene ts;  // the scene at the experiment's time_res
-    methods::Prepared pm;  // the method
-    std::map<long, std::unique_ptr<methods::Prepared>> prepared;  // MC by N, built once
-    json candJson = json::array();
-    long bestN = 0;
-    double ratio = NAN;
-    std::vector<ocl::Timing> bestT;  // (method, MC at bestN) of bestN's rounds
-    std::map<long, double> measured;  // N -> median round ratio
-    long partnerN = 0;  // the partner's N and extra (fractional)
-    double partnerExtra = 0;
-
-    EqualTimeSearch(const SceneRun& run, const Cell& c)
-        : sr(run), ts(timeScene(run)), pm(run.rt, run.table, ts, c.parsed, run.prec)
-    {
-    }
-    static Scene timeScene(const SceneRun& run)
-    {
-        Scene s = run.scene;
-        if (run.e.timeRes > 0) s.res = run.e.timeRes;
-        return s;
-    }
-
-    // The method and each of mcs launched in alternation (docs/design.md section 6: ratios within one run).
-    std::vector<ocl::Timing> pairedRounds(const std::vector<methods::Prepared*>& mcs)
-    {
-        // whole frames: a multi-pass method's passes count as in its cell
-        std::vector<std::function<double()>> launches = {[&] { return pm.launchMs(); }};
-        for (methods::Prepared* p : mcs) launches.push_back([p] { return p->launchMs(); });
-        return sr.rt.timeInterleaved(launches, sr.e.equalTimeRounds, 1);
-    }
-    // The median of the rounds' ratios of MC k (1-based in tt) over the method.
-    static double medianRatio(const std::vector<ocl::Timing>& tt, size_t k)
-    {
-        std::vector<double> rr;
-        for (size_t ri = 0; ri < tt[0].samples_ms.size(); ++ri)
-            rr.push_back(tt[k].samples_ms[ri] / tt[0].samples_ms[ri]);
-        return ocl::summarize(rr).median_ms;
-    }
-
-    // Times the candidates against the method in one set of alternating rounds.
-    void time(const std::vector<long>& cand)
-    {
-        std::vector<methods::Prepared*> mcs;
-        for (long n : cand) {
-            auto& p = prepared[n];
-            if (!p) p = std::make_unique<methods::Prepared>(sr.rt, sr.table, ts, mcAt(sr.e, n), sr.prec);
-            mcs.push_back(p.get());
-        }
-        std::vector<ocl::Timing> tt = pairedRounds(mcs);
-        for (size_t k = 0; k < cand.size(); ++k) {
-            double q = medianRatio(tt, k + 1);
-            measured[cand[k]] = q;
-            candJson.push_back({{"n", cand[k]}, {"ratio", q}, {"ms", tt[k + 1].median_ms}});
-            if (bestN == 0 || std::fabs(std::log(q)) < std::fabs(std::log(ratio))) {
-                bestN = cand[k];
-                ratio = q;
-                bestT = {tt[0], tt[k + 1]};
-            }
-        }
-    }
-
-    // The next aim on the paired ratios themselves: the secant through the
-    // measured points nearest below and above 1 (or the two nearest to 1 when
-    // all lie on one side); none when those below and above are adjacent Ns.
-    std::optional<long> secantAim() const
-    {
-        std::vector<std::pair<long, double>> m(measured.begin(), measured.end());
-        std::sort(m.begin(), m.end(),
-                  [](auto x, auto y) { return std::fabs(std::log(x.second)) < std::fabs(std::log(y.second)); });
-        auto lo = std::find_if(m.begin(), m.end(), [](auto x) { return x.second < 1; });
-        auto hi = std::find_if(m.begin(), m.end(), [](auto x) { return x.second >= 1; });
-        std::pair<long, double> p0 = m[0], p1 = m.size() > 1 ? m[1] : m[0];
-        if (lo != m.end() && hi != m.end()) p0 = *lo, p1 = *hi;
-        if (lo != m.end() && hi != m.end() && std::abs(p0.first - p1.first) == 1) return std::nullopt;  // bracketed
-        double slope = p1.first != p0.first ? (p1.second - p0.second) / double(p1.first - p0.first) : 0;
-        long next = slope > 0 ? std::lround(double(p0.first) + (1 - p0.second) / slope)
-                              : std::lround(double(p0.first) / p0.second);  // t proportional to N
-        return std::clamp(next, 1L, 1L << 20);
-    }
-
-    // Bracketed: the neighbour of N_eq on the other side of 1 was measured
-    // too (or N_eq = 1 is too slow already), so no integer N matches the
-    // method more closely on this device.
-    bool bracketed() const
-    {
-        auto at = [&](long n) { return measured.count(n) ? std::optional<double>(measured.at(n)) : std::nullopt; };
-        return ratio >= 1 ? (bestN == 1 || (at(bestN - 1) && *at(bestN - 1) < 1))
-                          : (at(bestN + 1) && *at(bestN + 1) >= 1);
-    }
-
-    // No integer N within the tolerance, but N and N + 1 bracket the method:
-    // MC's fractional sample count (mc's `extra`, kernels/mc.cl: that share of
-    // the tiles takes N + 1 points; time is linear in it) closes the step.
-    // Aimed by linear interpolation between the paired ratios of N and N + 1,
-    // then by the secant through the nearest measured pair; two tries. Sets
-    // partnerN and partnerExtra (bestN and 0 unless a fraction is closer).
-    void fractional(bool bracketedN)
-    {
-        const Experiment& e = sr.e;
-        partnerN = bestN;
-        partnerExtra = 0;
-        long lo = ratio >= 1 ? bestN - 1 : bestN;
-        if (!(std::abs(ratio - 1) > e.equalTimeTolerance && bracketedN && lo >= 1 && measured.count(lo) &&
-              measured.count(lo + 1) && mcAt(e, lo).has("extra")))
-            return;
-        double f0 = 0, q0 = measured.at(lo), f1 = 1, q1 = measured.at(lo + 1);
-        for (int attempt = 0; attempt < 2 && q1 > q0; ++attempt) {
-            double f = std::round(1000 * std::clamp(f0 + (1 - q0) * (f1 - f0) / (q1 - q0), 0.001, 0.999)) / 1000;
-            methods::Prepared pf(sr.rt, sr.table, ts, mcAt(e, lo, f), sr.prec);
-            std::vector<ocl::Timing> tt = pairedRounds({&pf});
-            double q = medianRatio(tt, 1);
-            candJson.push_back({{"n", lo}, {"extra", f}, {"ratio", q}, {"ms", tt[1].median_ms}});
-            if (std::fabs(std::log(q)) < std::fabs(std::log(ratio))) {
-                partnerN = lo;
-                partnerExtra = f;
-                ratio = q;
-                bestT = tt;
-            }
-            if (std::abs(q - 1) <= e.equalTimeTolerance) break;
-            (q < 1 ? f0 : f1) = f;
-            (q < 1 ? q0 : q1) = q;
-        }
-    }
-};
-
 // The equal-time MCI partner of cell c, whose method took tM ms in its own
-// cell (docs/design.md section 6): MC's N aimed on the measured t(N) (pts: the
-// scene's MC curve, else the experiment's equal_time_fit points timed here),
-// then timed against the method in alternating rounds; while the closest is
-// off by more than the tolerance and not bracketed by a measured neighbour
-// (three tries at most), aimed again by the secant through the paired
-// ratios. The record's extra keys say how it was found
-// (equal_time_candidates, _ratio, _ok, _bracketed).
-results::Record equalTimePartner(const SceneRun& sr, const Cell& c, double tM, std::vector<std::pair<long, double>> pts)
+// cell: equaltime::search (docs/design.md section 6) from the measured t(N)
+// (pts: the scene's MC curve, else the experiment's equal_time_fit points
+// timed here), every kernel at the experiment's time_res; its error image is
+// one more, untimed render at the experiment's res.
+results::Record equalTimePartner(const SceneRun& sr, const Cell& c, double tM, equaltime::Curve pts)
 {
     const Experiment& e = sr.e;
     if (pts.size() < 2) {
         pts.clear();
         for (long n : e.equalTimeFit) pts.emplace_back(n, sr.render(mcAt(e, n)).timing.median_ms);
     }
-    EqualTimeSearch q(sr, c);
-    long next = solveN(pts, tM);  // first aim: the curve
-    for (int attempt = 0; attempt < 3; ++attempt) {
-        std::vector<long> cand = triesAround(next, attempt, pts, tM, q.measured);
-        if (cand.empty()) break;
-        q.time(cand);
-        if (std::abs(q.ratio - 1) <= e.equalTimeTolerance) break;
-        std::optional<long> aim = q.secantAim();
-        if (!aim) break;
-        next = *aim;
-    }
-    const bool bracketed = q.bracketed();  // of the integer N
-    q.fractional(bracketed);
-    // the error image at the experiment's res (its time is the paired one above)
-    auto s1 = mcAt(e, q.partnerN, q.partnerExtra);
+    Scene ts = sr.scene;  // the scene at the experiment's time_res
+    if (e.timeRes > 0) ts.res = e.timeRes;
+    auto method = std::make_shared<methods::Prepared>(sr.rt, sr.table, ts, c.parsed, sr.prec);
+    equaltime::Sides sides;
+    sides.method = [method] { return method->launchMs(); };  // whole frames: a multi-pass method's passes count
+    sides.mc = [&](long n, double extra) -> equaltime::Launch {
+        auto p = std::make_shared<methods::Prepared>(sr.rt, sr.table, ts, mcAt(e, n, extra), sr.prec);
+        return [p] { return p->launchMs(); };
+    };
+    sides.fractional = mcAt(e, 1).has("extra");
+    equaltime::Options opt;
+    opt.tolerance = e.equalTimeTolerance;
+    opt.rounds = e.equalTimeRounds;
+    const equaltime::Result q = equaltime::search(sides, opt, pts, tM);
+    auto s1 = mcAt(e, q.n, q.extra);
     methods::RenderOptions imageOnly;
     imageOnly.reps = 1;
     auto r1 = methods::render(sr.rt, sr.table, sr.scene, s1, sr.prec, imageOnly);
-    r1.timing = q.bestT[1];
-    r1.timeRes = q.ts.res;
-    json fitJson = json::array();
-    for (auto [n, t] : pts) fitJson.push_back({n, t});
+    r1.timing = q.partner;
+    r1.timeRes = ts.res;
     results::Record r = sr.record(s1, r1, c, cellImageName(c.role, c.spec));
     r.equal_time_to = c.parsed.canonical();
-    r.n = q.partnerN;
+    r.n = q.n;
     results::EqualTime et;
     et.label = c.spec;
-    et.n = double(q.partnerN) + q.partnerExtra;  // N + extra: MC's mean sample count
-    et.method_ms = q.bestT[0].median_ms;  // the method and MC in the same paired rounds
-    et.partner_ms = q.bestT[1].median_ms;
-    et.method_cv = q.bestT[0].cv;
-    et.partner_cv = q.bestT[1].cv;
+    et.n = double(q.n) + q.extra;  // N + extra: MC's mean sample count
+    et.method_ms = q.method.median_ms;  // the method and MC in the same paired rounds
+    et.partner_ms = q.partner.median_ms;
+    et.method_cv = q.method.cv;
+    et.partner_cv = q.partner.cv;
     et.ratio = q.ratio;
     et.cell_ms = tM;  // the method's own cell, timed apart
-    et.tolerance = e.equalTimeTolerance;
-    et.ok = std::abs(q.ratio - 1) <= e.equalTimeTolerance;
-    et.bracketed = bracketed;
-    et.candidates = q.candJson;
-    et.fit = fitJson;
+    et.tolerance = opt.tolerance;
+    et.ok = q.ok;
+    et.bracketed = q.bracketed;
+    et.candidates = q.candidates;
+    et.fit = json::array();
+    for (auto [n, t] : pts) et.fit.push_back({n, t});
     r.equalTime = et;
     return r;
 }

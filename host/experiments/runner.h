@@ -27,27 +27,9 @@
 // Each record carries, besides the results.h keys, `spec` (the SPEC as the
 // experiment wrote it, or "mc:n=<N>" for the curve), `role` ("method",
 // "mci_curve" or "equal_time"), `scene` (the scene label) and `build_s`.
-// Equal-time records also carry `equal_time_target_ms` (the matched method's
-// median in the paired rounds below), `equal_time_cell_ms` (its own cell's
-// median), `equal_time_ratio` (the median over the rounds of MC's time over
-// the method's), `equal_time_ok` (|ratio - 1| <= tolerance),
-// `equal_time_bracketed` (N_eq is the closest integer: see below),
-// `equal_time_candidates` ([{n, ratio, ms}]) and `equal_time_fit`
-// ([[N, median ms], ...]).
-//
-// Equal time (docs/design.md section 6): t(N) of MC is measured on the scene's
-// MCI-curve points (or, without a curve, on renders at "equal_time_fit"),
-// N solves t(N) = t_M on their piecewise-linear interpolation (solveN); that
-// N and its neighbour towards t_M are then timed against the method in
-// alternating rounds (ocl::Runtime::timeInterleaved, every kernel at the
-// experiment's time_res), so that the drift of a shared machine hits both
-// sides of each ratio alike; the candidate whose median round ratio is
-// closest to 1 is N_eq. While it is off by more than the tolerance, N is
-// aimed again by the secant through the paired ratios and timed with its
-// neighbours (three tries at most), unless the measured N below and above the
-// method's time are adjacent integers already: then no integer N can match
-// more closely on this device, and the record says `equal_time_bracketed`.
-// Its error image is one more, untimed render.
+// Equal-time partners are found by equaltime::search (equaltime.h) and carry
+// its result as results::EqualTime; methods with a seed are rendered with the
+// experiment's `seeds` (their metrics the mean, with a 95 % interval).
 #pragma once
 
 #include "experiments/experiment.h"
@@ -84,15 +66,5 @@ RunSummary run(const Experiment& e, const RunOptions& opt);
 // digits, '.' and '-' replaced by '_'; "mci_eq_" + that of the matched
 // SPEC for an equal-time partner (role "equal_time").
 std::string cellImageName(const std::string& role, const std::string& spec);
-
-// The equal-time solve on its own (tests): N with t(N) = targetMs on the
-// piecewise-linear interpolation of the measured (N, median ms) points,
-// sorted by N; below the smallest time 1, above the largest extrapolated
-// along the last two points; clamped to [1, 2^20]. Measured MC times are not
-// linear in N over 1..1024 on every device (PoCL: t(128) / t(8) = 31), so a
-// local interpolation beats one global line.
-long solveN(std::vector<std::pair<long, double>> points, double targetMs);
-// t at N on the same interpolation (proportional beyond its ends).
-double interpolateMs(std::vector<std::pair<long, double>> points, long n);
 
 }  // namespace lb::experiments

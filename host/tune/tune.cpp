@@ -65,7 +65,7 @@ struct Case {
     std::shared_ptr<photometry::Table> table;
     Scene scene;
     Image ref;
-    std::vector<CurvePoint> mci;
+    std::vector<equaltime::MetricPoint> mci;
 };
 
 }  // namespace
@@ -90,31 +90,9 @@ double Dim::toUnit(double v) const
     return std::clamp(u, 0.0, 1.0);
 }
 
-double mciMetricAt(const std::vector<CurvePoint>& curveByN, double ms)
+double equalTimeScore(double metric, double ms, const std::vector<equaltime::MetricPoint>& curveByN)
 {
-    if (curveByN.empty()) throw Error("mciMetricAt: empty MCI curve");
-    std::vector<std::pair<double, double>> p;  // (log t, log metric), t increasing
-    double t = 0;
-    for (const auto& c : curveByN) {
-        t = std::max({t, c.ms, 1e-9});
-        const double lt = std::log(t), lm = std::log(std::max(c.metric, 1e-300));
-        if (!p.empty() && lt <= p.back().first)
-            p.back().second = std::min(p.back().second, lm);
-        else
-            p.emplace_back(lt, lm);
-    }
-    const double x = std::log(std::max(ms, 1e-9));
-    if (x <= p.front().first) return std::exp(p.front().second - (x - p.front().first));
-    if (x >= p.back().first) return std::exp(p.back().second - (x - p.back().first));
-    size_t i = 1;
-    while (p[i].first < x) ++i;
-    const double w = (x - p[i - 1].first) / (p[i].first - p[i - 1].first);
-    return std::exp(p[i - 1].second + w * (p[i].second - p[i - 1].second));
-}
-
-double equalTimeScore(double metric, double ms, const std::vector<CurvePoint>& curveByN)
-{
-    return std::log(std::max(metric, 1e-300) / mciMetricAt(curveByN, ms));
+    return std::log(std::max(metric, 1e-300) / equaltime::metricAt(curveByN, ms));
 }
 
 namespace {
@@ -369,15 +347,38 @@ private:
         return ro;
     }
 
-    // MCI's curve on one scene: metric and time at each of mci_n.
-    std::vector<CurvePoint> mciCurve(const Case& c, const std::string& what)
+    // The SPEC of MCI at n samples.
+    methods::MethodSpec mciAt(long n) const
     {
-        std::vector<CurvePoint> out;
+        const auto& k = e_.equalTime;
+        return methods::parseSpec(k.mc + (k.mc.find(':') == std::string::npos ? ":" : ",") + fmt::format("n={}", n),
+                                  e_.sceneKeys.kind);
+    }
+
+    // The method's time on case c's MCI curve clock: timed in `reps`
+    // alternating rounds against MCI at the curve's N nearest `aimMs`, its
+    // time the curve's t(N) over the paired ratio t(MCI N) / t(method).
+    double pairedMs(const Case& c, const methods::MethodSpec& s, double aimMs)
+    {
+        const auto& k = e_.equalTime;
+        equaltime::Curve curve;
+        for (size_t i = 0; i < k.mciN.size(); ++i) curve.emplace_back(k.mciN[i], c.mci[i].ms);
+        const long n = equaltime::solveN(curve, aimMs);
+        Scene ts = c.scene;
+        if (k.timeRes > 0) ts.res = k.timeRes;
+        methods::Prepared pm(rt_, *c.table, ts, s, prec_), mc(rt_, *c.table, ts, mciAt(n), prec_);
+        const auto tt =
+            ocl::Runtime::timeInterleaved({[&] { return pm.launchMs(); }, [&] { return mc.launchMs(); }}, k.reps, 1);
+        return equaltime::interpolateMs(curve, n) / equaltime::medianRatio(tt, 1);
+    }
+
+    // MCI's curve on one scene: metric and time at each of mci_n.
+    std::vector<equaltime::MetricPoint> mciCurve(const Case& c, const std::string& what)
+    {
+        std::vector<equaltime::MetricPoint> out;
         const auto& k = e_.equalTime;
         for (long n : k.mciN) {
-            const std::string spec = k.mc + (k.mc.find(':') == std::string::npos ? ":" : ",") + fmt::format("n={}", n);
-            auto r = methods::render(rt_, *c.table, c.scene, methods::parseSpec(spec, e_.sceneKeys.kind), prec_,
-                                     timedOptions());
+            auto r = methods::render(rt_, *c.table, c.scene, mciAt(n), prec_, timedOptions());
             out.push_back({r.timing.median_ms, metricOf(c.ref, r.image, nullptr)});
         }
         if (!opt_.quiet) {
@@ -431,13 +432,16 @@ private:
             methods::parseSpec(specWith(e_.method, names_, values, e_.sceneKeys.kind), e_.sceneKeys.kind);
         methods::RenderOptions ro;
         ro.reps = 1;  // only the image matters here
-        if (equalTime()) ro = timedOptions();
+        if (equalTime()) {
+            ro = timedOptions();
+            ro.reps = 1;  // the aim of the paired timing below
+        }
         std::vector<Eval> out;
         for (const auto& c : cs) {
             auto r = methods::render(rt_, *c.table, c.scene, s, prec_, ro);
             Eval ev;
             ev.metric = metricOf(c.ref, r.image, &ev.nonfinite);
-            ev.ms = r.timing.median_ms;
+            ev.ms = equalTime() ? pairedMs(c, s, r.timing.median_ms) : r.timing.median_ms;
             ev.score = equalTime() ? equalTimeScore(ev.metric, ev.ms, c.mci) : ev.metric;
             out.push_back(ev);
         }
@@ -558,7 +562,7 @@ void Tuner::setJson(json& s, const std::string& set, const std::vector<Case>& cs
         for (size_t i = 0; i < x.size(); ++i) {
             score.push_back(x[i].score);
             ms.push_back(x[i].ms);
-            mci.push_back(mciMetricAt(cs[i].mci, x[i].ms));
+            mci.push_back(equaltime::metricAt(cs[i].mci, x[i].ms));
         }
         s[set + "_equal_time"] = aggregate(x);
         s[set + "_equal_time_per_scene"] = score;

@@ -27,9 +27,13 @@
 // The equal-time objective: before the search, MCI ("mc" with n = each of
 // "mci_n") is rendered on every scene and timed at time_res^2 pixels (one
 // warm-up, median of reps launches), giving the scene's curve of MCI's metric
-// against its time. Each evaluation times the candidate the same way and
-// scores each scene by log(metric / MCI's metric at the candidate's time),
-// interpolated log-log on that curve (mciMetricAt); the objective is the mean
+// against its time. Each evaluation times the candidate in paired rounds
+// against MCI at the curve's N nearest its time (equaltime::solveN; reps
+// alternating rounds, equaltime::medianRatio), so that its time is read on
+// the curve's clock: t = t_curve(N) / ratio, a load that changed since the
+// curve was measured hitting both sides of the ratio alike. Each scene scores
+// log(metric / MCI's metric at that time), interpolated log-log on the curve
+// (equaltime::metricAt); the objective is the mean
 // over the scenes. So a candidate that gains accuracy only by becoming slower
 // gains nothing against MCI. Noise: each evaluation's time is one median of
 // `reps` launches on whatever else the machine runs; at 1.5x timing noise the
@@ -57,6 +61,8 @@
 // parameters are kernel arguments, so every evaluation reuses the cached
 // program; references come from the render cache.
 #pragma once
+
+#include "equaltime/equaltime.h"
 
 #include "methods/registry.h"
 #include "scene/scene_keys.h"
@@ -137,19 +143,9 @@ struct TuneOptions {
 // before searching when the metric is flip and flip-evaluator is not available.
 nlohmann::json runTune(const TuneExperiment& e, const TuneOptions& opt);
 
-// One point of a scene's MCI curve: MCI's median time (ms) at the
-// equal-time resolution and its metric on the scene.
-struct CurvePoint {
-    double ms, metric;
-};
-// MCI's metric at `ms`: the curve (in order of N) with its times made
-// non-decreasing (a later, larger N measured faster than a smaller one takes
-// the smaller one's time; equal times keep the lower metric), interpolated
-// linearly in (log t, log metric); beyond its ends along metric ~ 1/t (MC's
-// variance at N ~ t). Metrics <= 0 count as 1e-300.
-double mciMetricAt(const std::vector<CurvePoint>& curveByN, double ms);
-// The equal-time score of one scene: log(metric / mciMetricAt(curve, ms)).
-double equalTimeScore(double metric, double ms, const std::vector<CurvePoint>& curveByN);
+// The equal-time score of one scene: log(metric / equaltime::metricAt(curve, ms)),
+// the curve MCI's (time at the equal-time resolution, metric) in order of N.
+double equalTimeScore(double metric, double ms, const std::vector<equaltime::MetricPoint>& curveByN);
 
 // The SPEC with `names` set to `values` (canonical text), the rest from `base`.
 std::string specWith(const std::string& base, const std::vector<std::string>& names, const std::vector<double>& values,

@@ -1,6 +1,7 @@
 // Experiments: file parsing and its errors, scene order and shards, the
 // equal-time fit, and whole runs through build/lumibench (resume, shards with
 // GNU parallel merged against one run, report without matplotlib, smoke.json).
+#include "equaltime/equaltime.h"
 #include "experiments/experiment.h"
 #include "experiments/results.h"
 #include "experiments/runner.h"
@@ -190,20 +191,20 @@ TEST(EqualTime, SolveInterpolatesTheMeasuredTimes)
     // double): any target between measured points gives its N exactly.
     std::vector<std::pair<long, double>> line;
     for (long n : {512, 8, 128, 32}) line.emplace_back(n, 0.25 + 0.0125 * n);  // unsorted on purpose
-    EXPECT_EQ(experiments::solveN(line, 0.25 + 0.0125 * 40), 40);
-    EXPECT_EQ(experiments::solveN(line, 0.25 + 0.0125 * 300), 300);
-    EXPECT_EQ(experiments::solveN(line, 0.25 + 0.0125 * 1000), 1000);  // extrapolated along the last segment
+    EXPECT_EQ(equaltime::solveN(line, 0.25 + 0.0125 * 40), 40);
+    EXPECT_EQ(equaltime::solveN(line, 0.25 + 0.0125 * 300), 300);
+    EXPECT_EQ(equaltime::solveN(line, 0.25 + 0.0125 * 1000), 1000);  // extrapolated along the last segment
     // Superlinear times as PoCL measures them (t(128) / t(8) = 31): local, not
     // global. Between (8, 0.25) and (32, 1.25) the target 0.75 is N = 20.
     std::vector<std::pair<long, double>> pocl{{1, 0.03125}, {8, 0.25}, {32, 1.25}, {128, 7.75}};
-    EXPECT_EQ(experiments::solveN(pocl, 0.75), 20);
-    EXPECT_EQ(experiments::solveN(pocl, 0.01), 1);  // faster than MC at N = 1: clamped
+    EXPECT_EQ(equaltime::solveN(pocl, 0.75), 20);
+    EXPECT_EQ(equaltime::solveN(pocl, 0.01), 1);  // faster than MC at N = 1: clamped
     // Between (1, 1/32) and (8, 1/4): 0.140625 = 1/32 + 3.5 / 32 -> N = 4.5, rounded half away from zero to 5.
-    EXPECT_EQ(experiments::solveN(pocl, 0.140625), 5);
+    EXPECT_EQ(equaltime::solveN(pocl, 0.140625), 5);
     // A single point: t proportional to N.
-    EXPECT_EQ(experiments::solveN({{16, 2.0}}, 1.0), 8);
+    EXPECT_EQ(equaltime::solveN({{16, 2.0}}, 1.0), 8);
     // Noise can make a segment flat; the solve stays finite and in range.
-    long n = experiments::solveN({{8, 1.0}, {16, 1.0}}, 3.0);
+    long n = equaltime::solveN({{8, 1.0}, {16, 1.0}}, 3.0);
     EXPECT_EQ(n, 48);
 }
 

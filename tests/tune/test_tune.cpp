@@ -325,15 +325,15 @@ TEST(Tune, BadEqualTimeKeysAreRefused)
 // smaller one's time. Exact up to exp/log rounding: 1e-12 relative.
 TEST(Tune, MciCurveInterpolatesLogLog)
 {
-    const std::vector<tune::CurvePoint> c = {{1, 1}, {2, 0.5}, {4, 0.25}};
-    EXPECT_NEAR(tune::mciMetricAt(c, 2), 0.5, 1e-12);
-    EXPECT_NEAR(tune::mciMetricAt(c, std::sqrt(2.0)), std::sqrt(0.5), 1e-12);  // log-log midpoint
-    EXPECT_NEAR(tune::mciMetricAt(c, 8), 0.125, 1e-12);  // beyond the slowest: ~1/t
-    EXPECT_NEAR(tune::mciMetricAt(c, 0.5), 2, 1e-12);  // below the fastest: ~1/t
+    const std::vector<equaltime::MetricPoint> c = {{1, 1}, {2, 0.5}, {4, 0.25}};
+    EXPECT_NEAR(equaltime::metricAt(c, 2), 0.5, 1e-12);
+    EXPECT_NEAR(equaltime::metricAt(c, std::sqrt(2.0)), std::sqrt(0.5), 1e-12);  // log-log midpoint
+    EXPECT_NEAR(equaltime::metricAt(c, 8), 0.125, 1e-12);  // beyond the slowest: ~1/t
+    EXPECT_NEAR(equaltime::metricAt(c, 0.5), 2, 1e-12);  // below the fastest: ~1/t
     // N = 2 timed faster than N = 1: both at 1 ms, the lower metric kept.
-    const std::vector<tune::CurvePoint> noisy = {{1, 1}, {0.8, 0.5}, {4, 0.25}};
-    EXPECT_NEAR(tune::mciMetricAt(noisy, 1), 0.5, 1e-12);
-    EXPECT_NEAR(tune::mciMetricAt(noisy, 2), 0.5 * std::sqrt(0.5), 1e-12);
+    const std::vector<equaltime::MetricPoint> noisy = {{1, 1}, {0.8, 0.5}, {4, 0.25}};
+    EXPECT_NEAR(equaltime::metricAt(noisy, 1), 0.5, 1e-12);
+    EXPECT_NEAR(equaltime::metricAt(noisy, 2), 0.5 * std::sqrt(0.5), 1e-12);
     // The score: 0 on the curve, log 2 at twice the time with the same metric.
     EXPECT_NEAR(tune::equalTimeScore(0.5, 2, c), 0, 1e-12);
     EXPECT_NEAR(tune::equalTimeScore(0.5, 4, c), std::log(2.0), 1e-12);
