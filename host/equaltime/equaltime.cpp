@@ -53,7 +53,8 @@ namespace {
 // The Ns one try times: the aimed N and its neighbour towards the target on
 // the curve (first try), or the aimed N and both neighbours (later tries);
 // none measured before, none below 1.
-std::vector<long> triesAround(long next, int attempt, const Curve& pts, double tM, const std::map<long, double>& measured)
+std::vector<long> triesAround(long next, int attempt, const Curve& pts, double tM,
+                              const std::map<long, double>& measured)
 {
     long n1 = std::max(1L, next);
     std::vector<long> tries = {n1};

@@ -23,32 +23,32 @@ using nlohmann::json;
 
 namespace {
 
-const std::set<std::string> kKeys = {"name",
-                                     "description",
-                                     "luminaire_dir",
-                                     "luminaires",
-                                     "heights",
-                                     "rotations",
-                                     "methods",
-                                     "equal_time",
-                                     "mci_curve",
-                                     "mc",
-                                     "equal_time_fit",
-                                     "reference",
-                                     "res",
-                                     "precision",
-                                     "size",
-                                     "extent",
-                                     "reps",
-                                     "equal_time_tolerance",
-                                     "equal_time_rounds",
-                                     "save_images",
-                                     "seeds",
-                                     "time_res",
-                                     "scene",
-                                     "alpha",
-                                     "eye",
-                                     "albedo"};
+const std::vector<std::string> kKeys = {"name",
+                                        "description",
+                                        "luminaire_dir",
+                                        "luminaires",
+                                        "heights",
+                                        "rotations",
+                                        "methods",
+                                        "equal_time",
+                                        "mci_curve",
+                                        "mc",
+                                        "equal_time_fit",
+                                        "reference",
+                                        "res",
+                                        "precision",
+                                        "size",
+                                        "extent",
+                                        "reps",
+                                        "equal_time_tolerance",
+                                        "equal_time_rounds",
+                                        "save_images",
+                                        "seeds",
+                                        "time_res",
+                                        "scene",
+                                        "alpha",
+                                        "eye",
+                                        "albedo"};
 
 // Every .ldt / .ies file of a directory, sorted; of a .ldt and a .ies with the
 // same stem only the .ldt (the suite ships both forms of each luminaire).
@@ -172,16 +172,19 @@ void readSettings(const Reader& r, const Overrides& ov, Experiment& e)
         e.equalTimeRounds = static_cast<int>(r.integer("equal_time_rounds", kMinExperimentReps, ocl::kMaxReps));
     if (r.has("save_images")) e.saveImages = r.boolean("save_images");
     if (r.has("seeds")) e.seeds = static_cast<int>(r.integer("seeds", 1, kMaxSeeds));
+    if (ov.seeds) e.seeds = util::checkRange(nameOf(ov, "seeds"), *ov.seeds, 1, kMaxSeeds);
 }
 
 }  // namespace
+
+const std::vector<std::string>& experimentKeys() { return kKeys; }
 
 Experiment loadExperiment(const std::string& path, const Overrides& ov)
 {
     // An experiment file is a few kB; 16 MiB leaves room for generated ones.
     const json j = util::readJsonObject(path, "an experiment file (JSON)", 16u << 20);
     Reader r{path, j};
-    r.onlyKnown(kKeys);
+    r.onlyKnown(std::set<std::string>(kKeys.begin(), kKeys.end()));
 
     Experiment e;
     e.path = path;

@@ -83,13 +83,18 @@ struct Overrides {
     std::optional<int> res;  // replaces "res"
     std::optional<int> reps;  // replaces "reps"
     std::optional<int> timeRes;  // replaces "time_res"
+    std::optional<int> seeds;  // replaces "seeds"
     // How an error names an override, given the key it replaces ("luminaires",
-    // "res", "reps", "time_res"); unset: overrideName(key). A caller names its
+    // "res", "reps", "time_res", "seeds"); unset: overrideName(key). A caller names its
     // own settings here (the CLI its flags).
     std::function<std::string(const std::string& key)> name;
 };
 // "override of key \"res\"".
 std::string overrideName(const std::string& key);
+
+// Every key an experiment file may have, in the order docs/experiments.md
+// documents them (`run --help` lists them).
+const std::vector<std::string>& experimentKeys();
 
 // Reads and checks an experiment file. Throws lb::InputError naming the file
 // and the key for anything missing, mistyped or out of range; method SPECs are

@@ -38,6 +38,16 @@ TEST(Cli, EverySubcommandHasHelp)
     }
 }
 
+// `run --help` names every experiment key and where each is documented.
+TEST(Cli, RunHelpListsTheExperimentKeys)
+{
+    auto r = run("run --help");
+    EXPECT_EQ(r.code, 0) << r.out;
+    for (const char* k : {"luminaires", "heights", "equal_time_tolerance", "time_res", "seeds", "docs/experiments.md",
+                          "512 x 512", "--seeds"})
+        EXPECT_NE(r.out.find(k), std::string::npos) << k << "\n" << r.out;
+}
+
 TEST(Cli, UnknownSubcommandIsAnInputError)
 {
     auto r = run("frobnicate");

@@ -90,6 +90,7 @@ TEST(Flags, RunTuneCompareFlags)
         {"run " + smoke + " --out /nonexistent/o --reps 1000000000", "--reps: expected an integer in [5, 1000]"},
         {"run " + smoke + " --out /nonexistent/o --time-res -1",
          "--time-res: expected an integer in [0, 16384], got -1"},
+        {"run " + smoke + " --out /nonexistent/o --seeds 0", "--seeds: expected an integer in [1, 1000], got 0"},
         {"run " + smoke + " --out /nonexistent/o --device -1", "--device: expected an integer in [0, 4095], got -1"},
         {"run " + smoke + " --out /nonexistent/o --shard 5/4", "--shard: expected 1 <= K <= N, got '5/4'"},
         {"run " + smoke + " --out /nonexistent/o --luminaires " + test::sourceDir() + "/experiments",
