@@ -21,6 +21,8 @@ thead th { white-space: normal; overflow-wrap: anywhere; min-width: 4em; max-wid
 th:first-child, td:first-child { position: sticky; left: 0; z-index: 1; background: #fff;
                                  box-shadow: 1px 0 0 #ccc; }
 table.info td { white-space: normal; overflow-wrap: anywhere; }
+/* The verdicts' last column lists scenes: text that wraps, not a number. */
+#verdicts td:last-child, #verdicts th:last-child { text-align: left; white-space: normal; min-width: 20em; }
 td:first-child, th:first-child, table.info td, table.info th { text-align: left; }
 table.sortable th { cursor: pointer; background: #f0f0f0; user-select: none; }
 table.sortable th[data-dir="asc"]::after { content: " \25B2"; }
