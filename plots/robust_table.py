@@ -22,7 +22,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from atomic import emit_text  # noqa: E402
-from results_io import load_records  # noqa: E402
+from results_io import load_records, verdict  # noqa: E402
 
 
 def spec_of(r):
@@ -46,6 +46,11 @@ def regime(r):
     return "near (h 0.1, R > pi/2)"
 
 
+def wtl(c):
+    """wins / ties / losses of a Counter of verdicts (undefined ones apart)."""
+    return f"{c['win']} / {c['tie']} / {c['loss']}" + (f" ({c['n/a']} undefined)" if c["n/a"] else "")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("results", nargs="+")
@@ -62,15 +67,17 @@ def main():
         sys.exit(f"robust_table: {e}")
     scene = lambda r: (r["luminaire"], r["height"], r["rotation"])
     nmse = collections.defaultdict(dict)  # scene -> spec -> nmse
-    eq = collections.defaultdict(dict)    # scene -> target spec -> mci nmse
+    rec = collections.defaultdict(dict)   # scene -> spec -> record
+    eq = collections.defaultdict(dict)    # scene -> target method -> MCI's record
     # parameters every spec of a method shares are its defaults here: left out of names
     by_method = collections.defaultdict(list)
     for r in recs:
         s = spec_of(r)
         if s is None:
-            eq[scene(r)][r["equal_time_to"].split(":")[0]] = r["nmse"]
+            eq[scene(r)][r["equal_time_to"].split(":")[0]] = r
         else:
             nmse[scene(r)][s] = r["nmse"]
+            rec[scene(r)][s] = r
             by_method[r["method"]].append(set(s.partition(":")[2].split(",")))
     defaults = {m: set.intersection(*v) for m, v in by_method.items()}
     specs = sorted({s for d in nmse.values() for s in d})
@@ -79,11 +86,11 @@ def main():
         sys.exit(f"robust_table: no records of the base method '{a.base}' in {' '.join(a.results)}")
     regimes = sorted({regime({"height": k[1], "rotation": k[2]}) for k in nmse})
     out = ["| method | beats " + a.base + " | " + " | ".join(f"NMSE / {a.base}, {g}" for g in regimes) +
-           " | beats MCI at equal time |", "|---" * (3 + len(regimes)) + "|"]
+           " | against MCI at equal time (wins / ties / losses) |", "|---" * (3 + len(regimes)) + "|"]
     for s in specs:
         wins = n = 0
         logs = collections.defaultdict(list)
-        eqw = eqn = 0
+        eqv = collections.Counter()
         for k, d in nmse.items():
             if d.get(s) is None or d.get(base) is None:  # undefined (a black reference)
                 continue
@@ -95,23 +102,26 @@ def main():
             same = [t for t in d if t.split(":")[0] == s.split(":")[0]]
             m = eq.get(k, {}).get(s.split(":")[0]) if same == [s] else None
             if m is not None:
-                eqn += 1
-                eqw += d[s] < m
+                eqv[verdict(rec[k][s], m)] += 1
         cols = [f"{math.exp(sum(v) / len(v)):.3g}" if (v := logs.get(g)) else "-" for g in regimes]
         out.append(f"| `{short(s, defaults)}` | {wins} / {n} | " + " | ".join(cols) +
-                   (f" | {eqw} / {eqn} |" if eqn else " | - |"))
+                   (f" | {wtl(eqv)} |" if eqv else " | - |"))
     out.append("")
     out.append("NMSE / " + a.base + ": geometric mean over the scenes of the regime (below 1: better than " +
-               a.base + "); scenes whose NMSE is undefined (a black reference or method image) left out.")
+               a.base + "); scenes whose NMSE is undefined (a black reference or method image) left out. "
+               "Against MCI: a win where the method's NMSE lies below MCI's 95 % interval over its seeds, a loss "
+               "where above, a tie where the interval reaches it (a single draw: its value).")
     # Per luminaire: scenes won against the base and against MCI at equal time.
     paired = [s for s in specs if any(s.split(":")[0] in e for e in eq.values())]
     if paired:
-        out += ["", "| luminaire | " + " | ".join(f"`{short(s, defaults)}` beats {a.base} / beats MCI" for s in paired)
+        out += ["", "| luminaire | " + " | ".join(f"`{short(s, defaults)}` beats {a.base}; against MCI W / T / L"
+                                             for s in paired)
                 + " |", "|---" * (1 + len(paired)) + "|"]
         for lum in sorted({k[0] for k in nmse}):
             cells = []
             for s in paired:
-                w = n = ew = en = 0
+                w = n = 0
+                ev = collections.Counter()
                 for k, d in nmse.items():
                     if k[0] != lum or d.get(s) is None or d.get(base) is None:
                         continue
@@ -119,10 +129,9 @@ def main():
                     w += d[s] < d[base]
                     m = eq.get(k, {}).get(s.split(":")[0])
                     if m is not None:
-                        en += 1
-                        ew += d[s] < m
-                cells.append(f"{w} / {n}, {ew} / {en}")
-            out.append(f"| {lum} | " + " | ".join(cells) + " |")
+                        ev[verdict(rec[k][s], m)] += 1
+                cells.append(f"{w} / {n}; {wtl(ev)}")
+            out.append(f"| {os.path.basename(lum)} | " + " | ".join(cells) + " |")  # a path outside luminaire_dir too
     emit_text("\n".join(out) + "\n", a.out)
 
 
