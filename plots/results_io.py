@@ -1,7 +1,8 @@
 """Reading the records of a `lumibench run` / `merge` result, from either of
 the two files it writes: results.json (the document: context and records,
 also .json.xz) or results.csv (one flat row per record, docs/experiments.md, "Results as a
-table"). Both give the same list of record dicts, shaped as in results.json:
+table"; its unit-suffixed columns read back under the record keys, a partner's
+equal_time_to being its equal-time label, not the canonical SPEC). Both give the same list of record dicts, shaped as in results.json:
 `time_ms` a dict (median, min, max, reps, res, cv), `params` a dict, `ci95`
 a dict of [lo, hi] by metric (seed-dependent methods), keys a record does
 not have (empty CSV fields) absent, undefined metrics None. An equal-time
@@ -16,15 +17,18 @@ import os
 import sys
 
 # CSV columns that hold text even when they look like a number.
-TEXT = {"method", "spec", "role", "scene", "luminaire", "precision", "device", "driver", "equal_time_to",
+TEXT = {"role", "series", "method", "spec", "scene", "luminaire", "precision", "device", "driver",
         "equal_time_label"}
-# Metric columns: an empty field is an undefined value (null in the JSON), kept as None.
+# Metric keys: an empty field is an undefined value (null in the JSON), kept as None.
 METRICS = {"nmse", "nrmse", "relmse", "ueb", "leb", "mean_ref", "mean_test", "grad_nmse", "flip"}
+# CSV columns named with their unit: the record key each stands for.
+RENAMED = {"height_m": "height", "rotation_rad": "rotation", "ueb_lux": "ueb", "leb_lux": "leb",
+           "mean_ref_lux": "mean_ref", "mean_test_lux": "mean_test"}
 
 
 def _value(s):
-    if s in ("true", "false"):
-        return s == "true"
+    if s in ("True", "False", "true", "false"):
+        return s in ("True", "true")
     for conv in (int, float):
         try:
             return conv(s)
@@ -33,24 +37,48 @@ def _value(s):
     return s
 
 
+def _key(col):
+    """The record key of a CSV column (its unit suffix dropped)."""
+    for suffix in ("_ci95_lo", "_ci95_hi"):
+        if col.endswith(suffix):
+            return _key(col[:-len(suffix)]) + suffix
+    return RENAMED.get(col, col)
+
+
+def _partner(r):
+    """A partner row's equal-time keys as a schema 1 record has them: the
+    matched method (equal_time_to: the label as the experiment wrote it, the
+    CSV has no canonical SPEC), equal_time_n = N + extra and n = N."""
+    if r.get("role") != "equal_time":
+        return
+    if "equal_time_label" in r:
+        r["equal_time_to"] = r["equal_time_label"]
+    if isinstance(r.get("n"), (int, float)):
+        r["equal_time_n"] = r["n"]
+        r["n"] = int(r["n"])
+
+
 def _record(row):
-    r, params, time_ms = {}, {}, {}
+    r, time_ms = {}, {}
+    params = json.loads(row["params"]) if row.get("params") else {}
     for col, s in row.items():
-        if col is None:
+        if col is None or col in ("series", "params") or col.startswith("param_"):
             continue
+        key = _key(col)
         if s == "":
-            if col in METRICS:
-                r[col] = None
+            if key in METRICS:
+                r[key] = None
             continue
-        if col.startswith("param_"):
-            params[col[len("param_"):]] = _value(s)
-        elif col.endswith("_ci95_lo") or col.endswith("_ci95_hi"):
-            pair = r.setdefault("ci95", {}).setdefault(col[:-len("_ci95_lo")], [None, None])
-            pair[col.endswith("_hi")] = _value(s)
-        elif col.startswith("time_ms_"):
-            time_ms[col[len("time_ms_"):]] = _value(s)
+        if key.endswith("_ci95_lo") or key.endswith("_ci95_hi"):
+            pair = r.setdefault("ci95", {}).setdefault(key[:-len("_ci95_lo")], [None, None])
+            pair[key.endswith("_hi")] = _value(s)
+        elif key.startswith("time_ms_"):
+            time_ms[key[len("time_ms_"):]] = _value(s)
+        elif key == "n" and r.get("role") != "equal_time":
+            continue  # MC's n outside a partner is its parameter, in params
         else:
-            r[col] = s if col in TEXT else _value(s)
+            r[key] = s if key in TEXT else _value(s)
+    _partner(r)
     r["params"] = params
     r["time_ms"] = time_ms
     return r

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs every Debian package lumibench needs to build, test and plot
-# (python3-pandas: the test that results.csv loads; chromium: the test that
+# (python3-pandas and python3-seaborn: the tests that results.csv loads and that
+# the docs' examples run on it; chromium: the test that
 # opens report.html in a headless browser), and
 # the project-local Python environment .venv/ (PyPI packages the tests use as
 # independent peers, and flip-evaluator for the flip metric). Idempotent:
@@ -13,7 +14,7 @@ PKGS=(
   libglm-dev libopenexr-dev libnlopt-cxx-dev libnlopt-dev
   googletest libgtest-dev
   libcli11-dev nlohmann-json3-dev libfmt-dev libpng-dev jq clang-format-14
-  python3 python3-matplotlib python3-numpy python3-pandas python3-venv
+  python3 python3-matplotlib python3-numpy python3-pandas python3-seaborn python3-venv
   chromium
   parallel
   slurmctld slurmd slurm-client munge

@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <memory>
 #include <set>
 #include <cstring>
@@ -614,12 +615,13 @@ std::string csvField(const std::string& in)
 }
 
 // A JSON scalar as a CSV field: null and non-finite numbers empty, strings
-// as they are, numbers in their shortest round-trip form.
+// as they are, booleans True / False (what pandas.read_csv reads as bool),
+// numbers in their shortest round-trip form.
 std::string csvValue(const json& v)
 {
     if (v.is_null()) return "";
     if (v.is_string()) return csvField(v.get<std::string>());
-    if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
+    if (v.is_boolean()) return v.get<bool>() ? "True" : "False";
     if (v.is_number_float()) {
         double d = v.get<double>();
         return std::isfinite(d) ? fmt::format("{}", d) : "";
@@ -639,11 +641,33 @@ bool flatValue(const json& v)
     return true;
 }
 
-// The columns of results.csv beyond the fixed head: what some record has.
+// The CSV column of a metric key: the unit of the image's values (lux,
+// docs/usage.md "Comparing images") appended where the metric has one.
+std::string metricColumn(const std::string& key)
+{
+    static const std::set<std::string> withUnit = {"ueb", "leb", "mean_ref", "mean_test"};
+    return withUnit.count(key) ? key + "_lux" : key;
+}
+
+// The columns of results.csv beyond the fixed head: what some record has;
+// params only those whose value (or absence) differs between records.
 struct CsvColumns {
     std::vector<std::string> metrics;
     std::set<std::string> params, extras, intervals;
 };
+
+std::set<std::string> varyingParams(const Results& doc)
+{
+    std::map<std::string, std::set<std::string>> values;
+    for (const auto& r : doc.records)
+        for (auto it = r.params.begin(); it != r.params.end(); ++it) values[it.key()];
+    for (const auto& r : doc.records)
+        for (auto& [k, seen] : values) seen.insert(r.params.contains(k) ? r.params[k].dump() : "");
+    std::set<std::string> out;
+    for (const auto& [k, seen] : values)
+        if (seen.size() > 1) out.insert(k);
+    return out;
+}
 
 CsvColumns csvColumns(const Results& doc)
 {
@@ -652,79 +676,126 @@ CsvColumns csvColumns(const Results& doc)
     for (auto it = metricKeys.begin(); it != metricKeys.end(); ++it) c.metrics.push_back(it.key());
     for (const auto& r : doc.records) {
         for (const auto& kv : r.ci95) c.intervals.insert(kv.first);
-        for (auto it = r.params.begin(); it != r.params.end(); ++it) c.params.insert(it.key());
         for (const json* o : {&r.extra, &r.sceneKeys})
             if (o->is_object())
                 for (auto it = o->begin(); it != o->end(); ++it)
                     if (flatValue(it.value()) && it.key() != "spec" && it.key() != "role" && it.key() != "scene")
                         c.extras.insert(it.key());
     }
+    c.params = varyingParams(doc);
     // a key of `extra` named like a column of its own (a version 1 record's
     // equal_time_ok, ...) is that column's, not a second one
     for (const char* k : kEqualTimeCsv) c.extras.erase(std::string("equal_time_") + k);
     c.extras.erase("seeds");
+    c.extras.erase("series");
     return c;
+}
+
+std::string roleOf(const Record& r, const json& j)
+{
+    return j.value("role", json(r.equal_time_to ? "equal_time" : "method")).get<std::string>();
+}
+
+// The matched method of an equal-time partner as the experiment wrote it:
+// the equal-time label, else (a version 1 record without one) the canonical SPEC.
+std::string partnerLabel(const Record& r)
+{
+    if (r.equalTime && !r.equalTime->label.empty()) return r.equalTime->label;
+    return r.equal_time_to.value_or("");
+}
+
+// What a plot groups by: the SPEC as written for a method, MCI=<label> for an
+// equal-time partner, "MCI curve" for the curve's points.
+std::string seriesOf(const Record& r, const json& j)
+{
+    const std::string role = roleOf(r, j);
+    if (role == "equal_time") return "MCI=" + partnerLabel(r);
+    if (role == "mci_curve") return "MCI curve";
+    return j.value("spec", json(r.method)).get<std::string>();
+}
+
+// MC's sample count: N + extra of a partner's equal-time result, else the
+// record's N_eq, else the method's n parameter; null for other methods.
+json mcSamples(const Record& r)
+{
+    if (r.method != "mc") return nullptr;
+    if (r.equalTime) return num(r.equalTime->n);
+    if (r.n) return *r.n;
+    return r.params.contains("n") ? r.params["n"] : json(nullptr);
+}
+
+std::vector<std::string> csvHeader(const CsvColumns& c)
+{
+    std::vector<std::string> cols = {"role",         "series",      "method",         "spec",        "scene",
+                                     "luminaire",    "height_m",    "rotation_rad",   "res",         "precision",
+                                     "device",       "driver",      "time_ms_median", "time_ms_min", "time_ms_max",
+                                     "time_ms_reps", "time_ms_res", "time_ms_cv"};
+    for (const auto& m : c.metrics) cols.push_back(metricColumn(m));
+    cols.push_back("seeds");
+    for (const auto& m : c.intervals)
+        cols.insert(cols.end(), {metricColumn(m) + "_ci95_lo", metricColumn(m) + "_ci95_hi"});
+    cols.push_back("n");
+    for (const char* k : kEqualTimeCsv)
+        if (std::string(k) != "n") cols.push_back(std::string("equal_time_") + k);
+    for (const auto& p : c.params) cols.push_back("param_" + p);
+    cols.push_back("params");
+    cols.insert(cols.end(), c.extras.begin(), c.extras.end());
+    return cols;
+}
+
+std::vector<std::string> csvRow(const Record& r, const CsvColumns& c)
+{
+    json j = r;  // the record's JSON form: one serialisation of every field
+    const json& t = j["time_ms"];
+    const bool partner = roleOf(r, j) == "equal_time";
+    std::vector<std::string> f = {csvValue(roleOf(r, j)),
+                                  csvValue(seriesOf(r, j)),
+                                  csvValue(j["method"]),
+                                  csvValue(j.value("spec", json(nullptr))),
+                                  csvValue(j.value("scene", json(nullptr))),
+                                  csvValue(j["luminaire"]),
+                                  csvValue(j["height"]),
+                                  csvValue(j["rotation"]),
+                                  csvValue(j["res"]),
+                                  csvValue(j["precision"]),
+                                  csvValue(j["device"]),
+                                  csvValue(j["driver"])};
+    for (const char* k : {"median", "min", "max", "reps", "res", "cv"}) f.push_back(csvValue(t[k]));
+    for (const auto& m : c.metrics) f.push_back(csvValue(j.value(m, json(nullptr))));
+    f.push_back(csvValue(r.seeds));
+    for (const auto& m : c.intervals) {
+        auto it = r.ci95.find(m);
+        f.push_back(it == r.ci95.end() ? "" : csvValue(num(it->second[0])));
+        f.push_back(it == r.ci95.end() ? "" : csvValue(num(it->second[1])));
+    }
+    f.push_back(csvValue(mcSamples(r)));
+    for (const char* k : kEqualTimeCsv) {
+        if (std::string(k) == "n") continue;
+        if (std::string(k) == "label")
+            f.push_back(partner ? csvField(partnerLabel(r)) : "");
+        else
+            f.push_back(r.equalTime ? csvValue(j["equal_time"][k]) : "");
+    }
+    for (const auto& p : c.params)
+        f.push_back(!r.params.contains(p)             ? ""
+                        : r.params[p].is_structured() ? csvField(r.params[p].dump())
+                                                      : csvValue(r.params[p]));
+    f.push_back(csvField(r.params.is_object() ? r.params.dump() : json::object().dump()));
+    for (const auto& x : c.extras) f.push_back(csvValue(j.contains(x) && flatValue(j[x]) ? j[x] : json(nullptr)));
+    return f;
 }
 
 }  // namespace
 
 std::string toCsv(const Results& doc)
 {
-    const std::vector<std::string> head = {
-        "method",      "spec",        "role",         "scene",       "luminaire", "height",
-        "rotation",    "res",         "precision",    "device",      "driver",    "time_ms_median",
-        "time_ms_min", "time_ms_max", "time_ms_reps", "time_ms_res", "time_ms_cv"};
     const CsvColumns c = csvColumns(doc);
-    const auto& [metricCols, params, extras, intervals] = c;
-    const auto flat = flatValue;
-    std::vector<std::string> cols = head;
-    cols.insert(cols.end(), metricCols.begin(), metricCols.end());
-    cols.push_back("seeds");
-    for (const auto& m : intervals) cols.insert(cols.end(), {m + "_ci95_lo", m + "_ci95_hi"});
-    cols.push_back("equal_time_to");
-    cols.push_back("n");
-    for (const char* k : kEqualTimeCsv) cols.push_back(std::string("equal_time_") + k);
-    for (const auto& p : params) cols.push_back("param_" + p);
-    cols.insert(cols.end(), extras.begin(), extras.end());
-
+    const std::vector<std::string> cols = csvHeader(c);
     std::string out;
     for (size_t i = 0; i < cols.size(); ++i) out += (i ? "," : "") + csvField(cols[i]);
     out += "\n";
     for (const auto& r : doc.records) {
-        json j = r;  // the record's JSON form: one serialisation of every field
-        const json& t = j["time_ms"];
-        std::vector<std::string> f = {csvValue(j["method"]),
-                                      csvValue(j.value("spec", json(nullptr))),
-                                      csvValue(j.value("role", json(r.equal_time_to ? "equal_time" : "method"))),
-                                      csvValue(j.value("scene", json(nullptr))),
-                                      csvValue(j["luminaire"]),
-                                      csvValue(j["height"]),
-                                      csvValue(j["rotation"]),
-                                      csvValue(j["res"]),
-                                      csvValue(j["precision"]),
-                                      csvValue(j["device"]),
-                                      csvValue(j["driver"]),
-                                      csvValue(t["median"]),
-                                      csvValue(t["min"]),
-                                      csvValue(t["max"]),
-                                      csvValue(t["reps"]),
-                                      csvValue(t["res"]),
-                                      csvValue(t["cv"])};
-        for (const auto& m : metricCols) f.push_back(csvValue(j.value(m, json(nullptr))));
-        f.push_back(csvValue(r.seeds));
-        for (const auto& m : intervals) {
-            auto it = r.ci95.find(m);
-            f.push_back(it == r.ci95.end() ? "" : csvValue(num(it->second[0])));
-            f.push_back(it == r.ci95.end() ? "" : csvValue(num(it->second[1])));
-        }
-        f.push_back(csvValue(j.value("equal_time_to", json(nullptr))));
-        f.push_back(csvValue(j.value("n", json(nullptr))));
-        for (const char* k : kEqualTimeCsv) f.push_back(r.equalTime ? csvValue(j["equal_time"][k]) : "");
-        for (const auto& p : params)
-            f.push_back(r.params.contains(p) && !r.params[p].is_structured()
-                            ? csvValue(r.params[p])
-                            : (r.params.contains(p) ? csvField(r.params[p].dump()) : ""));
-        for (const auto& x : extras) f.push_back(csvValue(j.contains(x) && flat(j[x]) ? j[x] : json(nullptr)));
+        const std::vector<std::string> f = csvRow(r, c);
         for (size_t i = 0; i < f.size(); ++i) out += (i ? "," : "") + f[i];
         out += "\n";
     }

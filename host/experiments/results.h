@@ -205,21 +205,26 @@ Results mergeResults(const std::vector<std::string>& paths, MergeStats* stats = 
 // The records as CSV (RFC 4180 with \n line ends: a header line, then one
 // flat row per record;
 // fields with a comma, quote or line break are quoted, quotes doubled;
-// undefined numbers are empty fields). Columns, in this order:
-//   method, spec, role, scene, luminaire, height, rotation, res, precision,
-//   device, driver, time_ms_median, time_ms_min, time_ms_max, time_ms_reps,
-//   time_ms_res, time_ms_cv, the metrics of metrics::to_json (nmse, ...;
-//   means over the seeds where seeds > 1), seeds, <metric>_ci95_lo and
-//   _hi for every metric some record has an interval of, equal_time_to, n,
-//   equal_time_<key> for the keys of EqualTime but candidates and fit,
-//   param_<name> for every method parameter met in any record (empty where a
-//   record's method has no such parameter), then every other key a record
-//   carries whose value is a number, string, boolean or null (build_s,
-//   equal_time_ratio, the scene kind's scene_kind, alpha, albedo, ..., and
-//   keys of later versions), or a list of at most 4 numbers (eye, as JSON
-//   text), sorted by name.
-// Objects and arrays (params, inputs, stats, equal_time_candidates) are left
-// out, params flattened as above. docs/experiments.md ("Results as a table") documents them.
+// undefined numbers are empty fields; booleans True / False). Columns, in
+// this order:
+//   role, series (what a plot groups by: the SPEC as written for a method,
+//   MCI=<equal-time label> for a partner, "MCI curve" for the curve), method,
+//   spec, scene, luminaire, height_m, rotation_rad, res, precision, device,
+//   driver, time_ms_median, time_ms_min, time_ms_max, time_ms_reps,
+//   time_ms_res, time_ms_cv, the metrics of metrics::to_json (nmse, ...; ueb,
+//   leb, mean_ref, mean_test with the suffix _lux; means over the seeds where
+//   seeds > 1), seeds, <metric>_ci95_lo and _hi for every metric some record
+//   has an interval of, n (MC's sample count: N + extra for a partner, empty
+//   for other methods), equal_time_<key> for the keys of EqualTime but n,
+//   candidates and fit (equal_time_label the matched method as the
+//   experiment wrote it), param_<name> for each method parameter whose value
+//   (or absence) differs between records, params (every record's parameters
+//   as a JSON object), then every other key a record carries whose value is
+//   a number, string, boolean or null (build_s, the scene kind's scene_kind,
+//   alpha, albedo, ..., and keys of later versions), or a list of at most 4
+//   numbers (eye, as JSON text), sorted by name.
+// Other objects and arrays (inputs, stats, equal_time candidates) are left
+// out. docs/experiments.md ("Results as a table") documents them.
 std::string toCsv(const Results& doc);
 
 // DIR/results.csv beside DIR/results.json: the path with its extension

@@ -90,34 +90,68 @@ Image ramp(int n, double scale)
     return im;
 }
 
-// results.csv: one flat row per record, every parameter and metric a column,
-// undefined numbers empty, odd strings quoted; pandas reads it back.
+// results.csv: one tidy row per record: unit-suffixed columns, a series to
+// group by, one n, the partner's matched method as its short label, only the
+// parameters that vary as columns (all in `params`), booleans that pandas
+// reads as bool; odd strings quoted; pandas reads it back.
 TEST_F(Report, CsvHasOneFlatRowPerRecordAndLoadsWithPandas)
 {
     Image ref = ramp(8, 1), a = ramp(8, 1.25);
     results::Results doc;
-    doc.records = {rec("cubature", "method", 1.5, ref, a), rec("mc:n=4", "equal_time", 1.5, ref, ramp(8, 0.5))};
+    doc.records = {rec("cubature", "method", 1.5, ref, a), rec("mc:n=4", "equal_time", 1.5, ref, ramp(8, 0.5)),
+                   rec("mc:n=4", "mci_curve", 1.5, ref, ramp(8, 0.75))};
     doc.records[0].extra["stats"] = {{"form", "straight-line"}};  // objects stay out of the table
     doc.records[1].seeds = 8;  // a mean over seeds: its interval as two columns
     doc.records[1].ci95["nmse"] = {0.25, 0.75};
     doc.records[1].error.flip = NAN;  // undefined: an empty field
+    // the canonical SPEC stays in the JSON; the CSV names the method by its label
+    doc.records[1].equal_time_to = "cubature:radiance=cubature,triangulation=fan,order=3";
+    doc.records[1].equalTime->n = 4.25;  // N + extra: the CSV's n
     doc.records[0].sceneKeys = {{"scene_kind", "specular"}, {"alpha", 0.25}, {"eye", {0, 4, 2}}};  // columns too
     const std::string csv = results::toCsv(doc);
     const std::string head = csv.substr(0, csv.find('\n'));
-    EXPECT_EQ(head.rfind("method,spec,role,scene,luminaire,height,rotation,res,precision,device,driver,time_ms_median,"
-                         "time_ms_min,time_ms_max,time_ms_reps,time_ms_res,",
+    EXPECT_EQ(head.rfind("role,series,method,spec,scene,luminaire,height_m,rotation_rad,res,precision,device,driver,"
+                         "time_ms_median,time_ms_min,time_ms_max,time_ms_reps,time_ms_res,",
                          0),
               0u)
         << head;
-    for (const char* c : {",nmse,", ",flip,", ",grad_nmse,", ",equal_time_to,", ",n,", ",param_n,", ",param_pattern,",
-                          ",param_triangulation,", ",equal_time_ratio", ",equal_time_ok", ",scene_kind", ",alpha,",
-                          ",eye,", ",seeds,", ",nmse_ci95_lo,nmse_ci95_hi,", ",equal_time_partner_ms,", ",time_ms_cv,"})
+    for (const char* c : {",nmse,",
+                          ",flip,",
+                          ",grad_nmse,",
+                          ",ueb_lux,",
+                          ",leb_lux,",
+                          ",mean_ref_lux,",
+                          ",mean_test_lux,",
+                          ",n,",
+                          ",param_n,",
+                          ",param_pattern,",
+                          ",param_triangulation,",
+                          ",params,",
+                          ",equal_time_ratio",
+                          ",equal_time_ok",
+                          ",equal_time_label,",
+                          ",scene_kind",
+                          ",alpha,",
+                          ",eye,",
+                          ",seeds,",
+                          ",nmse_ci95_lo,nmse_ci95_hi,",
+                          ",equal_time_partner_ms,",
+                          ",time_ms_cv,"})
         EXPECT_NE(head.find(c), std::string::npos) << c << " in " << head;
-    EXPECT_EQ(head.find("stats"), std::string::npos) << head;
+    for (const char* c : {"stats", ",ueb,", ",height,", ",equal_time_to,", ",equal_time_n,", "series,series"})
+        EXPECT_EQ(head.find(c), std::string::npos) << c << " in " << head;
     EXPECT_EQ(head.find("equal_time_ok"), head.rfind("equal_time_ok")) << "one column per field: " << head;
+    EXPECT_EQ(csv.find("radiance=cubature"), std::string::npos) << "no canonical SPEC: " << csv;
     EXPECT_NE(csv.find("\"A, \"\"quoted\"\".ldt\""), std::string::npos) << csv;
     EXPECT_NE(csv.find(",\"[0,4,2]\","), std::string::npos) << csv;  // a short list: its JSON text
-    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3);
+    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 4);
+
+    // a parameter with one value in every record is no column of its own
+    results::Results same;
+    same.records = {rec("mc:n=4", "mci_curve", 1.5, ref, a), rec("mc:n=4", "mci_curve", 3.0, ref, a)};
+    const std::string sameHead = results::toCsv(same).substr(0, results::toCsv(same).find('\n'));
+    EXPECT_EQ(sameHead.find("param_"), std::string::npos) << sameHead;
+    EXPECT_EQ(sameHead.substr(sameHead.size() - 7), ",params") << sameHead;  // the last column
 
     // written beside results.json by saveCsv; pandas (python3-pandas, scripts/install-deps.sh) reads it
     const std::string jsonPath = (dir / "results.json").string();
@@ -129,24 +163,80 @@ TEST_F(Report, CsvHasOneFlatRowPerRecordAndLoadsWithPandas)
         GTEST_SKIP() << "/usr/bin/python3 has no pandas (Debian: apt-get install python3-pandas; "
                         "scripts/install-deps.sh installs it)";
     std::ofstream(dir / "check.py") << R"PY(
-import math, sys
+import json, math, sys
 import pandas as pd
 df = pd.read_csv(sys.argv[1])
-assert len(df) == 2, len(df)
-assert list(df["method"]) == ["cubature", "mc"], list(df["method"])
+assert len(df) == 3, len(df)
+assert list(df["role"]) == ["method", "equal_time", "mci_curve"], list(df["role"])
+assert list(df["series"]) == ["cubature", "MCI=cubature", "MCI curve"], list(df["series"])
+assert list(df["method"]) == ["cubature", "mc", "mc"], list(df["method"])
 assert df["luminaire"][0] == 'A, "quoted".ldt', df["luminaire"][0]
 assert df["nmse"].dtype.kind == "f" and (df["nmse"] > 0).all()
+assert df["ueb_lux"].dtype.kind == "f" and df["height_m"][0] == 1.1 and df["rotation_rad"][0] == 1.5
 assert df["time_ms_median"][1] == 2.5 and df["time_ms_res"][0] == 128
 assert df["param_n"][1] == 4 and math.isnan(df["param_n"][0])
 assert df["param_triangulation"][0] == "fan"
+assert json.loads(df["params"][0]) == {"triangulation": "fan"}, df["params"][0]
+assert json.loads(df["params"][2]) == {"n": 4, "pattern": "poisson"}, df["params"][2]
 assert math.isnan(df["flip"][1])
-assert df["equal_time_to"][1] == "cubature" and df["n"][1] == 4
+assert math.isnan(df["n"][0]) and df["n"][1] == 4.25 and df["n"][2] == 4, list(df["n"])
+assert df["equal_time_label"][1] == "cubature"
+# True / False: bool where every row has a value; the partners' columns once restricted to them
+et = pd.read_csv(sys.argv[1])[lambda d: d.role == "equal_time"]
+assert et["equal_time_ok"].tolist() == [True], et["equal_time_ok"].tolist()
 assert df["equal_time_ok"][1] == True
-assert df["seeds"].tolist() == [1, 8] and df["nmse_ci95_lo"][1] == 0.25 and math.isnan(df["nmse_ci95_hi"][0])
+assert df["seeds"].tolist() == [1, 8, 1] and df["nmse_ci95_lo"][1] == 0.25 and math.isnan(df["nmse_ci95_hi"][0])
 assert df["scene_kind"][0] == "specular" and df["alpha"][0] == 0.25 and df["eye"][0] == "[0,4,2]"
+ok = pd.read_csv(sys.argv[2])
+assert ok["flag"].dtype == bool, ok["flag"].dtype
 print("pandas ok", df.shape)
 )PY";
-    EXPECT_EQ(sh("/usr/bin/python3 " + (dir / "check.py").string() + " " + (dir / "results.csv").string()), 0);
+    // a column where every row has a boolean: dtype bool
+    results::Results flags;
+    flags.records = {rec("cubature", "method", 1.5, ref, a), rec("cubature", "method", 3.0, ref, a)};
+    flags.records[0].extra["flag"] = true;
+    flags.records[1].extra["flag"] = false;
+    std::ofstream(dir / "flags.csv") << results::toCsv(flags);
+    EXPECT_EQ(sh("/usr/bin/python3 " + (dir / "check.py").string() + " " + (dir / "results.csv").string() + " " +
+                 (dir / "flags.csv").string()),
+              0);
+}
+
+// The python blocks of docs/experiments.md's "Results as a table" (a pivot
+// by scene and series, a seaborn relplot) run on a CSV of hand-made records,
+// as out/main/results.csv, so the documented examples keep working.
+TEST_F(Report, DocExamplesRunOnTheCsv)
+{
+    const std::string md = slurp(fs::path(test::sourceDir()) / "docs" / "experiments.md");
+    const size_t from = md.find("**Results as a table.**"), to = md.find("**Equal time**", from);
+    ASSERT_NE(from, std::string::npos);
+    ASSERT_NE(to, std::string::npos);
+    std::vector<std::string> blocks;
+    for (size_t p = md.find("```python\n", from); p < to; p = md.find("```python\n", p)) {
+        const size_t b = p + 10, e = md.find("```", b);
+        ASSERT_NE(e, std::string::npos);
+        blocks.push_back(md.substr(b, e - b));
+        p = e + 3;
+    }
+    ASSERT_EQ(blocks.size(), 2u) << "a pivot and a seaborn example";
+    if (sh("/usr/bin/python3 -c 'import pandas' 2>/dev/null") != 0)
+        GTEST_SKIP() << "/usr/bin/python3 has no pandas (scripts/install-deps.sh installs python3-pandas)";
+    Image ref = ramp(8, 1);
+    results::Results doc;
+    doc.records = {rec("cubature", "method", 1.5, ref, ramp(8, 1.25)),
+                   rec("mc:n=4", "equal_time", 1.5, ref, ramp(8, 0.5)),
+                   rec("mc:n=4", "mci_curve", 1.5, ref, ramp(8, 0.75))};
+    fs::create_directories(dir / "out" / "main");
+    std::ofstream(dir / "out" / "main" / "results.csv") << results::toCsv(doc);
+    std::ofstream(dir / "pivot.py") << blocks[0] << "assert table.loc[('A, \"quoted\".ldt', 1.1), 'MCI=cubature'] > 0\n"
+                                    << "assert 'MCI curve' not in table.columns\n";
+    EXPECT_EQ(sh("cd " + dir.string() + " && /usr/bin/python3 pivot.py"), 0) << blocks[0];
+    if (sh("/usr/bin/python3 -c 'import seaborn' 2>/dev/null") != 0)
+        GTEST_SKIP() << "/usr/bin/python3 has no seaborn (Debian: apt-get install python3-seaborn; "
+                        "scripts/install-deps.sh installs it); the pivot example ran";
+    std::ofstream(dir / "relplot.py") << blocks[1];
+    EXPECT_EQ(sh("cd " + dir.string() + " && MPLBACKEND=Agg /usr/bin/python3 relplot.py"), 0) << blocks[1];
+    EXPECT_TRUE(fs::exists(dir / "nmse_time.png"));
 }
 
 // The report's main table is the NMSE of the rotations stitched into one
