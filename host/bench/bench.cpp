@@ -64,10 +64,7 @@ struct Bench {
         pb.setLocal(opt.lx, opt.ly);
         const int rounds = std::max(opt.reps, 11);
         auto t = rt.timeInterleaved({[&] { return pa.launchMs(); }, [&] { return pb.launchMs(); }}, rounds, 1);
-        std::vector<double> q;
-        for (size_t i = 0; i < t[0].samples_ms.size(); ++i) q.push_back(t[0].samples_ms[i] / t[1].samples_ms[i]);
-        return {ocl::summarize(q).median_ms, ocl::summarize(t[0].samples_ms).median_ms,
-                ocl::summarize(t[1].samples_ms).median_ms, rounds};
+        return {equaltime::medianRatio({t[1], t[0]}, 1), t[0].median_ms, t[1].median_ms, rounds};  // t(a) / t(b)
     }
 
     // naive.cl: render(P, lum, out, row0, st, n), the exact packed table.
