@@ -80,12 +80,12 @@ LB_FN void mc_point(__global const real* st, int j, int i, lb_u32 hp, lb_u32 sal
 #elif LB_MC_SEQ == 2
     lb_u32 h = lb_mc_hash(hp ^ salt);
     *u0 = lb_mc_unit(lb_mc_owen(lb_mc_sobol0((lb_u32)j), lb_mc_hash(h ^ 0xa511e9b3U)));
-    *u1 = lb_mc_unit(lb_mc_owen(lb_mc_sobol1((lb_u32)j, lg), lb_mc_hash(h ^ 0x63d83595U)));
+    *u1 = lb_mc_unit(lb_mc_owen(lb_mc_sobol1((lb_u32)j), lb_mc_hash(h ^ 0x63d83595U)));
 #else
     lb_u32 sd = lb_mc_hash(seed ^ salt);
     lb_u32 idx = lb_mc_zsobol_index(col, row, (lb_u32)j, lg, digits, sd);
     *u0 = lb_mc_unit(lb_mc_owen(lb_mc_sobol0(idx), lb_mc_hash(sd ^ 0xa511e9b3U)));
-    *u1 = lb_mc_unit(lb_mc_owen(lb_mc_sobol1(idx, 2 * digits), lb_mc_hash(sd ^ 0x63d83595U)));
+    *u1 = lb_mc_unit(lb_mc_owen(lb_mc_sobol1(idx), lb_mc_hash(sd ^ 0x63d83595U)));
 #endif
 }
 
@@ -176,7 +176,7 @@ LB_FN real mc_ext(__global const real* P, __global const float* lum, __global co
         bp = lb_mc_bilinear(&wu0, &wu1, w00, w10, w01, w11);
 #endif
         real sx, sy;
-        lb_mc_sphrect_sample(q, wu0, wu1, &sx, &sy);
+        lb_mc_sphrect_sample(&q, wu0, wu1, &sx, &sy);
         real pu = useSolid ? sx : ou + w * u0;
         real pv = useSolid ? sy : y0 + ey * u1;
         real r2 = pu * pu + pv * pv + on2;

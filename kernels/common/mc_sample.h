@@ -16,16 +16,42 @@ typedef unsigned int lb_u32;
  * built-ins with 4-wide SSE values, which stops its work-item loop
  * vectoriser (as common/lut.h says; measured here: solid-angle sampling 80x
  * area sampling with them); a few ulp are far below the estimators' noise. */
-#if defined(__OPENCL_C_VERSION__) && !LB_REAL_IS_DOUBLE
-#define LB_MC_COS(x) native_cos(x)
-#define LB_MC_SIN(x) native_sin(x)
-#define LB_MC_SQRT(x) native_sqrt(x)
-#else
-#define LB_MC_COS(x) cos(x)
-#define LB_MC_SIN(x) sin(x)
-#define LB_MC_SQRT(x) sqrt(x)
-#endif
 #define LB_MC_CLAMP(x, lo, hi) ((x) < (lo) ? (lo) : ((x) > (hi) ? (hi) : (x)))
+
+/* sin and cos of x (|x| < 2^20) in plain float arithmetic: x reduced by the
+ * nearest multiple q of pi/2 (two-constant Cody-Waite), Cephes' minimax
+ * polynomials of sinf / cosf on [-pi/4, pi/4], the quadrant q mod 4 by
+ * selects. Within 2e-7 of the double-precision values (host test). Even
+ * native_sin / native_cos are calls into PoCL's library, which stop the loop
+ * vectoriser; these are not. */
+LB_FN real lb_mc_sincos_poly(real x, real* c)
+{
+    real qf = x * R(0.63661977236758134);
+    qf = qf >= R(0) ? qf + R(0.5) : qf - R(0.5);
+    int q = (int)qf;
+    real fq = (real)q;
+    real r = (x - fq * R(1.5703125)) - fq * R(4.837512969970703125e-4);
+    r -= fq * R(7.5497899548918821e-8);
+    real r2 = r * r;
+    real sp = r + r * r2 * (R(-1.6666654611e-1) + r2 * (R(8.3321608736e-3) + r2 * R(-1.9515295891e-4)));
+    real cp = R(1) - R(0.5) * r2 + r2 * r2 * (R(4.166664568298827e-2) + r2 * (R(-1.388731625493765e-3) +
+                                                                              r2 * R(2.443315711809948e-5)));
+    int j = q & 3;
+    real s = (j & 1) ? cp : sp;
+    real co = (j & 1) ? sp : cp;
+    s = (j & 2) ? -s : s;
+    co = ((j + 1) & 2) ? -co : co;
+    *c = co;
+    return s;
+}
+
+#if defined(__OPENCL_C_VERSION__) && !LB_REAL_IS_DOUBLE
+#define LB_MC_SQRT(x) native_sqrt(x)
+#define LB_MC_SINCOS(x, c) lb_mc_sincos_poly(x, c)
+#else
+#define LB_MC_SQRT(x) sqrt(x)
+#define LB_MC_SINCOS(x, c) (*(c) = cos(x), sin(x))
+#endif
 
 /* ---- integer hashing and sequences ---------------------------------------- */
 
@@ -78,20 +104,26 @@ LB_FN lb_u32 lb_mc_owen(lb_u32 x, lb_u32 seed)
  * order): the van der Corput sequence, and the one with direction numbers
  * v_1 = 1/2, v_k = v_{k-1} ^ (v_{k-1} >> 1). Together a (0, 2)-sequence in
  * base 2: every 2^m consecutive points aligned at a multiple of 2^m are a
- * (0, m, 2)-net. `bits` bounds the index (i < 2^bits). */
+ * (0, m, 2)-net. Both loop-free, so that a per-pixel sequence keeps the
+ * work-item loop vectorisable. */
 LB_FN lb_u32 lb_mc_sobol0(lb_u32 i)
 {
     return lb_mc_reverse(i);
 }
 
-LB_FN lb_u32 lb_mc_sobol1(lb_u32 i, int bits)
+LB_FN lb_u32 lb_mc_sobol1(lb_u32 i)
 {
-    lb_u32 v = 0x80000000U, x = 0U;
-    for (int b = 0; b < bits; ++b) {
-        x ^= ((i >> b) & 1U) ? v : 0U;
-        v ^= v >> 1;
-    }
-    return x;
+    /* v_k holds bit r (counting from the top) iff r is a bit-subset of k - 1
+     * (Pascal's matrix mod 2, Lucas), so fraction bit r is the parity of the
+     * index bits c with r a subset of c: a superset sum over the five bits of
+     * the bit position, one shift-and-xor each, then the reversal. */
+    lb_u32 z = i;
+    z ^= (z >> 1) & 0x55555555U;
+    z ^= (z >> 2) & 0x33333333U;
+    z ^= (z >> 4) & 0x0f0f0f0fU;
+    z ^= (z >> 8) & 0x00ff00ffU;
+    z ^= (z >> 16) & 0x0000ffffU;
+    return lb_mc_reverse(z);
 }
 
 /* The b-th of the 24 permutations of a base-4 digit d, b = h mod 24: the
@@ -131,11 +163,17 @@ LB_FN lb_u32 lb_mc_zsobol_index(int col, int row, lb_u32 i, int lg, int digits, 
     lb_u32 morton = (((lb_mc_spread((lb_u32)row) << 1) | lb_mc_spread((lb_u32)col)) << lg) | i;
     int odd = lg & 1;
     lb_u32 idx = 0U;
-    for (int k = digits - 1; k >= odd; --k) {
+    /* a fixed trip count (digits <= 15), unrolled: no loop inside the
+     * work-item loop */
+#ifdef __OPENCL_C_VERSION__
+#pragma unroll
+#endif
+    for (int k = 0; k < 15; ++k) {
         int shift = 2 * k - odd;
-        lb_u32 digit = (morton >> shift) & 3U;
+        lb_u32 digit = (shift >= 0 ? morton >> shift : 0U) & 3U;
         lb_u32 higher = morton >> (shift + 2);
-        idx |= lb_mc_perm4(digit, lb_mc_hash(higher ^ seed) >> 8) << shift;
+        lb_u32 d = lb_mc_perm4(digit, lb_mc_hash(higher ^ seed) >> 8) << (shift >= 0 ? shift : 0);
+        idx |= k >= odd && k < digits ? d : 0U;
     }
     if (odd)
         idx |= (morton & 1U) ^ (lb_mc_hash((morton >> 1) ^ seed ^ 0x55555555U) & 1U);
@@ -187,22 +225,23 @@ LB_FN lb_mc_sphrect lb_mc_sphrect_setup(real x0, real y0, real z0, real ex, real
 
 /* The point (x, y) of the rectangle (at height z0) for (u0, u1) in [0,1)^2;
  * the directions to the points are uniform in solid angle. */
-LB_FN void lb_mc_sphrect_sample(lb_mc_sphrect q, real u0, real u1, real* x, real* y)
+LB_FN void lb_mc_sphrect_sample(const lb_mc_sphrect* q, real u0, real u1, real* x, real* y)
 {
-    real au = u0 * q.s + q.k;
-    real fu = (LB_MC_COS(au) * q.b0 - q.b1) / LB_MC_SIN(au);
-    real cu = (fu >= R(0) ? R(1) : R(-1)) / LB_MC_SQRT(fu * fu + q.b0 * q.b0);
+    real au = u0 * q->s + q->k;
+    real ca, sa = LB_MC_SINCOS(au, &ca);
+    real fu = (ca * q->b0 - q->b1) / sa;
+    real cu = (fu >= R(0) ? R(1) : R(-1)) / LB_MC_SQRT(fu * fu + q->b0 * q->b0);
     cu = LB_MC_CLAMP(cu, R(-0.99999994), R(0.99999994));
     real c2 = R(1) - cu * cu;
-    real xu = -(cu * q.z0) / LB_MC_SQRT(c2 > R(0) ? c2 : R(0));
-    xu = LB_MC_CLAMP(xu, q.x0, q.x1);
-    real d2 = xu * xu + q.z0 * q.z0;
-    real h0 = q.y0 / LB_MC_SQRT(d2 + q.y0 * q.y0);
-    real h1 = q.y1 / LB_MC_SQRT(d2 + q.y1 * q.y1);
+    real xu = -(cu * q->z0) / LB_MC_SQRT(c2 > R(0) ? c2 : R(0));
+    xu = LB_MC_CLAMP(xu, q->x0, q->x1);
+    real d2 = xu * xu + q->z0 * q->z0;
+    real h0 = q->y0 / LB_MC_SQRT(d2 + q->y0 * q->y0);
+    real h1 = q->y1 / LB_MC_SQRT(d2 + q->y1 * q->y1);
     real hv = h0 + u1 * (h1 - h0), hv2 = hv * hv;
-    real yv = hv2 < R(1) - R(1e-6) ? hv * LB_MC_SQRT(d2) / LB_MC_SQRT(R(1) - hv2) : q.y1;
+    real yv = hv2 < R(1) - R(1e-6) ? hv * LB_MC_SQRT(d2) / LB_MC_SQRT(R(1) - hv2) : q->y1;
     *x = xu;
-    *y = LB_MC_CLAMP(yv, q.y0, q.y1);
+    *y = LB_MC_CLAMP(yv, q->y0, q->y1);
 }
 
 /* ---- the bilinear warp (Hart, Pharr, Mueller, Lopes, McGuire, Shirley 2020) */
@@ -306,7 +345,7 @@ LB_FN real lb_mc_proj_cdf(const lb_mc_proj* p, real phi, real* dA, real* rin2, r
     real a = R(0), da = R(0), ri = R(0), ro = R(0);
     for (int k = 0; k < LB_MC_PV; ++k) {
         real f = clamp(phi, p->lo[k], p->hi[k]);
-        real cf = LB_MC_COS(f), sf = LB_MC_SIN(f);
+        real cf, sf = LB_MC_SINCOS(f, &cf);
         /* the great circle's point at azimuth f: m x (-sin f, cos f, 0), signed
          * to point along (cos f, sin f) */
         real cx = -p->mz[k] * cf, cy = -p->mz[k] * sf, cz = p->mx[k] * cf + p->my[k] * sf;
@@ -348,5 +387,6 @@ LB_FN real3 lb_mc_proj_sample(const lb_mc_proj* p, real u0, real u1)
     lb_mc_proj_cdf(p, phi, &da, &ri, &ro);
     real r2 = mix(ri, ro, u1);
     real rho = sqrt(r2);
-    return R3(rho * LB_MC_COS(phi), rho * LB_MC_SIN(phi), sqrt(fmax(R(0), R(1) - r2)));
+    real cp, sp = LB_MC_SINCOS(phi, &cp);
+    return R3(rho * cp, rho * sp, sqrt(fmax(R(0), R(1) - r2)));
 }
