@@ -17,6 +17,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include "lb_build_config.h"
 
 namespace lb::test {
 

@@ -13,10 +13,7 @@
 #include <functional>
 #include <set>
 #include <sstream>
-
-#ifndef LB_SOURCE_KERNEL_DIR
-#define LB_SOURCE_KERNEL_DIR "kernels"
-#endif
+#include "lb_build_config.h"
 
 namespace lb::ocl {
 namespace fs = std::filesystem;

@@ -23,6 +23,7 @@
 #include <set>
 #include <sstream>
 #include <sys/wait.h>
+#include "lb_build_config.h"
 
 namespace lb::experiments {
 

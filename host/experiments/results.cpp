@@ -27,10 +27,7 @@
 #include <sys/file.h>
 #include <sys/utsname.h>
 #include <unistd.h>
-
-#ifndef LB_VERSION
-#error "LB_VERSION (the project version) is defined by CMakeLists.txt"
-#endif
+#include "lb_build_config.h"
 
 namespace lb::results {
 

@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <functional>
 #include <mutex>
+#include "lb_build_config.h"
 
 namespace lb::ltc {
 
@@ -149,11 +150,7 @@ std::vector<float> packed(const Table& t)
 std::string dataDir()
 {
     if (const char* env = std::getenv("LUMIBENCH_DATA_DIR"); env && *env) return env;
-#ifdef LB_SOURCE_DIR
     return std::string(LB_SOURCE_DIR) + "/data";
-#else
-    return "data";
-#endif
 }
 
 std::string defaultTablePath() { return dataDir() + "/ltc/ggx.json"; }

@@ -22,10 +22,7 @@
 #include <iostream>
 #include <limits>
 #include <mutex>
-
-#ifndef LB_SOURCE_DIR
-#define LB_SOURCE_DIR "."
-#endif
+#include "lb_build_config.h"
 
 extern char** environ;
 

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include "lb_build_config.h"
 
 namespace lb::photometry {
 

@@ -28,6 +28,7 @@
 #include <numeric>
 #include <set>
 #include <tuple>
+#include "lb_build_config.h"
 
 namespace lb::tune {
 

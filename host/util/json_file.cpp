@@ -9,6 +9,7 @@
 #include <fmt/ranges.h>
 
 #include <filesystem>
+#include "lb_build_config.h"
 
 namespace lb::util {
 

@@ -21,6 +21,7 @@
 #include <fcntl.h>
 #include <sys/file.h>
 #include <unistd.h>
+#include "lb_build_config.h"
 
 namespace lb {
 namespace {

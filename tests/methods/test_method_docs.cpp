@@ -6,6 +6,7 @@
 
 #include <fstream>
 #include <sstream>
+#include "lb_build_config.h"
 
 namespace lb::methods {
 namespace {

@@ -20,6 +20,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include "lb_build_config.h"
 
 namespace lb::methods {
 namespace {
