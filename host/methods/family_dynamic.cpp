@@ -19,12 +19,17 @@ Family dynamicFamily(const std::string& name, const std::string& define, const s
         f.params.push_back(Param::real("skew", 0.1, 1e-3, 1.0, Scale::Log,
                                        "NP: receiver normal skewed to this component towards the light plane "
                                        "when it misses the plane (thesis 4.2)"));
-    f.defines = [define](const MethodSpec&) { return define; };
-    addStraightLineOptions(f, rect, [needsNoClip](const Scene& scene, const MethodSpec&) {
+    const StraightLine straight = addStraightLineOptions(f, rect, [needsNoClip](const Scene& scene, const MethodSpec&) {
         return !needsNoClip || lightAboveEveryHorizon(scene);
     });
     f.args = {"skew"};
-    f.setArgs = [skew](LaunchContext& c) { c.realArg("skew", skew ? c.spec.num("skew") : 0.1); };
+    f.plan = [define, straight, skew](const MethodSpec& s, const Scene& scene, const photometry::Table& t,
+                                      const ocl::DeviceInfo& dev, Precision p) {
+        Plan plan = straight.plan(s, scene, t, dev, p);
+        plan.defines = define + plan.defines;
+        plan.args = {PlanArg::real("skew", skew ? s.num("skew") : 0.1)};
+        return plan;
+    };
     return f;
 }
 }  // namespace

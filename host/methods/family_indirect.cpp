@@ -54,6 +54,48 @@ cl::Buffer intBuffer(LaunchContext& c, const std::vector<cl_int>& v)
     return b;
 }
 
+// The E_dir passes' buffers and kernels (edir_nodes, edir_delta), and the
+// render kernel's edir, grid, delta.
+void bindEdir(LaunchContext& c, const NodeGrid& g, double dirTol, int dirSplits)
+{
+    c.stats["edir_nodes"] = g.nodes;
+    c.named["grid"] = intBuffer(c, g.grid);
+    c.named["cells"] = intBuffer(c, g.cells);
+    c.named["edir"] = c.outputReals(g.nodes);
+    c.named["centre"] = c.outputReals(g.cells.back());
+    c.named["edir_err"] = c.outputReals(g.nodes);
+    c.named["delta"] = c.outputReals(LB_ROOM_NSURF);
+    c.arg("edir", c.named["edir"]);
+    c.arg("grid", c.named["grid"]);
+    c.arg("delta", c.named["delta"]);
+    c.bind(c.pass("edir_nodes"), c.named["P"], c.named["lum"], c.named["grid"], c.named["cells"], cl_int(g.nodes),
+           c.named["edir"], c.named["centre"], c.named["edir_err"], LaunchContext::Real{dirTol}, cl_int(dirSplits));
+    c.bind(c.pass("edir_delta"), c.named["grid"], c.named["cells"], c.named["edir"], c.named["centre"],
+           c.named["edir_err"], c.named["delta"]);
+    c.stats["edir_points"] = g.nodes + g.cells.back();
+}
+
+// The reference's statistics, and the reflected flux rho int E_dir dA over
+// walls and ceiling by the nodes' Gauss rule.
+void finishIndirectReference(LaunchContext& c, const NodeGrid& g)
+{
+    finishReference(c);
+    auto e = c.readReals(c.named.at("edir"), g.nodes);
+    auto delta = c.readReals(c.named.at("delta"), LB_ROOM_NSURF);
+    double flux = 0;
+    for (int k = 0; k < LB_ROOM_NSURF; ++k) {
+        glm::dvec3 o, a, b, nn;
+        f64::lb_room_surface(k, &o, &a, &b, &nn);
+        int gs = g.grid[3 * k], gt = g.grid[3 * k + 1], base = g.grid[3 * k + 2];
+        double cellArea = glm::length(a) / gs * glm::length(b) / gt;
+        for (int it = 0; it < 4 * gt; ++it)
+            for (int is = 0; is < 4 * gs; ++is)
+                flux += cellArea * f64::lb_gl4_w(it % 4) * f64::lb_gl4_w(is % 4) * e[base + it * 4 * gs + is];
+    }
+    c.stats["reflected_flux_lm"] = c.scene.albedo * flux;
+    c.stats["edir_interp_delta"] = delta;
+}
+
 void registerIndirectReference(Registry& r)
 {
     Family f;
@@ -70,29 +112,19 @@ void registerIndirectReference(Registry& r)
         Param::real("dir_cell", 0.125, 0.01, 1.0, Scale::Log,
                     "side (m) of the cells of the E_dir node grid (4 x 4 Gauss nodes each)", false),
     };
-    f.defines = [](const MethodSpec&) { return std::string(); };
     f.expensive = true;
     f.bandRows = 16;
     f.args = {"edir", "grid", "delta", "errout", "splits_out", "rel_tol", "max_splits"};
-    f.setArgs = [](LaunchContext& c) {
-        NodeGrid g = nodeGrid(c.spec.num("dir_cell"));
-        c.stats["edir_nodes"] = g.nodes;
-        c.named["grid"] = intBuffer(c, g.grid);
-        c.named["cells"] = intBuffer(c, g.cells);
-        c.named["edir"] = c.outputReals(g.nodes);
-        c.named["centre"] = c.outputReals(g.cells.back());
-        c.named["edir_err"] = c.outputReals(g.nodes);
-        c.named["delta"] = c.outputReals(LB_ROOM_NSURF);
-        c.arg("edir", c.named["edir"]);
-        c.arg("grid", c.named["grid"]);
-        c.arg("delta", c.named["delta"]);
-        bindReferenceArgs(c);
-        c.bind(c.pass("edir_nodes"), c.named["P"], c.named["lum"], c.named["grid"], c.named["cells"], cl_int(g.nodes),
-               c.named["edir"], c.named["centre"], c.named["edir_err"], LaunchContext::Real{c.spec.num("dir_tol")},
-               static_cast<cl_int>(c.spec.integer("dir_splits")));
-        c.bind(c.pass("edir_delta"), c.named["grid"], c.named["cells"], c.named["edir"], c.named["centre"],
-               c.named["edir_err"], c.named["delta"]);
-        c.stats["edir_points"] = g.nodes + g.cells.back();
+    f.plan = [](const MethodSpec& s, const Scene& scene, const photometry::Table&, const ocl::DeviceInfo&, Precision) {
+        Plan p;
+        p.args = {PlanArg::device("edir"), PlanArg::device("grid"), PlanArg::device("delta")};
+        referenceArgs(p, s, scene);
+        const NodeGrid g = nodeGrid(s.num("dir_cell"));
+        p.bind = [g, dirTol = s.num("dir_tol"), dirSplits = s.integer("dir_splits")](LaunchContext& c) {
+            bindEdir(c, g, dirTol, static_cast<int>(dirSplits));
+        };
+        p.finish = [g](LaunchContext& c) { finishIndirectReference(c, g); };
+        return p;
     };
     f.prePasses = [](LaunchContext& c) {
         std::vector<StageEvent> ev;
@@ -100,26 +132,6 @@ void registerIndirectReference(Registry& r)
         ev.push_back({"edir", c.rt.launch1D(c.pass("edir_nodes"), n, 64)});
         ev.push_back({"edir", c.rt.launch1D(c.pass("edir_delta"), LB_ROOM_NSURF, 1)});
         return ev;
-    };
-    f.finish = [](LaunchContext& c) {
-        finishReference(c);
-        // The reflected flux rho int E_dir dA over walls and ceiling by the
-        // nodes' Gauss rule.
-        NodeGrid g = nodeGrid(c.spec.num("dir_cell"));
-        auto e = c.readReals(c.named.at("edir"), g.nodes);
-        auto delta = c.readReals(c.named.at("delta"), LB_ROOM_NSURF);
-        double flux = 0;
-        for (int k = 0; k < LB_ROOM_NSURF; ++k) {
-            glm::dvec3 o, a, b, nn;
-            f64::lb_room_surface(k, &o, &a, &b, &nn);
-            int gs = g.grid[3 * k], gt = g.grid[3 * k + 1], base = g.grid[3 * k + 2];
-            double cellArea = glm::length(a) / gs * glm::length(b) / gt;
-            for (int it = 0; it < 4 * gt; ++it)
-                for (int is = 0; is < 4 * gs; ++is)
-                    flux += cellArea * f64::lb_gl4_w(it % 4) * f64::lb_gl4_w(is % 4) * e[base + it * 4 * gs + is];
-        }
-        c.stats["reflected_flux_lm"] = c.scene.albedo * flux;
-        c.stats["edir_interp_delta"] = delta;
     };
     r.add(f);
 }
@@ -221,14 +233,35 @@ void launchSampling(LaunchContext& c, int n, std::vector<StageEvent>& ev)
     ev.push_back({"cluster", c.rt.launch1D(c.pass("sample"), n, 64)});
 }
 
-void bindRender(LaunchContext& c, int nlights, double clamp)
+// The RSM methods' plan: the direct light's define, the render kernel's
+// arguments (the lights the passes fill, kTex reals each; their count; the
+// squared clamp distance), the passes' binder (`bind`) and finishRsm.
+Plan rsmPlan(const MethodSpec& s, int nlights, double clamp, std::function<void(LaunchContext&)> bind)
 {
-    c.stats["lights"] = nlights;
-    c.named["lights"] = c.outputReals(static_cast<size_t>(kTex) * nlights);
-    c.arg("lights", c.named["lights"]);
-    c.arg("nlights", cl_int(nlights));
-    c.realArg("clamp2", clamp * clamp);
+    Plan p;
+    p.defines = rsmDefines(s);
+    p.args = {PlanArg::outputReals("lights", static_cast<size_t>(kTex) * nlights), PlanArg::integer("nlights", nlights),
+              PlanArg::real("clamp2", clamp * clamp)};
+    p.bind = [nlights, bind = std::move(bind)](LaunchContext& c) {
+        c.stats["lights"] = nlights;
+        bind(c);
+    };
+    p.finish = finishRsm;
+    return p;
 }
+
+// A family's plan hook from its number of lights and clamp distance and the
+// binder of its passes.
+PlanHook rsmHook(std::function<int(const MethodSpec&)> nlights, std::function<double(const MethodSpec&)> clamp,
+                 std::function<void(LaunchContext&)> bind)
+{
+    return [=](const MethodSpec& s, const Scene&, const photometry::Table&, const ocl::DeviceInfo&, Precision) {
+        return rsmPlan(s, nlights(s), clamp(s), bind);
+    };
+}
+
+int lightsOfN(const MethodSpec& s) { return static_cast<int>(s.integer("n")); }
+int lightsOfK(const MethodSpec& s) { return static_cast<int>(s.integer("k")); }
 
 // vpl, and the same family as the indirect scene's "mc": the equal-time
 // partner the runner fits (VPL count N at the time of a method).
@@ -246,21 +279,19 @@ void registerVpl(Registry& r, const std::string& name)
     f.params.push_back(
         Param::real("clamp", 0.1, 0.0, 1.0, Scale::Linear, "distance (m) below which 1/r^2 is clamped (0: none)"));
     f.validate = checkRsm;
-    f.defines = rsmDefines;
     f.args = {"lights", "nlights", "clamp2"};
-    f.setArgs = [](LaunchContext& c) {
-        const int n = static_cast<int>(c.spec.integer("n"));
-        setupRsm(c);
-        bindRender(c, n, c.spec.num("clamp"));
-        setupSampling(c, n, "lights");
-    };
+    f.plan = rsmHook(
+        lightsOfN, [](const MethodSpec& s) { return s.num("clamp"); },
+        [](LaunchContext& c) {
+            setupRsm(c);
+            setupSampling(c, lightsOfN(c.spec), "lights");
+        });
     f.prePasses = [](LaunchContext& c) {
         std::vector<StageEvent> ev;
         ev.push_back({"rsm", launchRsm(c)});
         launchSampling(c, static_cast<int>(c.spec.integer("n")), ev);
         return ev;
     };
-    f.finish = finishRsm;
     if (name == "vpl") f.benchSpecs = {"vpl:n=64", "vpl:n=1024", "vpl:direct=point"};
     r.add(f);
 }
@@ -285,7 +316,6 @@ void setupClusters(LaunchContext& c)
 {
     const int T = rsmSide(c), K = clusterCount(c);
     setupRsm(c);
-    bindRender(c, K, 0.0);
     c.named["centres"] = c.outputReals(static_cast<size_t>(kTex) * K);
     c.named["label"] = c.outputInts(static_cast<size_t>(T) * T);
     c.named["partial"] = c.outputReals(static_cast<size_t>(kPart) * K * T);
@@ -319,18 +349,19 @@ void registerKmeans(Registry& r)
     f.file = "indirect.cl";
     f.params = clusterParams(64, 4);
     f.validate = checkRsm;
-    f.defines = rsmDefines;
     f.args = {"lights", "nlights", "clamp2"};
-    f.setArgs = [](LaunchContext& c) {
-        const int T = rsmSide(c), K = clusterCount(c);
-        using Real = LaunchContext::Real;
-        setupClusters(c);
-        c.named["seedlights"] = c.outputReals(static_cast<size_t>(kTex) * K);
-        setupSampling(c, K, "seedlights");
-        c.bind(c.pass("centres_from"), c.named["tex"], c.named["pick"], cl_int(K), c.named["centres"]);
-        c.bind(c.pass("km_assign"), c.named["tex"], cl_int(T), c.named["centres"], cl_int(K), Real{c.spec.num("wx")},
-               Real{c.spec.num("wn")}, Real{c.spec.num("wb")}, c.named["label"]);
-    };
+    f.plan = rsmHook(
+        lightsOfK, [](const MethodSpec&) { return 0.0; },
+        [](LaunchContext& c) {
+            const int T = rsmSide(c), K = clusterCount(c);
+            using Real = LaunchContext::Real;
+            setupClusters(c);
+            c.named["seedlights"] = c.outputReals(static_cast<size_t>(kTex) * K);
+            setupSampling(c, K, "seedlights");
+            c.bind(c.pass("centres_from"), c.named["tex"], c.named["pick"], cl_int(K), c.named["centres"]);
+            c.bind(c.pass("km_assign"), c.named["tex"], cl_int(T), c.named["centres"], cl_int(K),
+                   Real{c.spec.num("wx")}, Real{c.spec.num("wn")}, Real{c.spec.num("wb")}, c.named["label"]);
+        });
     f.prePasses = [](LaunchContext& c) {
         const int T = rsmSide(c), K = clusterCount(c);
         std::vector<StageEvent> ev;
@@ -343,7 +374,6 @@ void registerKmeans(Registry& r)
         }
         return ev;
     };
-    f.finish = finishRsm;
     f.benchSpecs = {"kmeans:k=16", "kmeans:k=256"};
     r.add(f);
 }
@@ -385,7 +415,7 @@ int setupPyramid(LaunchContext& c, int T)
     return levels;
 }
 
-void acrsmSetArgs(LaunchContext& c)
+void acrsmBind(LaunchContext& c)
 {
     const int T = rsmSide(c), K = clusterCount(c);
     setupClusters(c);
@@ -453,12 +483,11 @@ void registerAcrsm(Registry& r)
     f.params.push_back(Param::integer("settle", 8, 1, 1000, Scale::Linear,
                                       "frames of a static scene before render() reads the image (its steady state)"));
     f.validate = checkAcrsm;
-    f.defines = rsmDefines;
     f.args = {"lights", "nlights", "clamp2"};
     f.settleFrames = [](const MethodSpec& s) { return static_cast<int>(s.integer("settle")); };
-    f.setArgs = acrsmSetArgs;
+    f.plan = rsmHook(
+        lightsOfK, [](const MethodSpec&) { return 0.0; }, acrsmBind);
     f.prePasses = acrsmPasses;
-    f.finish = finishRsm;
     f.benchSpecs = {"acrsm:k=16", "acrsm:k=256"};
     r.add(f);
 }

@@ -27,16 +27,21 @@ const std::vector<std::string> kMcArgs = {"st", "n", "extra", "seed", "np", "lg"
 
 // The sampling arguments of the extended path (kernels/mc.cl: mc_ext); `var`
 // gets the per-pixel variance where the a-trous filter needs it.
-void bindSampling(LaunchContext& c, const McOptions& o, int n, bool extra, std::uint64_t seed)
+std::vector<PlanArg> samplingArgs(const McOptions& o, int n, bool extra, std::uint64_t seed, int res)
 {
-    c.arg("seed", cl_int(static_cast<std::int32_t>(static_cast<std::uint32_t>(seed))));
-    c.arg("np", cl_int(o.projectedOf(n)));
-    c.arg("lg", cl_int(mcLog2(n + (extra ? 1 : 0))));
-    c.realArg("min_solid", o.minSolid);
-    size_t npx = o.denoise == "atrous" ? static_cast<size_t>(c.res()) * c.res() : 1;
-    cl::Buffer var = c.outputReals(npx);
-    c.named["var"] = var;
-    c.arg("var", var);
+    size_t npx = o.denoise == "atrous" ? static_cast<size_t>(res) * res : 1;
+    return {PlanArg::integer("seed", static_cast<std::int32_t>(static_cast<std::uint32_t>(seed))),
+            PlanArg::integer("np", o.projectedOf(n)), PlanArg::integer("lg", mcLog2(n + (extra ? 1 : 0))),
+            PlanArg::real("min_solid", o.minSolid), PlanArg::outputReals("var", npx)};
+}
+
+// mc.cl's point-set arguments, then the sampling arguments.
+std::vector<PlanArg> mcArgs(std::vector<double> st, int n, double extra, std::vector<PlanArg> sampling)
+{
+    std::vector<PlanArg> a = {PlanArg::realBuffer("st", std::move(st)), PlanArg::integer("n", n),
+                              PlanArg::single("extra", static_cast<float>(extra))};
+    a.insert(a.end(), sampling.begin(), sampling.end());
+    return a;
 }
 constexpr double kR2[kMcPointsMax][2] = {{0.5, 0.5},       {0.2549, 0.0698}, {0.0098, 0.6397}, {0.7646, 0.2095},
                                          {0.5195, 0.7794}, {0.2744, 0.3492}, {0.0293, 0.919},  {0.7841, 0.4889},
@@ -75,23 +80,20 @@ void registerMcPoints(Registry& r, const Family& mc)
         int k = pointIndex(name);
         return k > s.integer("n");
     };
-    f.defines = [](const MethodSpec&) { return std::string(); };
-    f.sceneDefines = [](const MethodSpec& s, const Scene& scene, const photometry::Table& t) {
-        return analyse(scene, t, s.str("lookup") == "lut", s.str("specialize") == "auto").defines();
-    };
-    f.lumBuffer = mc.lumBuffer;
     f.args = kMcArgs;
-    f.setArgs = [](LaunchContext& c) {
-        int n = static_cast<int>(c.spec.integer("n"));
-        bindSampling(c, McOptions{}, n, false, 0);
+    f.plan = [](const MethodSpec& s, const Scene& scene, const photometry::Table& t, const ocl::DeviceInfo&,
+                Precision) {
+        Plan plan;
+        plan.defines = analyse(scene, t, s.str("lookup") == "lut", s.str("specialize") == "auto").defines();
+        plan.lum = [s, &t] { return lookupBuffer(s, t); };
+        const int n = static_cast<int>(s.integer("n"));
         std::vector<double> st;
         for (int k = 1; k <= n; ++k) {
-            st.push_back(c.spec.num(fmt::format("s{}", k)));
-            st.push_back(c.spec.num(fmt::format("t{}", k)));
+            st.push_back(s.num(fmt::format("s{}", k)));
+            st.push_back(s.num(fmt::format("t{}", k)));
         }
-        c.arg("st", c.realBuffer(st));
-        c.arg("n", cl_int(n));
-        c.arg("extra", cl_float(0));
+        plan.args = mcArgs(st, n, 0, samplingArgs(McOptions{}, n, false, 0, scene.res));
+        return plan;
     };
     r.add(f);
 }
@@ -142,21 +144,18 @@ void registerMc(Registry& r)
         specializeParam("auto: smallest kernel for the scene (methods/specialize.h); none: the general one"),
     };
     f.validate = validateMc;
-    f.defines = [](const MethodSpec& s) { return mcDefines(mcOptions(s)); };
-    f.sceneDefines = [](const MethodSpec& s, const Scene& scene, const photometry::Table& t) {
-        auto o = mcOptions(s);
-        int n = static_cast<int>(s.integer("n"));
-        return analyse(scene, t, s.str("lookup") == "lut", s.str("specialize") == "auto").defines() +
-            mcSceneDefines(o, scene, n);
-    };
-    f.lumBuffer = lookupBuffer;
     f.args = kMcArgs;
-    f.setArgs = [](LaunchContext& c) {
-        auto o = mcOptions(c.spec);
-        int n = static_cast<int>(c.spec.integer("n"));
-        double extra = c.spec.num("extra");
-        auto seed = static_cast<std::uint64_t>(c.spec.integer("seed"));
-        bindSampling(c, o, n, extra > 0, seed);
+    f.plan = [](const MethodSpec& s, const Scene& scene, const photometry::Table& t, const ocl::DeviceInfo&,
+                Precision) {
+        const McOptions o = mcOptions(s);
+        const int n = static_cast<int>(s.integer("n"));
+        const double extra = s.num("extra");
+        const auto seed = static_cast<std::uint64_t>(s.integer("seed"));
+        Plan plan;
+        plan.defines = mcDefines(o) +
+            analyse(scene, t, s.str("lookup") == "lut", s.str("specialize") == "auto").defines() +
+            mcSceneDefines(o, scene, n);
+        plan.lum = [s, &t] { return lookupBuffer(s, t); };
         std::vector<double> st;
         if (o.sequence == "shared") {
             st = samplePoints(o.pattern, n, seed);
@@ -165,10 +164,9 @@ void registerMc(Registry& r)
                 st.insert(st.end(), more.begin(), more.end());
             }
         }
-        c.arg("st", c.realBuffer(st));
-        c.arg("n", cl_int(n));
-        c.arg("extra", cl_float(extra));
-        bindDenoise(c, o);
+        plan.args = mcArgs(st, n, extra, samplingArgs(o, n, extra > 0, seed, scene.res));
+        plan.bind = [o](LaunchContext& c) { bindDenoise(c, o); };
+        return plan;
     };
     f.postPasses = [](LaunchContext& c) { return denoisePasses(c, mcOptions(c.spec), c.spec.num("atrous_sigma")); };
     f.benchSpecs = {"mc:n=8", "mc:n=32", "mc:n=32,lookup=exact"};

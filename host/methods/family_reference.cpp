@@ -8,24 +8,22 @@
 
 namespace lb::methods {
 
-void bindReferenceArgs(LaunchContext& c)
+void referenceArgs(Plan& p, const MethodSpec& s, const Scene& scene)
 {
-    size_t n = static_cast<size_t>(c.res()) * c.res();
-    c.named["err"] = c.outputReals(n);
-    c.named["splits"] = c.outputInts(n);
-    c.arg("errout", c.named["err"]);
-    c.arg("splits_out", c.named["splits"]);
-    c.realArg("rel_tol", c.spec.num("tol"));
-    c.arg("max_splits", static_cast<cl_int>(c.spec.integer("max_splits")));
+    const size_t n = static_cast<size_t>(scene.res) * scene.res;
+    p.args.push_back(PlanArg::outputReals("errout", n));
+    p.args.push_back(PlanArg::outputInts("splits_out", n));
+    p.args.push_back(PlanArg::real("rel_tol", s.num("tol")));
+    p.args.push_back(PlanArg::integer("max_splits", s.integer("max_splits")));
 }
 
 void finishReference(LaunchContext& c)
 {
     size_t n = static_cast<size_t>(c.res()) * c.res();
     Image err(c.res(), c.res());
-    err.px = c.readReals(c.named.at("err"), n);
+    err.px = c.readReals(c.named.at("errout"), n);
     std::vector<cl_int> splits(n);
-    c.rt.queue().enqueueReadBuffer(c.named.at("splits"), CL_TRUE, 0, n * sizeof(cl_int), splits.data());
+    c.rt.queue().enqueueReadBuffer(c.named.at("splits_out"), CL_TRUE, 0, n * sizeof(cl_int), splits.data());
     c.stats["splits_total"] = std::accumulate(splits.begin(), splits.end(), 0L);
     c.stats["splits_max"] = *std::max_element(splits.begin(), splits.end());
     c.stats["pixels_at_budget"] =
@@ -37,9 +35,12 @@ void finishReference(LaunchContext& c)
 void referenceIo(Family& f)
 {
     f.args = {"errout", "splits_out", "rel_tol", "max_splits"};
-    f.setArgs = bindReferenceArgs;
-    f.finish = finishReference;
-    f.defines = [](const MethodSpec&) { return std::string(); };
+    f.plan = [](const MethodSpec& s, const Scene& scene, const photometry::Table&, const ocl::DeviceInfo&, Precision) {
+        Plan p;
+        referenceArgs(p, s, scene);
+        p.finish = finishReference;
+        return p;
+    };
     f.expensive = true;
 }
 

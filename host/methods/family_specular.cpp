@@ -53,22 +53,36 @@ Family specularMc()
     };
     // The straight-line form of sampling=light (kernels/common/smc_lanes.inc);
     // the lookup, specialize and lanes parameters as the diffuse families'.
-    addStraightLineOptions(f, "-DLB_SMC_RECT",
-                           [](const Scene&, const MethodSpec& s) { return s.str("sampling") == "light"; });
-    f.defines = [](const MethodSpec& s) {
-        const std::string& m = s.str("sampling");
-        return m == "light" ? std::string() : (m == "vndf" ? "-DLB_SMC_SAMPLING=1" : "-DLB_SMC_SAMPLING=2");
-    };
+    const StraightLine straight = addStraightLineOptions(
+        f, "-DLB_SMC_RECT", [](const Scene&, const MethodSpec& s) { return s.str("sampling") == "light"; });
     f.args = {"st", "n", "seed"};
-    f.setArgs = [](LaunchContext& c) {
-        int n = static_cast<int>(c.spec.integer("n"));
-        auto st = samplePoints(c.spec.str("pattern"), n, static_cast<std::uint64_t>(c.spec.integer("seed")));
-        c.arg("st", c.realBuffer(st));
-        c.arg("n", cl_int(n));
-        c.arg("seed", cl_int(c.spec.integer("seed")));
+    f.plan = [straight](const MethodSpec& s, const Scene& scene, const photometry::Table& t, const ocl::DeviceInfo& dev,
+                        Precision p) {
+        Plan plan = straight.plan(s, scene, t, dev, p);
+        const std::string& m = s.str("sampling");
+        plan.defines =
+            (m == "light" ? "" : (m == "vndf" ? "-DLB_SMC_SAMPLING=1" : "-DLB_SMC_SAMPLING=2")) + plan.defines;
+        const int n = static_cast<int>(s.integer("n"));
+        const long seed = s.integer("seed");
+        plan.args = {PlanArg::realBuffer("st", samplePoints(s.str("pattern"), n, static_cast<std::uint64_t>(seed))),
+                     PlanArg::integer("n", n), PlanArg::integer("seed", seed)};
+        return plan;
     };
     f.benchSpecs = {"mc:n=8", "mc:n=32", "mc:n=8,sampling=vndf", "mc:n=8,sampling=mis"};
     return f;
+}
+
+// ltc's structural defines: the radiance estimator, the cubature's
+// triangulation, the exact G_Omega.
+std::string ltcDefines(const std::string& rad, const std::string& triangulation, const std::string& gOmega)
+{
+    std::string d;
+    if (rad == "structured") d += " -DLB_LTC_RADIANCE=1";
+    if (rad == "cp") d += " -DLB_LTC_RADIANCE=2";
+    if (rad == "point") d += " -DLB_LTC_RADIANCE=3";
+    if (rad == "cubature" && triangulation == "delaunay") d += " -DLB_CUB_TRI=1";
+    if (gOmega == "exact") d += " -DLB_LTC_EXACT_G";
+    return d.empty() ? d : d.substr(1);
 }
 
 // ltc: energy-equivalent radiance times the LTC integral of the light.
@@ -100,37 +114,24 @@ Family specularLtc()
     auto unclipped = [](const Scene& scene, const MethodSpec& s) {
         return lightAboveEveryHorizon(scene, s.num("horizon_eps") + s.num("plane_eps"));
     };
-    addStraightLineOptions(f, "-DLB_LTC_RECT", [unclipped](const Scene& scene, const MethodSpec& s) {
-        if (s.str("g_omega") != "estimate") return false;
-        if (s.str("radiance") == "point") return true;
-        return s.str("radiance") == "cubature" && s.str("triangulation") == "fan" &&
-            (unclipped(scene, s) || horizonAlongU(scene));
-    });
-    f.sceneDefines = [straight = f.sceneDefines, unclipped](const MethodSpec& s, const Scene& scene,
-                                                            const photometry::Table& t) {
-        std::string d = straight(s, scene, t);
-        if (d.find("-DLB_LTC_RECT") != std::string::npos && s.str("radiance") == "cubature" && !unclipped(scene, s))
-            d += " -DLB_CUB_RECT_CLIP";
-        return d;
-    };
-    f.defines = [](const MethodSpec& s) {
-        std::string d;
-        const std::string& rad = s.str("radiance");
-        if (rad == "structured") d += " -DLB_LTC_RADIANCE=1";
-        if (rad == "cp") d += " -DLB_LTC_RADIANCE=2";
-        if (rad == "point") d += " -DLB_LTC_RADIANCE=3";
-        if (rad == "cubature" && s.str("triangulation") == "delaunay") d += " -DLB_CUB_TRI=1";
-        if (s.str("g_omega") == "exact") d += " -DLB_LTC_EXACT_G";
-        return d.empty() ? d : d.substr(1);
-    };
+    const StraightLine straight =
+        addStraightLineOptions(f, "-DLB_LTC_RECT", [unclipped](const Scene& scene, const MethodSpec& s) {
+            if (s.str("g_omega") != "estimate") return false;
+            if (s.str("radiance") == "point") return true;
+            return s.str("radiance") == "cubature" && s.str("triangulation") == "fan" &&
+                (unclipped(scene, s) || horizonAlongU(scene));
+        });
     f.args = {"ltc", "plane_eps", "horizon_eps"};
-    f.setArgs = [](LaunchContext& c) {
-        std::vector<float> t = ltc::packed(ltc::defaultTable());
-        cl::Buffer b(c.rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, t.size() * sizeof(float), t.data());
-        c.buffers.push_back(b);
-        c.arg("ltc", b);
-        c.realArg("plane_eps", c.spec.num("plane_eps"));
-        c.realArg("horizon_eps", c.spec.num("horizon_eps"));
+    f.plan = [straight, unclipped](const MethodSpec& s, const Scene& scene, const photometry::Table& t,
+                                   const ocl::DeviceInfo& dev, Precision p) {
+        Plan plan = straight.plan(s, scene, t, dev, p);
+        const std::string& rad = s.str("radiance");
+        if (straight.uses(s, scene) && rad == "cubature" && !unclipped(scene, s)) plan.defines += " -DLB_CUB_RECT_CLIP";
+        plan.defines = ltcDefines(rad, s.str("triangulation"), s.str("g_omega")) + plan.defines;
+        plan.args = {PlanArg::floatBuffer("ltc", ltc::packed(ltc::defaultTable())),
+                     PlanArg::real("plane_eps", s.num("plane_eps")),
+                     PlanArg::real("horizon_eps", s.num("horizon_eps"))};
+        return plan;
     };
     f.benchSpecs = {"ltc", "ltc:triangulation=delaunay", "ltc:radiance=point", "ltc:radiance=structured",
                     "ltc:g_omega=exact"};

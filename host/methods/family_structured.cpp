@@ -11,11 +11,11 @@ void registerStructured(Registry& r)
     f.name = "structured";
     f.summary = "structured sampling: corners + barycentre of the clipped light (paper Eq. 4)";
     f.file = "structured.cl";
-    f.defines = [](const MethodSpec&) { return std::string(); };
     // the straight-line form samples the whole rectangle: only where nothing is clipped
-    addStraightLineOptions(f, "-DLB_STRUCT_RECT",
-                           [](const Scene& scene, const MethodSpec&) { return lightAboveEveryHorizon(scene); });
-    f.setArgs = [](LaunchContext&) {};
+    const StraightLine straight = addStraightLineOptions(
+        f, "-DLB_STRUCT_RECT", [](const Scene& scene, const MethodSpec&) { return lightAboveEveryHorizon(scene); });
+    f.plan = [straight](const MethodSpec& s, const Scene& scene, const photometry::Table& t, const ocl::DeviceInfo& dev,
+                        Precision p) { return straight.plan(s, scene, t, dev, p); };
     r.add(f);
 }
 

@@ -19,21 +19,20 @@ void registerVoronoi(Registry& r)
         Param::real("plane_eps", 1e-3, 1e-6, 0.1, Scale::Log,
                     "receivers closer than this (m) to the light's plane are moved to this distance (paper 5.3)"),
     };
-    f.defines = [](const MethodSpec&) { return std::string(); };
     // lookup, specialize, lanes; the straight-line form holds in every
     // scene: the method never clips (common/voronoi_lanes.inc)
-    addStraightLineOptions(f, "-DLB_VOR_RECT", [](const Scene&, const MethodSpec&) { return true; });
+    const StraightLine straight =
+        addStraightLineOptions(f, "-DLB_VOR_RECT", [](const Scene&, const MethodSpec&) { return true; });
     f.args = {"tab", "tres", "plane_eps"};
-    f.setArgs = [](LaunchContext& c) {
-        int res = static_cast<int>(c.spec.integer("table_res"));
+    f.plan = [straight](const MethodSpec& s, const Scene& scene, const photometry::Table& t, const ocl::DeviceInfo& dev,
+                        Precision p) {
+        Plan plan = straight.plan(s, scene, t, dev, p);
+        const int res = static_cast<int>(s.integer("table_res"));
         // The table is built for the scene's W x L light on every render (res^2
         // nodes of a closed-form Voronoi clip; ~1 ms at 33^2), untimed.
-        std::vector<float> tab = voronoiTable(res, c.scene.width, c.scene.length);
-        cl::Buffer b(c.rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, tab.size() * sizeof(float), tab.data());
-        c.buffers.push_back(b);
-        c.arg("tab", b);
-        c.arg("tres", cl_int(res));
-        c.realArg("plane_eps", c.spec.num("plane_eps"));
+        plan.args = {PlanArg::floatBuffer("tab", voronoiTable(res, scene.width, scene.length)),
+                     PlanArg::integer("tres", res), PlanArg::real("plane_eps", s.num("plane_eps"))};
+        return plan;
     };
     r.add(f);
 }

@@ -19,7 +19,7 @@ inline constexpr int kDenoiseRes = 512;
 double gaussSigmaPx(int res);
 int atrousLevels(int res);
 
-// Binds the filters' buffers (named "tmp", "var2") once, in setArgs.
+// Binds the filters' buffers (named "tmp", "var2") once, in the plan's bind.
 void bindDenoise(LaunchContext& c, const McOptions& o);
 // The post-passes of o.denoise (none: no events).
 std::vector<StageEvent> denoisePasses(LaunchContext& c, const McOptions& o, double sigmaL);

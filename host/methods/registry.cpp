@@ -52,15 +52,8 @@ std::string kernelForm(const Family& f, const std::string& defines)
 Plan planFor(const Family& f, const MethodSpec& spec, const Scene& scene, const photometry::Table& table,
              const ocl::DeviceInfo& device, Precision precision)
 {
-    if (f.plan) return f.plan(spec, scene, table, device, precision);
-    Plan p;
-    p.defines = f.defines ? f.defines(spec) : std::string();
-    if (f.sceneDefines) p.defines += f.sceneDefines(spec, scene, table);
-    p.lanes = f.lanes ? f.lanes(spec, scene, table, device, precision) : 1;
-    p.lum = [lumBuffer = f.lumBuffer, spec, &table] { return lumBuffer ? lumBuffer(spec, table) : table.packed(); };
-    p.bind = f.setArgs;
-    p.finish = f.finish;
-    return p;
+    if (!f.plan) throw Error(fmt::format("method {}: the family has no plan (Family::plan)", f.name));
+    return f.plan(spec, scene, table, device, precision);
 }
 
 void bindPlan(LaunchContext& c, const Plan& plan)
@@ -90,6 +83,15 @@ void bindPlan(LaunchContext& c, const Plan& plan)
         case PlanArg::Kind::OutputInts:
             c.named[a.name] = c.outputInts(a.count);
             c.arg(a.name, c.named[a.name]);
+            break;
+        case PlanArg::Kind::OutputReals:
+            c.named[a.name] = c.outputReals(a.count);
+            c.arg(a.name, c.named[a.name]);
+            break;
+        case PlanArg::Kind::Device:  // plan.bind's
+            if (!plan.bind)
+                throw Error(
+                    fmt::format("method {}: argument '{}' is left to a plan without bind", c.family.name, a.name));
             break;
         }
     }

@@ -6,12 +6,15 @@
 // that fills out[row * res + col] for rows row0 .. row0 + get_global_size(1),
 // then host/methods/family_cubature.cpp defining
 //   void registerCubature(Registry& r) { r.add(Family{...}); }
-// with Family::args naming <your arguments> in order (setArgs, or the
-// arguments of Family::plan, bind them by name; a test holds the list to the
-// kernel's CL_KERNEL_ARG_NAME), and add its
-// one line to builtinFamilies() in registry.cpp. render(), `run`, `tune`,
-// `stability` and `bench` all launch it through prepare() (methods/render.h),
-// so the new family is rendered, timed and benchmarked without more code.
+// with Family::args naming <your arguments> in order (a test holds the list
+// to the kernel's CL_KERNEL_ARG_NAME) and Family::plan, the one hook that
+// decides a render: it parses the spec once into the program's defines, the
+// lanes, the `lum` buffer, every argument of Family::args by name (PlanArg),
+// and the finish (Plan, below); a test builds the plan of every method
+// without a device. Add its one line to builtinFamilies() in registry.cpp.
+// render(), `run`, `tune`, `stability` and `bench` all launch it through
+// prepare() (methods/render.h), so the new family is rendered, timed and
+// benchmarked without more code.
 //
 // Multi-pass methods (the indirect scene's RSM, clustering and evaluation)
 // add, beside the one `render` kernel, Family::prePasses: a function that
@@ -23,6 +26,7 @@
 // events, Prepared::time), so render(), the runner, tune, stability and bench
 // time the whole method through the same Prepared path, and
 // Prepared::stageMs() gives the per-stage medians (bench's breakdown).
+// Their pass kernels and own device buffers are bound by Plan::bind.
 // Stateful methods (acrsm keeps its clusters from frame to frame) count their
 // launches in LaunchContext::frame, which Prepared::reset() sets back to 0;
 // Family::settleFrames says how many launches of a static scene render()
@@ -71,7 +75,7 @@ struct LaunchContext {
     cl::Kernel kernel;
     std::vector<cl::Buffer> buffers;  // kept alive until the render ends
     std::map<std::string, Image> extraImages;  // e.g. "err" for the reference
-    std::map<std::string, cl::Buffer> named;  // buffers setArgs hands to finish (e.g. "stats")
+    std::map<std::string, cl::Buffer> named;  // buffers the plan hands to finish (e.g. "stats")
     nlohmann::json stats = nlohmann::json::object();  // named counters for the result file
     int lanes = 1;  // pixels of a row per work-item (Family::lanes)
     std::string options{};  // the program's -D options
@@ -125,25 +129,46 @@ private:
 
 // One kernel argument a plan binds, by its name in Family::args: a real
 // (float or double as the program is built), an int, a float, a read-only
-// buffer of reals or floats, or an int output buffer of `count` ints (kept in
-// LaunchContext::named under the argument's name, for `finish`).
+// buffer of reals or floats, an output buffer of `count` ints or reals (kept
+// in LaunchContext::named under the argument's name, for `finish` and the
+// passes), or a device buffer of the family's own that Plan::bind makes and
+// binds (Device: the pre-passes' buffers).
 struct PlanArg {
-    enum class Kind { Real, Int, Float, Reals, Floats, OutputInts };
+    enum class Kind { Real, Int, Float, Reals, Floats, OutputInts, OutputReals, Device };
     std::string name;
     Kind kind = Kind::Real;
     double value = 0;  // Real, Int, Float
     std::vector<double> reals{};  // Reals
     std::vector<float> floats{};  // Floats
-    size_t count = 0;  // OutputInts
+    size_t count = 0;  // OutputInts, OutputReals
+
+    static PlanArg real(const std::string& name, double v) { return {name, Kind::Real, v}; }
+    static PlanArg integer(const std::string& name, long v) { return {name, Kind::Int, static_cast<double>(v)}; }
+    static PlanArg single(const std::string& name, double v) { return {name, Kind::Float, v}; }
+    static PlanArg realBuffer(const std::string& name, std::vector<double> v)
+    {
+        return {name, Kind::Reals, 0, std::move(v)};
+    }
+    static PlanArg floatBuffer(const std::string& name, std::vector<float> v)
+    {
+        return {name, Kind::Floats, 0, {}, std::move(v)};
+    }
+    static PlanArg outputInts(const std::string& name, size_t n) { return {name, Kind::OutputInts, 0, {}, {}, n}; }
+    static PlanArg outputReals(const std::string& name, size_t n) { return {name, Kind::OutputReals, 0, {}, {}, n}; }
+    static PlanArg device(const std::string& name) { return {name, Kind::Device}; }
 };
 
 // What a family decides for one render of spec on scene and table, on a
 // device in a precision, before any device work (so a test can read it
 // without a device): the program's -D options (structural and per scene;
-// render adds LB_DOUBLE and LB_LANES), pixels per work-item, the `lum`
-// buffer (made on demand, while the table lives: a LUT costs more than the
-// rest of the plan), the kernel arguments by name, and optionally a binder
-// for arguments a plan cannot hold (device buffers of its own) and the finish.
+// render adds LB_DOUBLE and LB_LANES), pixels per work-item (with n > 1 the
+// program gets -DLB_LANES=n and the launch ceil(N / n) work-items per row),
+// the `lum` buffer (made on demand, while the table lives: a LUT costs more
+// than the rest of the plan; empty: table.packed()), every argument of
+// Family::args by name, in order, and optionally a binder for what a plan
+// cannot hold (device buffers of its own, the pre-passes' kernels) and the
+// finish (after the timed runs and the statistics launch: read extra
+// buffers, fill stats / extraImages).
 struct Plan {
     std::string defines;
     int lanes = 1;
@@ -172,33 +197,14 @@ struct Family {
     // Optional: whether parameter `name` has no effect under spec s (e.g. the
     // cubature's s3 with static=2); a tuner does not search such a parameter.
     std::function<bool(const MethodSpec&, const std::string&)> unused;
-    // Optional, the one hook a family may give instead of defines,
-    // sceneDefines, lumBuffer, lanes, setArgs and finish: parses the spec
-    // once and decides all of them (planFor; the cubature's).
-    PlanHook plan;
-    // Structural -D options of the program (continuous values are arguments).
-    std::function<std::string(const MethodSpec&)> defines;
-    // Optional: more defines chosen per scene and luminaire (methods/specialize.h).
-    std::function<std::string(const MethodSpec&, const Scene&, const photometry::Table&)> sceneDefines;
-    // Optional: the float buffer passed as `lum` (default: table.packed()), e.g.
-    // the trig-free table of photometry/lut.h for kernels built with -DLB_LUT.
-    std::function<std::vector<float>(const MethodSpec&, const photometry::Table&)> lumBuffer;
-    // Optional: pixels of a row per work-item for this spec, scene and device
-    // (default 1). With n > 1 the program gets -DLB_LANES=n and the launch
-    // ceil(N / n) work-items per row.
-    std::function<int(const MethodSpec&, const Scene&, const photometry::Table&, const ocl::DeviceInfo&, Precision)>
-        lanes;
     // The kernel's arguments after P, lum, out, row0, by name, in order.
     std::vector<std::string> args;
-    // Binds them (LaunchContext::arg by name).
-    std::function<void(LaunchContext&)> setArgs;
+    // Decides one render (Plan): defines, lanes, lum, the arguments, finish.
+    PlanHook plan;
     // Optional: the int argument (one of args) that switches per-pixel
     // statistics on. Timed launches run with it 0, exactly the kernel a
-    // renderer runs; one more, untimed launch with 1 feeds `finish`.
+    // renderer runs; one more, untimed launch with 1 feeds Plan::finish.
     std::string statsSwitch;
-    // After the timed runs (and the statistics launch): read extra buffers,
-    // fill stats / extraImages.
-    std::function<void(LaunchContext&)> finish;
     // Specs `lumibench bench` times besides the family's default (and its
     // specialize=none form): the structural variants worth a verdict.
     std::vector<std::string> benchSpecs;
@@ -229,13 +235,12 @@ struct Family {
 // The adaptive references (family_reference.cpp: the diffuse, specular and
 // indirect scenes'): their kernels take errout, splits_out, rel_tol (spec
 // "tol") and max_splits among Family::args.
-void bindReferenceArgs(LaunchContext& c);  // the per-pixel error and split buffers, the four arguments
+void referenceArgs(Plan& p, const MethodSpec& s, const Scene& scene);  // the four arguments
 void finishReference(LaunchContext& c);  // extra image "err", the split statistics
 // Both for a kernel whose arguments are just those four; no defines, expensive.
 void referenceIo(Family& f);
 
-// The family's plan: Family::plan where it has one, else assembled from its
-// separate hooks (defines + sceneDefines, lanes, lumBuffer, setArgs, finish).
+// The family's plan (Family::plan); Error for a family without one.
 Plan planFor(const Family& f, const MethodSpec& spec, const Scene& scene, const photometry::Table& table,
              const ocl::DeviceInfo& device, Precision precision);
 // Binds a plan's arguments by name (LaunchContext::arg), then plan.bind.

@@ -174,7 +174,7 @@ Prepared::Prepared(ocl::Runtime& rt, const photometry::Table& table, const Scene
     const size_t npx = static_cast<size_t>(scene_.res) * scene_.res;
     cl::Buffer P = ctx_->realBuffer(scene_.params());
     P_ = P;
-    std::vector<float> lum = plan.lum();
+    std::vector<float> lum = plan.lum ? plan.lum() : table.packed();
     cl::Buffer L(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, lum.size() * sizeof(float), lum.data());
     ctx_->buffers.push_back(L);
     ctx_->named["P"] = P;  // for the pre-passes' kernels

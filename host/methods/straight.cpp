@@ -30,34 +30,37 @@ int lanesFor(const std::string& lanes, const std::string& deviceType)
     return deviceType == "CPU" ? 8 : 1;
 }
 
-void addStraightLineOptions(Family& f, const std::string& define, StraightApplies applies)
+StraightLine addStraightLineOptions(Family& f, const std::string& define, StraightApplies applies)
 {
     f.params.push_back(
         lookupParam("lut", "intensity lookup: trig-free table (photometry/lut.h, as mc) or the exact bilinear one"));
-    const bool straight = !define.empty();
-    if (straight) f.straightDefines = {define};
-    if (straight) {
+    if (!define.empty()) {
+        f.straightDefines = {define};
         f.params.push_back(specializeParam("auto: the straight-line form where the scene allows it, 1D table for "
                                            "rotational luminaires (methods/straight.h); none: the general kernel"));
         f.params.push_back(lanesParam("pixels per work-item of the straight-line form (float, lut): 8 = float8 "
                                       "code, auto = 8 on CPU devices (PoCL), 1 elsewhere"));
     }
-    auto uses = [straight, applies](const MethodSpec& s, const Scene& scene) {
-        return straight && s.str("specialize") == "auto" && applies(scene, s);
-    };
-    f.sceneDefines = [uses, define](const MethodSpec& s, const Scene& scene, const photometry::Table& t) {
-        Specialization sp;
-        sp.set(Rule::Lut, s.str("lookup") == "lut");
-        bool on = uses(s, scene);
-        sp.set(Rule::Lut1d, sp.has(Rule::Lut) && on && photometry::isRotational(t));
-        return sp.defines() + (on ? " " + define : std::string());
-    };
-    f.lumBuffer = lookupBuffer;
-    f.lanes = [uses](const MethodSpec& s, const Scene& scene, const photometry::Table&, const ocl::DeviceInfo& dev,
-                     Precision p) {
-        if (!uses(s, scene) || s.str("lookup") != "lut" || p == Precision::Double) return 1;
-        return lanesFor(s.str("lanes"), dev.type);
-    };
+    return StraightLine{define, std::move(applies)};
+}
+
+bool StraightLine::uses(const MethodSpec& s, const Scene& scene) const
+{
+    return !define.empty() && s.str("specialize") == "auto" && applies(scene, s);
+}
+
+Plan StraightLine::plan(const MethodSpec& s, const Scene& scene, const photometry::Table& t, const ocl::DeviceInfo& dev,
+                        Precision p) const
+{
+    const bool lut = s.str("lookup") == "lut", on = uses(s, scene);
+    Specialization sp;
+    sp.set(Rule::Lut, lut);
+    sp.set(Rule::Lut1d, lut && on && photometry::isRotational(t));
+    Plan plan;
+    plan.defines = sp.defines() + (on ? " " + define : std::string());
+    plan.lanes = on && lut && p != Precision::Double ? lanesFor(s.str("lanes"), dev.type) : 1;
+    plan.lum = [lut, &t] { return lut ? photometry::buildLut(t).packed : t.packed(); };
+    return plan;
 }
 
 }  // namespace lb::methods

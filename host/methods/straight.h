@@ -14,7 +14,7 @@
 //   lanes=auto|1|8         pixels per work-item of the straight-line form
 //                          (float, lut): auto = 8 on CPU devices, 1 elsewhere.
 // With an empty `define` the family has no straight-line form and gets only
-// `lookup` (np, mrp).
+// `lookup` (np, mrp). The family's plan starts from StraightLine::plan.
 #pragma once
 
 #include "methods/registry.h"
@@ -28,7 +28,22 @@ namespace lb::methods {
 // Whether the straight-line form holds for this scene and spec.
 using StraightApplies = std::function<bool(const Scene&, const MethodSpec&)>;
 
-void addStraightLineOptions(Family& f, const std::string& define, StraightApplies applies);
+// The part of a plan these options decide: the lookup and specialisation
+// defines (the straight-line define where specialize=auto and `applies`
+// holds), the lanes and the `lum` buffer (lookupBuffer). The family prepends
+// its structural defines and adds its arguments.
+struct StraightLine {
+    std::string define;  // "" for none
+    StraightApplies applies;
+    // Whether the straight-line form runs for this spec and scene.
+    bool uses(const MethodSpec& s, const Scene& scene) const;
+    Plan plan(const MethodSpec& s, const Scene& scene, const photometry::Table& t, const ocl::DeviceInfo& dev,
+              Precision p) const;
+};
+
+// Adds the parameters (and the straight-line define) to f; returns the part
+// of the plan they decide.
+StraightLine addStraightLineOptions(Family& f, const std::string& define, StraightApplies applies);
 
 // The three parameters, each declared here once (choices, default); the
 // meaning is the family's. lookup's default differs between families.
@@ -39,7 +54,7 @@ Param lanesParam(const std::string& meaning);
 // auto = 8 on CPU devices (ocl::DeviceInfo::type "CPU"), 1 elsewhere.
 int lanesFor(const std::string& lanes, const std::string& deviceType);
 
-// The `lum` buffer (Family::lumBuffer) of a family with the `lookup`
+// The `lum` buffer (Plan::lum) of a family with the `lookup`
 // parameter: the trig-free table of photometry/lut.h for lookup=lut, else the
 // exact one. These families (and mc, the specular mc and ltc) use it.
 std::vector<float> lookupBuffer(const MethodSpec& s, const photometry::Table& t);

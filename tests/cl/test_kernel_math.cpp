@@ -1,4 +1,5 @@
 // The shared math run on the device equals the same code run on the host.
+#include "kernel_args.h"
 #include "math/kmath.h"
 #include "scene/scene.h"
 #include "testutil.h"
@@ -27,50 +28,47 @@ std::vector<T> download(ocl::Runtime& rt, cl::Buffer& b, size_t n)
 // h = 0.1, R = 3pi/4, raised to z in [0, 1] so that the horizon cuts the light
 // for many of them, and repeats the
 // computation with the host copy of the same header in namespace NS.
-#define LB_DEFINE_CLIP_COMPARE(FN, NS, T)                                                         \
-    void FN(ocl::Runtime& rt, const std::string& opts, double tol)                                \
-    {                                                                                             \
-        using namespace NS;                                                                       \
-        Scene s;                                                                                  \
-        s.height = 0.1;                                                                           \
-        s.rotation = 3 * 3.14159265358979 / 4;                                                    \
-        auto P64 = s.params();                                                                    \
-        std::vector<T> P(P64.begin(), P64.end());                                                 \
-        std::vector<T> q;                                                                         \
-        std::mt19937 g(7);                                                                        \
-        std::uniform_real_distribution<double> U(-2.5, 2.5);                                      \
-        int n = 500;                                                                              \
-        for (int i = 0; i < n; ++i) q.insert(q.end(), {T(U(g)), T(U(g)), T(0.2 * (U(g) + 2.5))}); \
-        cl::Buffer bP = upload(rt, P), bq = upload(rt, q);                                        \
-        cl::Buffer bo(rt.context(), CL_MEM_WRITE_ONLY, 4 * n * sizeof(T));                        \
-        cl::Kernel k = rt.kernel("selftest.cl", "clip_and_measure", opts);                        \
-        k.setArg(0, bP);                                                                          \
-        k.setArg(1, bq);                                                                          \
-        k.setArg(2, bo);                                                                          \
-        k.setArg(3, n);                                                                           \
-        rt.launch1D(k, n, 8).wait();                                                              \
-        auto out = download<T>(rt, bo, 4 * n);                                                    \
-        int clipped = 0;                                                                          \
-        for (int i = 0; i < n; ++i) {                                                             \
-            lb_light L = lb_scene_light(P.data());                                                \
-            real3 x(q[3 * i], q[3 * i + 1], q[3 * i + 2]);                                        \
-            real3 p[LB_MAXV];                                                                     \
-            lb_light_corners(L, p);                                                               \
-            for (int c = 0; c < 4; ++c) p[c] -= x;                                                \
-            int m = lb_clip_polygon(p, 4, real3(0, 0, 1), T(0));                                  \
-            clipped += (m != 4);                                                                  \
-            double sa = lb_polygon_solid_angle(p, m);                                             \
-            double E = lb_polygon_irradiance_lambert(p, m, real3(0, 0, 1));                       \
-            EXPECT_NEAR(out[4 * i], sa, tol*(1 + sa)) << i;                                       \
-            EXPECT_NEAR(out[4 * i + 1], E, tol*(1 + E)) << i;                                     \
-            if (m >= 1) {                                                                         \
-                int where;                                                                        \
-                real3 cp = lb_closest_point_polygon(p, m, L.n, real3(0, 0, 0), &where);           \
-                EXPECT_NEAR(out[4 * i + 2], length(cp), tol*(1 + length(cp))) << i;               \
-                EXPECT_EQ(static_cast<int>(out[4 * i + 3]), where) << i;                          \
-            }                                                                                     \
-        }                                                                                         \
-        EXPECT_GT(clipped, 20);                                                                   \
+#define LB_DEFINE_CLIP_COMPARE(FN, NS, T)                                                                     \
+    void FN(ocl::Runtime& rt, const std::string& opts, double tol)                                            \
+    {                                                                                                         \
+        using namespace NS;                                                                                   \
+        Scene s;                                                                                              \
+        s.height = 0.1;                                                                                       \
+        s.rotation = 3 * 3.14159265358979 / 4;                                                                \
+        auto P64 = s.params();                                                                                \
+        std::vector<T> P(P64.begin(), P64.end());                                                             \
+        std::vector<T> q;                                                                                     \
+        std::mt19937 g(7);                                                                                    \
+        std::uniform_real_distribution<double> U(-2.5, 2.5);                                                  \
+        int n = 500;                                                                                          \
+        for (int i = 0; i < n; ++i) q.insert(q.end(), {T(U(g)), T(U(g)), T(0.2 * (U(g) + 2.5))});             \
+        cl::Buffer bP = upload(rt, P), bq = upload(rt, q);                                                    \
+        cl::Buffer bo(rt.context(), CL_MEM_WRITE_ONLY, 4 * n * sizeof(T));                                    \
+        cl::Kernel k = rt.kernel("selftest.cl", "clip_and_measure", opts + " " + test::KernelArgs::kArgInfo); \
+        test::KernelArgs::reported(k).set("P", bP).set("q", bq).set("out", bo).set("n", n);                   \
+        rt.launch1D(k, n, 8).wait();                                                                          \
+        auto out = download<T>(rt, bo, 4 * n);                                                                \
+        int clipped = 0;                                                                                      \
+        for (int i = 0; i < n; ++i) {                                                                         \
+            lb_light L = lb_scene_light(P.data());                                                            \
+            real3 x(q[3 * i], q[3 * i + 1], q[3 * i + 2]);                                                    \
+            real3 p[LB_MAXV];                                                                                 \
+            lb_light_corners(L, p);                                                                           \
+            for (int c = 0; c < 4; ++c) p[c] -= x;                                                            \
+            int m = lb_clip_polygon(p, 4, real3(0, 0, 1), T(0));                                              \
+            clipped += (m != 4);                                                                              \
+            double sa = lb_polygon_solid_angle(p, m);                                                         \
+            double E = lb_polygon_irradiance_lambert(p, m, real3(0, 0, 1));                                   \
+            EXPECT_NEAR(out[4 * i], sa, tol*(1 + sa)) << i;                                                   \
+            EXPECT_NEAR(out[4 * i + 1], E, tol*(1 + E)) << i;                                                 \
+            if (m >= 1) {                                                                                     \
+                int where;                                                                                    \
+                real3 cp = lb_closest_point_polygon(p, m, L.n, real3(0, 0, 0), &where);                       \
+                EXPECT_NEAR(out[4 * i + 2], length(cp), tol*(1 + length(cp))) << i;                           \
+                EXPECT_EQ(static_cast<int>(out[4 * i + 3]), where) << i;                                      \
+            }                                                                                                 \
+        }                                                                                                     \
+        EXPECT_GT(clipped, 20);                                                                               \
     }
 
 LB_DEFINE_CLIP_COMPARE(compareClipFloat, lb::f32, float)
@@ -103,11 +101,8 @@ TEST(KernelMath, IntensityLookupMatchesHost)
     int n = 256;
     for (int i = 0; i < n; ++i) cg.insert(cg.end(), {C(g), G(g)});
     cl::Buffer bl = upload(*rt, lum), bc = upload(*rt, cg), bo(rt->context(), CL_MEM_WRITE_ONLY, n * 4);
-    cl::Kernel k = rt->kernel("selftest.cl", "intensity");
-    k.setArg(0, bl);
-    k.setArg(1, bc);
-    k.setArg(2, bo);
-    k.setArg(3, n);
+    cl::Kernel k = rt->kernel("selftest.cl", "intensity", test::KernelArgs::kArgInfo);
+    test::KernelArgs::reported(k).set("lum", bl).set("cg", bc).set("out", bo).set("n", n);
     rt->launch1D(k, n, 8).wait();
     auto out = download<float>(*rt, bo, n);
     for (int i = 0; i < n; ++i)
@@ -154,11 +149,8 @@ TEST(KernelMath, ClosestPointCornerVersusEdgeFloat)
     int m = static_cast<int>(expect.size());
     cl::Buffer bP = upload(*rt, P), bq = upload(*rt, q);
     cl::Buffer bo(rt->context(), CL_MEM_WRITE_ONLY, 4 * m * sizeof(float));
-    cl::Kernel k = rt->kernel("selftest.cl", "clip_and_measure", "");
-    k.setArg(0, bP);
-    k.setArg(1, bq);
-    k.setArg(2, bo);
-    k.setArg(3, m);
+    cl::Kernel k = rt->kernel("selftest.cl", "clip_and_measure", test::KernelArgs::kArgInfo);
+    test::KernelArgs::reported(k).set("P", bP).set("q", bq).set("out", bo).set("n", m);
     rt->launch1D(k, m, 8).wait();
     auto out = download<float>(*rt, bo, 4 * m);
     namespace F = lb::f32;

@@ -1,4 +1,5 @@
 // The OpenCL layer: device listing, build errors, program cache, timing.
+#include "kernel_args.h"
 #include "methods/registry.h"
 #include "testutil.h"
 #include "util/error.h"
@@ -68,10 +69,8 @@ TEST(Runtime, ProfilingEventsGivePositiveTimes)
     std::vector<float> tri(9 * n, 1.0f);
     cl::Buffer in(rt->context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, tri.size() * 4, tri.data());
     cl::Buffer out(rt->context(), CL_MEM_WRITE_ONLY, n * 4);
-    cl::Kernel k = rt->kernel("selftest.cl", "tri_solid_angle");
-    k.setArg(0, in);
-    k.setArg(1, out);
-    k.setArg(2, static_cast<int>(n));
+    cl::Kernel k = rt->kernel("selftest.cl", "tri_solid_angle", test::KernelArgs::kArgInfo);
+    test::KernelArgs::reported(k).set("tri", in).set("out", out).set("n", static_cast<int>(n));
     auto t = rt->time([&] { return rt->launch1D(k, n); }, 5);
     EXPECT_EQ(t.reps, 5);
     EXPECT_GT(t.min_ms, 0.0);
@@ -85,13 +84,7 @@ std::vector<std::string> kernelArgNames(cl::Program& prog, const std::string& na
     std::vector<cl::Kernel> ks;
     prog.createKernels(&ks);
     for (auto& k : ks) {
-        if (k.getInfo<CL_KERNEL_FUNCTION_NAME>() != name) continue;
-        std::vector<std::string> names;
-        for (cl_uint i = 0; i < k.getInfo<CL_KERNEL_NUM_ARGS>(); ++i) {
-            std::string n = k.getArgInfo<CL_KERNEL_ARG_NAME>(i);
-            names.push_back(n.c_str());  // drop a trailing NUL some drivers count
-        }
-        return names;
+        if (k.getInfo<CL_KERNEL_FUNCTION_NAME>() == name) return test::KernelArgs::reportedNames(k);
     }
     return {};
 }

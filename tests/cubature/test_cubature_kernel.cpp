@@ -1,4 +1,5 @@
 // kernels/cubature.cl on the device equals the same header run on the host.
+#include "kernel_args.h"
 #include "math/kmath.h"
 #include "methods/cubature_options.h"
 #include "methods/registry.h"
@@ -19,20 +20,10 @@ namespace {
 void bindCubature(cl::Kernel& k, const cl::Buffer& P, const cl::Buffer& lum, const cl::Buffer& out,
                   const cl::Buffer& stats, bool dbl)
 {
-    const auto& names = methods::family("cubature").args;
-    auto index = [&](const std::string& name) {
-        auto it = std::find(names.begin(), names.end(), name);
-        EXPECT_NE(it, names.end()) << name;
-        return methods::kCommonArgs + static_cast<cl_uint>(it - names.begin());
-    };
-    k.setArg(0, P);
-    k.setArg(1, lum);
-    k.setArg(2, out);
-    k.setArg(3, 0);  // row0
-    k.setArg(index("stats"), stats);
-    k.setArg(index("want_stats"), 1);
+    auto a = test::KernelArgs::of(k, methods::family("cubature"), dbl);
+    a.set("P", P).set("lum", lum).set("out", out).set("row0", 0).set("stats", stats).set("want_stats", 1);
     const auto tun = methods::CubatureOptions().tunables;
-#define LB_BIND_DEFAULT(name) ocl::setReal(k, index(#name), tun.name, dbl);
+#define LB_BIND_DEFAULT(name) a.real(#name, tun.name);
     LB_CUB_TUNABLES(LB_BIND_DEFAULT)
 #undef LB_BIND_DEFAULT
 }

@@ -65,6 +65,7 @@ TEST(Voronoi, FractionsPartitionTheLight)
 
 }  // namespace
 
+#include "kernel_args.h"
 #include "methods/voronoi_table.h"
 #include "photometry/table.h"
 #include "scene/scene.h"
@@ -141,13 +142,14 @@ TEST(Voronoi, KernelMatchesHost)
     cl::Buffer bt(rt->context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, tab.size() * 4, tab.data());
     cl::Buffer bo(rt->context(), CL_MEM_WRITE_ONLY, N * N * 4);
     cl::Kernel k = rt->kernel("voronoi.cl", "render");
-    k.setArg(0, bP);
-    k.setArg(1, bl);
-    k.setArg(2, bo);
-    k.setArg(3, 0);
-    k.setArg(4, bt);
-    k.setArg(5, res);
-    ocl::setReal(k, 6, 1e-3, false);
+    test::KernelArgs::of(k, methods::family("voronoi"), false)
+        .set("P", bP)
+        .set("lum", bl)
+        .set("out", bo)
+        .set("row0", 0)
+        .set("tab", bt)
+        .set("tres", res)
+        .real("plane_eps", 1e-3);
     rt->launch2D(k, N, N).wait();
     std::vector<float> out(N * N);
     rt->queue().enqueueReadBuffer(bo, CL_TRUE, 0, N * N * 4, out.data());

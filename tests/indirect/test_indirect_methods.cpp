@@ -1,6 +1,7 @@
 // The indirect scene on the device: the reference's bounce kernel against the
 // Lambert closed form, the RSM's reflected flux against the reference's, and
 // the RSM methods (vpl, kmeans, acrsm) against the reference.
+#include "kernel_args.h"
 #include "testutil.h"
 
 #include "math/indirect_math.h"
@@ -57,12 +58,18 @@ TEST(IndirectReference, BounceOfAConstantWallIsTheLambertClosedForm)
         err(ctx, CL_MEM_READ_WRITE, res * res * sizeof(double)),
         splits(ctx, CL_MEM_READ_WRITE, res * res * sizeof(cl_int));
     cl::Kernel k = rt->kernel("indirect_reference.cl", "render", "-DLB_DOUBLE");
-    int a = 0;
-    for (auto* b : {&bP, &bL, &out}) k.setArg(a++, *b);
-    k.setArg(a++, cl_int(0));
-    for (auto* b : {&bE, &bG, &bD, &err, &splits}) k.setArg(a++, *b);
-    k.setArg(a++, 1e-8);
-    k.setArg(a++, cl_int(160));
+    test::KernelArgs::of(k, methods::family("reference", SceneKind::Indirect), true)
+        .set("P", bP)
+        .set("lum", bL)
+        .set("out", out)
+        .set("row0", cl_int(0))
+        .set("edir", bE)
+        .set("grid", bG)
+        .set("delta", bD)
+        .set("errout", err)
+        .set("splits_out", splits)
+        .real("rel_tol", 1e-8)
+        .set("max_splits", cl_int(160));
     rt->launch2D(k, res, res).wait();
     std::vector<double> e(res * res), ee(res * res);
     rt->queue().enqueueReadBuffer(out, CL_TRUE, 0, e.size() * sizeof(double), e.data());

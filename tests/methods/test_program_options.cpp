@@ -38,14 +38,8 @@ std::vector<Scene> sweepScenes(SceneKind kind)
                           {0.1, M_PI / 2},
                           {0.0, M_PI / 2},
                           {-0.1, M_PI / 2},
-                          {-0.6, 3 * M_PI / 4}}) {
-        Scene s;
-        s.kind = kind;
-        s.height = h;
-        s.rotation = rot;
-        s.res = 24;
-        out.push_back(s);
-    }
+                          {-0.6, 3 * M_PI / 4}})
+        out.push_back(test_tables::sceneAt(kind, h, rot, 24));
     return out;
 }
 
@@ -91,7 +85,7 @@ std::string trueKeys(const nlohmann::json& j)
 }
 
 // One line of the sweep: the program options and lanes Prepared builds
-// (planFor: the family's plan, or its separate hooks), on a CPU and a GPU in
+// (planFor: the family's plan), on a CPU and a GPU in
 // float and on a CPU in double, the form, and the specialisation's JSON.
 std::string sweepLine(const Family& f, const std::string& text, const MethodSpec& spec, const Scene& sc,
                       const std::string& tname, const photometry::Table& t)

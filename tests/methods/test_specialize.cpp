@@ -1,6 +1,7 @@
 // Scene specialisation (methods/specialize.h): the analysis rules, and every
 // specialised MC kernel against the general one (<= 1e-6 relative per pixel),
 // float and double.
+#include "kernel_args.h"
 #include "methods/analytic.h"
 #include "methods/render.h"
 #include "methods/specialize.h"
@@ -411,11 +412,13 @@ TEST(Specialize, StraightLineFormsEqualGeneral)
         std::vector<Scene> scenes = unclipped;
         if (c.anyScene) scenes.push_back(crossing);
         // the rule: the straight-line form where it holds, and only there
-        EXPECT_NE(fam.sceneDefines(parseSpec(c.name), unclipped[0], asym).find(c.define), std::string::npos) << c.name;
-        EXPECT_EQ(fam.sceneDefines(parseSpec(c.name + ":specialize=none"), unclipped[0], asym).find(c.define),
+        EXPECT_NE(test::planDefines(fam, parseSpec(c.name), unclipped[0], asym).find(c.define), std::string::npos)
+            << c.name;
+        EXPECT_EQ(test::planDefines(fam, parseSpec(c.name + ":specialize=none"), unclipped[0], asym).find(c.define),
                   std::string::npos)
             << c.name;
-        EXPECT_EQ(fam.sceneDefines(parseSpec(c.name), crossing, asym).find(c.define) != std::string::npos, c.anyScene)
+        EXPECT_EQ(test::planDefines(fam, parseSpec(c.name), crossing, asym).find(c.define) != std::string::npos,
+                  c.anyScene)
             << c.name;
         for (const auto& s : scenes) {
             double bound = rel;

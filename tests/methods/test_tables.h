@@ -1,7 +1,9 @@
-// test_tables.h -- two synthetic luminaires the specialisation tests share.
+// test_tables.h -- two synthetic luminaires the specialisation tests share,
+// and their scenes.
 #pragma once
 
 #include "photometry/load.h"
+#include "scene/scene.h"
 
 #include <cmath>
 
@@ -18,6 +20,17 @@ inline photometry::Table asymmetric()
 {
     return photometry::tabulate(
         [](double c, double g) { return 100 + 80 * std::cos(c * M_PI / 180) * std::sin(g * M_PI / 180) + g; }, 25, 37);
+}
+
+// A scene of `kind` with the light at height h and rotation rot, res pixels per side.
+inline Scene sceneAt(SceneKind kind, double h, double rot, int res)
+{
+    Scene s;
+    s.kind = kind;
+    s.height = h;
+    s.rotation = rot;
+    s.res = res;
+    return s;
 }
 
 }  // namespace lb::methods::test_tables

@@ -3,6 +3,7 @@
 // per-pixel relative difference with a floor, and the comparison itself.
 #pragma once
 
+#include "kernel_args.h"
 #include "methods/render_helpers.h"
 #include "photometry/table.h"
 #include "testutil.h"
@@ -82,8 +83,8 @@ inline void expectStraightLineEqualsGeneral(ocl::Runtime& rt, const photometry::
     double worstF = 0, worstD = 0;
     for (const Scene& s : straightLineScenes()) {
         const std::string what = spec + " " + s.describe();
-        ASSERT_NE(methods::family(family, SceneKind::Specular)
-                      .sceneDefines(methods::parseSpec(spec, SceneKind::Specular), s, t)
+        ASSERT_NE(planDefines(methods::family(family, SceneKind::Specular),
+                              methods::parseSpec(spec, SceneKind::Specular), s, t)
                       .find(define),
                   std::string::npos)
             << what;

@@ -47,7 +47,7 @@ TEST(LtcLanes, RuleAppliesToPointAndFan)
     const auto& fam = methods::family("ltc", SceneKind::Specular);
     Scene s = specular(1.1, 3 * M_PI / 4, 0.25), crossing = specular(-0.2, 5 * M_PI / 8, 0.25);
     auto defines = [&](const std::string& spec, const Scene& sc) {
-        return fam.sceneDefines(methods::parseSpec(spec, SceneKind::Specular), sc, t);
+        return test::planDefines(fam, methods::parseSpec(spec, SceneKind::Specular), sc, t);
     };
     auto has = [](const std::string& d, const char* what) { return d.find(what) != std::string::npos; };
     EXPECT_TRUE(has(defines("ltc:radiance=point", s), "-DLB_LTC_RECT"));

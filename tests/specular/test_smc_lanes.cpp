@@ -38,7 +38,7 @@ TEST(SmcLanes, RuleAppliesToLightSamplingOnly)
     const auto& fam = methods::family("mc", SceneKind::Specular);
     Scene s = specular(1.1, 3 * M_PI / 4, 0.25);
     auto has = [&](const std::string& spec) {
-        return fam.sceneDefines(methods::parseSpec(spec, SceneKind::Specular), s, t).find("-DLB_SMC_RECT") !=
+        return test::planDefines(fam, methods::parseSpec(spec, SceneKind::Specular), s, t).find("-DLB_SMC_RECT") !=
             std::string::npos;
     };
     EXPECT_TRUE(has("mc:n=8"));
