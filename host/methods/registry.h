@@ -77,7 +77,7 @@ struct LaunchContext {
     std::map<std::string, Image> extraImages;  // e.g. "err" for the reference
     std::map<std::string, cl::Buffer> named;  // buffers the plan hands to finish (e.g. "stats")
     nlohmann::json stats = nlohmann::json::object();  // named counters for the result file
-    int lanes = 1;  // pixels of a row per work-item (Family::lanes)
+    int lanes = 1;  // pixels of a row per work-item (Plan::lanes)
     std::string options{};  // the program's -D options
     std::map<std::string, cl::Kernel> passKernels{};
     int frame = 0;  // launches since the last reset (stateful methods)

@@ -43,7 +43,7 @@ public:
     // off: exactly the kernel a renderer runs (profiling-event times).
     ocl::Timing time(int reps);
     // One untimed launch with the family's statistics switched on (when it
-    // has any), then Family::finish: the stats and extra images.
+    // has any), then the plan's finish: the stats and extra images.
     void collect();
     Image image();  // the output buffer as it stands
 

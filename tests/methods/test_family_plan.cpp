@@ -41,13 +41,17 @@ void expectBindable(const Family& f, const MethodSpec& spec, const PlanArg& a, c
     case K::Int:
         EXPECT_EQ(a.value, std::floor(a.value)) << what;
         EXPECT_LE(std::fabs(a.value), double(std::numeric_limits<cl_int>::max())) << what;
-        if (p && p->kind == Param::Kind::Int && a.name != "seed") EXPECT_EQ(a.value, spec.integer(a.name)) << what;
+        if (p && p->kind == Kind::Int && a.name != "seed") {
+            EXPECT_EQ(a.value, spec.integer(a.name)) << what;
+        }
         break;
     case K::Real:
     case K::Float:
         EXPECT_TRUE(std::isfinite(a.value)) << what;
         // a parameter bound under its own name carries the spec's number, not a rounding of it
-        if (p && a.kind == K::Real) EXPECT_EQ(a.value, spec.num(a.name)) << what;
+        if (p && a.kind == K::Real) {
+            EXPECT_EQ(a.value, spec.num(a.name)) << what;
+        }
         break;
     case K::Reals:
         for (double v : a.reals) EXPECT_TRUE(std::isfinite(v)) << what;
@@ -108,7 +112,9 @@ TEST(MethodPlan, EveryRegisteredMethodPlansWithoutADevice)
                         for (const auto& a : plan.args) {
                             names.push_back(a.name);
                             expectBindable(f, spec, a, what + " " + a.name);
-                            if (a.kind == PlanArg::Kind::Device) EXPECT_TRUE(plan.bind) << what << " " << a.name;
+                            if (a.kind == PlanArg::Kind::Device) {
+                                EXPECT_TRUE(plan.bind) << what << " " << a.name;
+                            }
                         }
                         EXPECT_EQ(names, f.args) << what;
                         expectDefines(plan.defines, what);
@@ -117,8 +123,9 @@ TEST(MethodPlan, EveryRegisteredMethodPlansWithoutADevice)
                             EXPECT_EQ(plan.lanes, 8) << what;
                             EXPECT_TRUE(straight && dev == &cpu && p == Precision::Float) << what;
                         }
-                        if (text == f.name && sc.height > 0 && !f.straightDefines.empty())
+                        if (text == f.name && sc.height > 0 && !f.straightDefines.empty()) {
                             EXPECT_TRUE(straight) << what;
+                        }
                         ++plans;
                     }
             // the lookup buffer, made on demand (empty: the exact table)
