@@ -977,7 +977,10 @@ std::string crossValidationTable(const json& doc)
     for (const auto& f : cv["folds"]) {
         const double d = f["default"].get<double>(), t = f["tuned"].get<double>();
         out += fmt::format("| {} | {:.4g} | {:.4g} | {:.3g}{} |\n", f["held_out"].get<std::string>(), d, t,
-                           d != 0 ? t / d : 0.0, t < d ? "" : " (worse)");
+                           d != 0 ? t / d : 0.0,
+                           t < d        ? ""
+                               : t == d ? " (equal)"
+                                        : " (worse)");
     }
     out += fmt::format("| mean | {:.4g} | {:.4g} | improved in {} of {} folds |\n",
                        cv["held_out_default_mean"].get<double>(), cv["held_out_tuned_mean"].get<double>(),

@@ -92,14 +92,15 @@ TEST(TuneObjective, ParameterSpreadInTheSearchScale)
 // A minimal valid tune file on the suite's luminaires.
 nlohmann::json smallExperiment()
 {
-    return {{"method", "robust"},
-            {"params", {"area_q"}},
-            {"reference", "reference:tol=1e-4"},
-            {"luminaire_dir", test::sourceDir() + "/luminaires"},
-            {"res", 8},
-            {"train", {{"luminaires", {"lambert.ldt", "grazing.ldt"}}, {"heights", {0.1, 1.1}}, {"rotations", {"pi/2"}}}},
-            {"validation", {{"luminaires", {"batwing.ldt"}}, {"heights", {1.1}}, {"rotations", {"pi/2"}}}},
-            {"maxeval", 3}};
+    return {
+        {"method", "robust"},
+        {"params", {"area_q"}},
+        {"reference", "reference:tol=1e-4"},
+        {"luminaire_dir", test::sourceDir() + "/luminaires"},
+        {"res", 8},
+        {"train", {{"luminaires", {"lambert.ldt", "grazing.ldt"}}, {"heights", {0.1, 1.1}}, {"rotations", {"pi/2"}}}},
+        {"validation", {{"luminaires", {"batwing.ldt"}}, {"heights", {1.1}}, {"rotations", {"pi/2"}}}},
+        {"maxeval", 3}};
 }
 
 // Writes e to a fresh directory and runs `lumibench tune` on it.
