@@ -102,7 +102,7 @@ def main():
         ax.set_ylabel(f"mean log({metric} / MCI's at equal time), training scenes")
     else:
         ax.set_yscale("log")
-        ax.set_ylabel(f"{doc['objective']} {metric} over the training scenes")
+        ax.set_ylabel(f"{doc['objective']} {metric}, training")
     ax.set_xlabel("evaluation")
     # the title in two lines: the name, then the validation result (a long name is not cut)
     ax.set_title(f"{doc['name']}\n{doc['tuned']['algorithm']}: validation "
