@@ -39,6 +39,8 @@ void addTuneCommand(CLI::App& app)
         t.quiet = o->quiet;
         t.plot = !o->noPlot;
         auto doc = tune::runTune(e, t);
+        // With cross-validation its table first; the tuned SPEC is always the last line.
+        if (auto table = tune::crossValidationTable(doc); !table.empty()) fmt::print("{}\n", table);
         fmt::print("{}\n", doc["tuned"]["spec"].get<std::string>());
     });
 }

@@ -14,6 +14,9 @@ namespace lb::methods {
 
 // The defaults `robust` changes (docs/robust.md).
 const std::map<std::string, std::string> kRobustDefaults = {{"area", "gauss3"}};
+// `tuned`: robust with what `lumibench tune experiments/tune-all-cv-geomean.json` recommends (docs/tuning.md).
+const std::map<std::string, std::string> kTunedDefaults = {
+    {"area", "gauss3"}, {"corner_inset", "0.8625"}, {"dyn_weight", "0"}};
 
 namespace {
 
@@ -131,7 +134,7 @@ void registerCubature(Registry& r) { r.add(cubatureFamily()); }
 // robust: the cubature where it is best (near the light, in front of it) and
 // the area form where it is not (far field, the light's own plane): the
 // recommended variant of docs/robust.md. Every cubature parameter applies;
-// only the defaults differ.
+// only the defaults differ. With it `tuned`, robust's defaults changed again.
 void registerRobust(Registry& r)
 {
     Family f = cubatureFamily();
@@ -141,6 +144,11 @@ void registerRobust(Registry& r)
     for (auto& p : f.params)
         if (auto it = defaults.find(p.name); it != defaults.end()) p.def = it->second;
     f.benchSpecs = {};
+    r.add(f);
+    f.name = "tuned";
+    f.summary = "robust with the parameters tuned on the suite's 20 luminaires (docs/tuning.md)";
+    for (auto& p : f.params)
+        if (auto it = kTunedDefaults.find(p.name); it != kTunedDefaults.end()) p.def = it->second;
     r.add(f);
 }
 

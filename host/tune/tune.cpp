@@ -67,6 +67,7 @@ struct Case {
     Scene scene;
     Image ref;
     std::vector<equaltime::MetricPoint> mci;
+    double scale = 1;  // relative: the scale SPEC's metric on this scene
 };
 
 }  // namespace
@@ -94,6 +95,47 @@ double Dim::toUnit(double v) const
 double equalTimeScore(double metric, double ms, const std::vector<equaltime::MetricPoint>& curveByN)
 {
     return std::log(std::max(metric, 1e-300) / equaltime::metricAt(curveByN, ms));
+}
+
+double aggregateScores(const std::string& objective, const std::vector<double>& scores)
+{
+    if (scores.empty()) throw Error("tune: aggregateScores of no scores");
+    if (objective == "worst") return *std::max_element(scores.begin(), scores.end());
+    double s = 0;
+    for (double x : scores) s += objective == "geomean" ? std::log(std::max(x, 1e-300)) : x;
+    s /= double(scores.size());
+    return objective == "geomean" ? std::exp(s) : s;
+}
+
+double relativeScore(double metric, double scale)
+{
+    return metric / (std::isfinite(scale) && scale > 0 ? scale : 1e-30);
+}
+
+json parameterSpread(const std::vector<Dim>& dims, const std::vector<std::vector<double>>& foldValues)
+{
+    json out = json::object();
+    for (size_t i = 0; i < dims.size(); ++i) {
+        std::vector<double> v, u;
+        for (const auto& f : foldValues) {
+            v.push_back(f.at(i));
+            u.push_back(dims[i].toUnit(f.at(i)));
+        }
+        if (v.empty()) continue;
+        const double n = double(v.size());
+        const double mean = std::accumulate(v.begin(), v.end(), 0.0) / n;
+        double var = 0;
+        for (double x : v) var += (x - mean) * (x - mean);
+        const auto [ulo, uhi] = std::minmax_element(u.begin(), u.end());
+        out[dims[i].param.name] = {{"values", v},
+                                   {"min", *std::min_element(v.begin(), v.end())},
+                                   {"max", *std::max_element(v.begin(), v.end())},
+                                   {"mean", mean},
+                                   {"std", std::sqrt(var / n)},
+                                   {"default", dims[i].param.def},
+                                   {"unit_range", *uhi - *ulo}};
+    }
+    return out;
 }
 
 namespace {
@@ -200,8 +242,20 @@ void readOptimiser(const Reader& r, TuneExperiment& e)
     }
     if (r.has("objective")) {
         e.objective = r.string("objective");
-        if (e.objective != "mean" && e.objective != "worst" && e.objective != "equal_time")
-            r.fail("objective", fmt::format("expected mean, worst or equal_time, found '{}'", e.objective));
+        const std::set<std::string> ok = {"mean", "worst", "geomean", "relative", "equal_time"};
+        if (!ok.count(e.objective))
+            r.fail("objective",
+                   fmt::format("expected mean, worst, geomean, relative or equal_time, found '{}'", e.objective));
+    }
+    if (r.has("scale")) {
+        if (e.objective != "relative")
+            r.fail("scale", fmt::format("set, but \"objective\" is '{}' (relative uses it)", e.objective));
+        e.scale = r.string("scale");
+        try {
+            methods::parseSpec(e.scale, e.sceneKeys.kind);
+        } catch (const InputError& err) {
+            r.fail("scale", err.what());
+        }
     }
     if (r.has("equal_time")) {
         if (e.objective != "equal_time")
@@ -264,11 +318,11 @@ TuneExperiment loadTuneExperiment(const std::string& path)
     // A tune file is a few kB; 16 MiB leaves room for generated ones.
     const json j = util::readJsonObject(path, "a tune experiment file (JSON)", 16u << 20);
     Reader r{path, j};
-    r.onlyKnown({"name",          "description", "method",    "params",     "bounds",           "reference",
-                 "luminaire_dir", "res",         "precision", "size",       "extent",           "train",
-                 "validation",    "objective",   "algorithm", "metric",     "global",           "global_maxeval",
-                 "maxeval",       "maxtime",     "seed",      "equal_time", "cross_validation", "presets",
-                 "scene",         "alpha",       "eye",       "albedo"});
+    r.onlyKnown(
+        {"name",      "description",    "method",  "params",  "bounds",     "reference",  "luminaire_dir",    "res",
+         "precision", "size",           "extent",  "train",   "validation", "objective",  "algorithm",        "metric",
+         "global",    "global_maxeval", "maxeval", "maxtime", "seed",       "equal_time", "cross_validation", "presets",
+         "scene",     "alpha",          "eye",     "albedo",  "scale"});
     TuneExperiment e;
     e.path = path;
     e.raw = j;
@@ -323,6 +377,9 @@ public:
         for (const auto& d : dims_) names_.push_back(d.param.name);
         train_ = cases(e.train, "train");
         validation_ = cases(e.validation, "validation");
+        if (train_.empty() || validation_.empty())
+            throw Error(fmt::format("{}: the metric {} is undefined on every {} scene (black references)", e.path,
+                                    e.metric, train_.empty() ? "training" : "validation"));
     }
 
     json run();
@@ -391,6 +448,24 @@ private:
         return out;
     }
 
+    // Whether the metric is defined against this reference (NMSE is not on
+    // a black one: a beam that misses the receiver); scenes where it is not
+    // would score every candidate alike (1e6) and are left out.
+    bool metricDefined(const Image& ref) const
+    {
+        auto m = metrics::compare(ref, ref);
+        return m.nonfinite == 0 && std::isfinite(metrics::minimisable(m, e_.metric));
+    }
+
+    // The scale SPEC's metric on case c (the relative objective's divisor).
+    double scaleOf(const Case& c)
+    {
+        methods::RenderOptions ro;
+        ro.reps = 1;
+        auto r = methods::render(rt_, *c.table, c.scene, methods::parseSpec(e_.scale, e_.sceneKeys.kind), prec_, ro);
+        return metricOf(c.ref, r.image, nullptr);
+    }
+
     std::vector<Case> cases(const SceneSet& s, const std::string& what)
     {
         std::vector<Case> out;
@@ -417,7 +492,14 @@ private:
                         if (c.scene.kind == SceneKind::Specular) c.label += fmt::format(" alpha={}", alpha);
                         if (!opt_.quiet) fmt::print(stderr, "tune: {} reference {}\n", what, c.label);
                         c.ref = methods::render(rt_, *table, c.scene, ref, prec_, ro).image;
+                        if (!metricDefined(c.ref)) {
+                            skipped_.push_back(c.label);
+                            fmt::print(stderr, "tune: {} {} left out: the metric is undefined on its reference\n", what,
+                                       c.label);
+                            continue;
+                        }
                         if (equalTime()) c.mci = mciCurve(c, what);
+                        if (e_.objective == "relative") c.scale = scaleOf(c);
                         out.push_back(std::move(c));
                     }
         }
@@ -431,19 +513,27 @@ private:
     {
         methods::MethodSpec s =
             methods::parseSpec(specWith(e_.method, names_, values, e_.sceneKeys.kind), e_.sceneKeys.kind);
-        methods::RenderOptions ro;
-        ro.reps = 1;  // only the image matters here
-        if (equalTime()) {
-            ro = timedOptions();
-            ro.reps = 1;  // the aim of the paired timing below
-        }
+        const auto& fam = methods::family(s.name, e_.sceneKeys.kind);
+        // Where only the image counts (no equal-time score, no cache, no
+        // frames to settle): one launch, no warm-up, timing or statistics.
+        const bool imageOnly = !equalTime() && !fam.expensive && !fam.settleFrames;
+        methods::RenderOptions ro = equalTime() ? timedOptions() : methods::RenderOptions{};
+        ro.reps = 1;  // equal_time: the aim of the paired timing below
         std::vector<Eval> out;
         for (const auto& c : cs) {
-            auto r = methods::render(rt_, *c.table, c.scene, s, prec_, ro);
             Eval ev;
-            ev.metric = metricOf(c.ref, r.image, &ev.nonfinite);
-            ev.ms = equalTime() ? pairedMs(c, s, r.timing.median_ms) : r.timing.median_ms;
-            ev.score = equalTime() ? equalTimeScore(ev.metric, ev.ms, c.mci) : ev.metric;
+            if (imageOnly) {
+                methods::Prepared pm(rt_, *c.table, c.scene, s, prec_);
+                pm.launch(0, c.scene.res).wait();
+                ev.metric = metricOf(c.ref, pm.image(), &ev.nonfinite);
+            } else {
+                auto r = methods::render(rt_, *c.table, c.scene, s, prec_, ro);
+                ev.metric = metricOf(c.ref, r.image, &ev.nonfinite);
+                ev.ms = equalTime() ? pairedMs(c, s, r.timing.median_ms) : r.timing.median_ms;
+            }
+            ev.score = equalTime()           ? equalTimeScore(ev.metric, ev.ms, c.mci)
+                : e_.objective == "relative" ? relativeScore(ev.metric, c.scale)
+                                             : ev.metric;
             out.push_back(ev);
         }
         return out;
@@ -451,11 +541,9 @@ private:
 
     double aggregate(const std::vector<Eval>& v) const
     {
-        if (e_.objective == "worst")
-            return std::max_element(v.begin(), v.end(), [](auto& a, auto& b) { return a.score < b.score; })->score;
-        double s = 0;
-        for (const auto& x : v) s += x.score;
-        return s / double(v.size());
+        std::vector<double> scores;
+        for (const auto& x : v) scores.push_back(x.score);
+        return aggregateScores(e_.objective, scores);
     }
 
     std::vector<double> values(const std::vector<double>& u) const
@@ -537,6 +625,7 @@ private:
     std::vector<Dim> dims_;
     std::vector<std::string> names_;
     std::vector<Case> train_, validation_;
+    std::vector<std::string> skipped_;  // scenes left out: the metric is undefined on their reference
     const std::vector<Case>* active_ = &train_;  // what the running search minimises over
     std::string label_;  // "" for the main search, else the fold or preset it runs for
     json trace_ = json::array();
@@ -554,10 +643,21 @@ void Tuner::setJson(json& s, const std::string& set, const std::vector<Case>& cs
     const double mean = std::accumulate(m.begin(), m.end(), 0.0) / double(m.size());
     const double worst = *std::max_element(m.begin(), m.end());
     s[set + "_objective"] = aggregate(x);
-    s[k] = e_.objective == "worst" ? worst : mean;
+    const double geomean = aggregateScores("geomean", m);
+    s[k] = e_.objective == "worst" ? worst : e_.objective == "geomean" ? geomean : mean;
     s[k + "_per_scene"] = m;
     s[k + "_mean"] = mean;
     s[k + "_worst"] = worst;
+    s[k + "_geomean"] = geomean;
+    if (e_.objective == "relative") {
+        json rel = json::array(), scale = json::array();
+        for (size_t i = 0; i < x.size(); ++i) {
+            rel.push_back(x[i].score);
+            scale.push_back(cs[i].scale);
+        }
+        s[set + "_relative_per_scene"] = rel;
+        s[set + "_scale_" + e_.metric + "_per_scene"] = scale;
+    }
     if (equalTime()) {
         json score = json::array(), ms = json::array(), mci = json::array();
         for (size_t i = 0; i < x.size(); ++i) {
@@ -629,6 +729,7 @@ json Tuner::header() const
     doc["method"] = e_.method;
     doc["objective"] = e_.objective;
     doc["metric"] = e_.metric;
+    if (e_.objective == "relative") doc["scale"] = e_.scale;
     doc["seed"] = e_.seed;
     doc["device"] = rt_.info().name;
     json dims = json::array();
@@ -647,6 +748,7 @@ json Tuner::header() const
         scenes[set == &train_ ? "train" : "validation"] = a;
     }
     doc["scenes"] = scenes;
+    doc["skipped_scenes"] = skipped_;
     if (equalTime()) {
         const auto& k = e_.equalTime;
         json curves = json::object();
@@ -726,6 +828,15 @@ Tuner::Search Tuner::searchOn(const std::vector<Case>& train, const std::string&
     return out;
 }
 
+// The metric's arithmetic and geometric means over one evaluation's scenes,
+// whatever the objective: the two views the cross-validation reports.
+json metricMeans(const std::vector<Eval>& x)
+{
+    std::vector<double> m;
+    for (const auto& v : x) m.push_back(v.metric);
+    return {{"mean", aggregateScores("mean", m)}, {"geomean", aggregateScores("geomean", m)}, {"per_scene", m}};
+}
+
 // Leave-one-luminaire-out: per training luminaire a search on the others'
 // training scenes, scored on its own (held out) and on the validation set.
 json Tuner::crossValidation(const std::vector<double>& defaults)
@@ -733,14 +844,19 @@ json Tuner::crossValidation(const std::vector<double>& defaults)
     json folds = json::array();
     double sumDefault = 0, sumTuned = 0, sumTrain = 0, sumValidation = 0;
     int improved = 0;
+    std::vector<std::vector<double>> foldValues;
     const auto lums = trainLuminaires();
     for (const auto& lum : lums) {
         const auto fold = only(train_, lum, false), held = only(train_, lum);
         Search s = searchOn(fold, fmt::format("fold {}: ", lum));
+        const auto hd = evaluate(held, defaults), ht = evaluate(held, s.best);
         json f;
         f["held_out"] = lum;
-        f["default"] = aggregate(evaluate(held, defaults));
-        f["tuned"] = aggregate(evaluate(held, s.best));
+        f["default"] = aggregate(hd);
+        f["tuned"] = aggregate(ht);
+        f["improved"] = f["tuned"].get<double>() < f["default"].get<double>();
+        f["default_" + e_.metric] = metricMeans(hd);
+        f["tuned_" + e_.metric] = metricMeans(ht);
         f["train_default"] = aggregate(evaluate(fold, defaults));
         f["train"] = aggregate(evaluate(fold, s.best));
         f["validation"] = aggregate(evaluate(validation_, s.best));
@@ -752,11 +868,13 @@ json Tuner::crossValidation(const std::vector<double>& defaults)
         sumTuned += f["tuned"].get<double>();
         sumTrain += f["train"].get<double>();
         sumValidation += f["validation"].get<double>();
-        improved += f["tuned"].get<double>() < f["default"].get<double>();
+        improved += f["improved"].get<bool>();
+        foldValues.push_back(s.best);
         if (!opt_.quiet)
-            fmt::print(stderr, "tune: fold {}: held out default {:.6g} tuned {:.6g}  train {:.6g}  validation {:.6g}\n",
+            fmt::print(stderr,
+                       "tune: fold {}: held out default {:.6g} tuned {:.6g}  train {:.6g}  validation {:.6g}  {}\n",
                        lum, f["default"].get<double>(), f["tuned"].get<double>(), f["train"].get<double>(),
-                       f["validation"].get<double>());
+                       f["validation"].get<double>(), f["params"].dump());
         folds.push_back(f);
     }
     const double n = double(lums.size());
@@ -767,7 +885,10 @@ json Tuner::crossValidation(const std::vector<double>& defaults)
             {"held_out_tuned_mean", sumTuned / n},
             {"train_mean", sumTrain / n},
             {"validation_mean", sumValidation / n},
-            {"folds_improved", improved}};
+            {"folds_improved", improved},
+            {"folds_count", lums.size()},
+            {"folds_improved_fraction", improved / n},
+            {"param_spread", parameterSpread(dims_, foldValues)}};
 }
 
 // A tuned spec per training luminaire (on its own training scenes) against
@@ -846,6 +967,32 @@ json Tuner::run()
 }
 
 }  // namespace
+
+std::string crossValidationTable(const json& doc)
+{
+    if (!doc.contains("cross_validation")) return "";
+    const json& cv = doc["cross_validation"];
+    std::string out = fmt::format("| held out | default ({0}) | tuned ({0}) | tuned / default |\n|---|---|---|---|\n",
+                                  cv["score"].get<std::string>());
+    for (const auto& f : cv["folds"]) {
+        const double d = f["default"].get<double>(), t = f["tuned"].get<double>();
+        out += fmt::format("| {} | {:.4g} | {:.4g} | {:.3g}{} |\n", f["held_out"].get<std::string>(), d, t,
+                           d != 0 ? t / d : 0.0,
+                           t < d        ? ""
+                               : t == d ? " (equal)"
+                                        : " (worse)");
+    }
+    out += fmt::format("| mean | {:.4g} | {:.4g} | improved in {} of {} folds |\n",
+                       cv["held_out_default_mean"].get<double>(), cv["held_out_tuned_mean"].get<double>(),
+                       cv["folds_improved"].get<int>(), cv["folds"].size());
+    out +=
+        "\n| parameter | default | min | max | mean | range swept (of the search range) |\n|---|---|---|---|---|---|\n";
+    for (const auto& [name, p] : cv["param_spread"].items())
+        out += fmt::format("| {} | {} | {:.4g} | {:.4g} | {:.4g} | {:.0f} % |\n", name, p["default"].get<std::string>(),
+                           p["min"].get<double>(), p["max"].get<double>(), p["mean"].get<double>(),
+                           100 * p["unit_range"].get<double>());
+    return out;
+}
 
 json runTune(const TuneExperiment& e, const TuneOptions& opt)
 {

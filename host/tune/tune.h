@@ -13,8 +13,9 @@
 //    "validation": {"luminaires": ["spot.ldt"],    "heights": [1.1], "rotations": ["pi/2", "3pi/4"]},
 //    "metric": "nmse",                           // what is minimised: any metric a record carries
 //                                                // (nmse, nrmse, relmse, grad_nmse, flip, ueb, leb as |leb|)
-//    "objective": "mean",                        // mean | worst of the metric over the training scenes,
-//                                                // or equal_time (below)
+//    "objective": "mean",                        // mean | worst | geomean | relative of the metric
+//                                                // over the training scenes, or equal_time (below)
+//    "scale": "point",                           // relative: the SPEC whose metric divides each scene's
 //    "equal_time": {"time_res": 128, "reps": 5, "mc": "mc", "mci_n": [1, 2, 4, 8, 16, 32, 64]},
 //    "algorithm": "LN_SBPLX",                    // any nlopt name (LN_NELDERMEAD, LN_BOBYQA, ...)
 //    "global": "GN_DIRECT_L", "global_maxeval": 40,   // optional global search before the local one
@@ -23,6 +24,13 @@
 //    "presets": true,                                  // optional, below
 //    "scene": "specular", "alpha": [0.1, 0.5], "eye": [0, 4, 2]}   // scene/scene_keys.h; alphas
 //                                                // multiply the train and validation scenes
+//
+// Balanced objectives: "geomean" is exp(mean log metric) over the scenes
+// (minimising it minimises the mean of log metric: a scene 100x worse than
+// the rest weighs as much as any other, where the arithmetic "mean" follows
+// the worst few); "relative" is the mean of metric / scale, scale the
+// metric of the "scale" SPEC on the same scene (default the point light),
+// rendered once before the search.
 //
 // The equal-time objective: before the search, MCI ("mc" with n = each of
 // "mci_n") is rendered on every scene and timed at time_res^2 pixels (one
@@ -47,7 +55,12 @@
 // held-out luminaire's training scenes (and on the validation set).
 // tune.json's "cross_validation": per fold the held-out luminaire, default and
 // tuned held-out scores, train and validation scores, the tuned spec; their
-// means. Needs two training luminaires or more.
+// means; "folds_improved" (and its fraction) counts the folds whose tuned
+// spec beats the defaults on the held-out luminaire; per fold also the
+// metric's arithmetic and geometric means over the held-out scenes
+// ("default_<metric>", "tuned_<metric>", whatever the objective);
+// "param_spread": parameterSpread over the folds. Needs two training
+// luminaires or more.
 //
 // Presets ("presets": true): one more search per training luminaire on its
 // own training scenes; DIR/presets.json maps each luminaire file's name to its
@@ -102,7 +115,8 @@ struct TuneExperiment {
     double width = 1, length = 1, extent = 5;
     SceneSet train, validation;
     std::string metric = "nmse";  // metrics::minimisableMetrics()
-    std::string objective = "mean";  // mean | worst | equal_time
+    std::string objective = "mean";  // mean | worst | geomean | relative | equal_time
+    std::string scale = "point";  // relative: the SPEC whose metric divides each scene's
     EqualTimeKeys equalTime;
     std::string algorithm = "LN_SBPLX";
     std::string global;  // "" = none
@@ -146,6 +160,28 @@ nlohmann::json runTune(const TuneExperiment& e, const TuneOptions& opt);
 // The equal-time score of one scene: log(metric / equaltime::metricAt(curve, ms)),
 // the curve MCI's (time at the equal-time resolution, metric) in order of N.
 double equalTimeScore(double metric, double ms, const std::vector<equaltime::MetricPoint>& curveByN);
+
+// What an objective makes of the per-scene scores (the metric; with relative
+// metric / scale; with equal_time the log ratio): mean, relative and
+// equal_time their arithmetic mean, worst their maximum, geomean
+// exp(mean log max(score, 1e-300)).
+double aggregateScores(const std::string& objective, const std::vector<double>& scores);
+
+// One scene's relative score: metric / scale, a scale <= 0 or non-finite
+// (an undefined metric of the scale SPEC) counting as 1e-30 so the score is
+// large but finite.
+double relativeScore(double metric, double scale);
+
+// The spread of each searched parameter over the cross-validation folds:
+// per name {values, min, max, mean, std, unit_range}; unit_range is
+// max - min in the search's unit interval (0: every fold agrees, 1: the
+// parameter swings over its whole range, a sign of over-fitting).
+nlohmann::json parameterSpread(const std::vector<Dim>& dims, const std::vector<std::vector<double>>& foldValues);
+
+// tune.json's cross-validation as Markdown: per fold the held-out luminaire's
+// default and tuned scores, then each parameter's spread over the folds;
+// "" without cross-validation.
+std::string crossValidationTable(const nlohmann::json& doc);
 
 // The SPEC with `names` set to `values` (canonical text), the rest from `base`.
 std::string specWith(const std::string& base, const std::vector<std::string>& names, const std::vector<double>& values,
