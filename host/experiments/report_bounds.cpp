@@ -66,8 +66,9 @@ void redraw(const Cell& c, const Image& ref, const SceneScale& s)
     j["bound"] = s.bound;
     j["mean_ref"] = s.meanRef;
     j["colour_bar"] = tonemap::colourBar(33);
-    util::writeFilesAtomic({{c.stem.string() + "_err.png", encodePng(tonemap::errorPicture(ref, *c.img, s.bound, s.bound))},
-                            {jpath, j.dump() + '\n'}});
+    util::writeFilesAtomic(
+        {{c.stem.string() + "_err.png", encodePng(tonemap::errorPicture(ref, *c.img, s.bound, s.bound))},
+         {jpath, j.dump() + '\n'}});
 }
 
 }  // namespace
@@ -75,8 +76,8 @@ void redraw(const Cell& c, const Image& ref, const SceneScale& s)
 std::string cellStem(const results::Record& r)
 {
     const std::string role = cellRole(r);
-    const std::string spec = r.equal_time_to ? (r.equalTime ? r.equalTime->label : *r.equal_time_to)
-                                             : jsonText(r.extra, "spec", r.method);
+    const std::string spec =
+        r.equal_time_to ? (r.equalTime ? r.equalTime->label : *r.equal_time_to) : jsonText(r.extra, "spec", r.method);
     return cellImageName(role, spec);
 }
 

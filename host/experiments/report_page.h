@@ -169,12 +169,12 @@ inline constexpr const char* kScript = R"JS(
   }
   // "+4", "\u22122.5", "0", "+8420": three significant digits, whole numbers
   // from 1000 on (tonemap::barTicks).
-  function signed(v) {
-    if (v === 0) return "0";
+  function mag(v) {
     var s = Math.abs(v) >= 1000 ? Math.abs(v).toFixed(0) : Math.abs(v).toPrecision(3);
     if (s.indexOf(".") >= 0 && s.indexOf("e") < 0) s = s.replace(/0+$/, "").replace(/\.$/, "");
-    return (v > 0 ? "+" : "\u2212") + s;
+    return s;
   }
+  function signed(v) { return v === 0 ? "0" : (v > 0 ? "+" : "\u2212") + mag(v); }
   // The colour bar of the scene's error pictures, labelled in lux and in % of
   // the reference mean; hidden on the other views.
   function bar(sc, on) {
@@ -195,8 +195,8 @@ inline constexpr const char* kScript = R"JS(
       T.appendChild(s);
     });
     document.getElementById("lbBarCap").textContent = B > 0
-      ? "Error scale of this scene, shared by every method and MCI: \u00b1" + B.toPrecision(3) + U + " = \u00b1" +
-        (100 * B / M).toPrecision(3) + " % of the reference mean " + M.toPrecision(3) + U + "; saturated beyond."
+      ? "Error scale of this scene, shared by every method and MCI: \u00b1" + mag(B) + U + " = \u00b1" +
+        mag(100 * B / M) + " % of the reference mean " + mag(M) + U + "; saturated beyond."
       : "Every picture of this scene is exact: no error to show.";
   }
   function current() {

@@ -60,9 +60,10 @@ std::string displayName(const std::string& path)
         const TextFile f = TextFile::read(path);
         std::string ext = std::filesystem::path(path).extension().string();
         std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-        const bool ies = ext == ".ies" ||
-            (ext != ".ldt" && std::any_of(f.lines.begin(), f.lines.end(),
-                                          [](const std::string& l) { return squeezed(l).rfind("TILT", 0) == 0; }));
+        const bool ies =
+            ext == ".ies" || (ext != ".ldt" && std::any_of(f.lines.begin(), f.lines.end(), [](const std::string& l) {
+                                  return squeezed(l).rfind("TILT", 0) == 0;
+                              }));
         if (ies) return displayName(keyword(f, "[LUMINAIRE]"), keyword(f, "[LUMCAT]"), file);
         return displayName(f.lines.size() > 8 ? f.lines[8] : "", f.lines.size() > 9 ? f.lines[9] : "", file);
     } catch (const InputError&) {

@@ -32,9 +32,8 @@ bool unpack(const std::string& xz, const fs::path& dir)
 std::string run(const std::string& script, const fs::path& file)
 {
     int code = -1;
-    std::string out = test::shellOutput("/usr/bin/python3 " + test::sourceDir() + "/plots/" + script + " '" +
-                                            file.string() + "' 2>&1",
-                                        &code);
+    std::string out = test::shellOutput(
+        "/usr/bin/python3 " + test::sourceDir() + "/plots/" + script + " '" + file.string() + "' 2>&1", &code);
     EXPECT_EQ(code, 0) << script << " " << file << "\n" << out;
     return out;
 }
