@@ -3,7 +3,7 @@
 writes DIR/plots/*.png (300 dpi) and a PDF beside each, in the suite's style
 (plots/style.py, docs/figures.md: fixed colours and markers per method).
 
-    /usr/bin/python3 plots/experiment.py DIR|DIR/results.json|DIR/results.csv [--max-grids K]
+    /usr/bin/python3 plots/experiment.py DIR|DIR/results.json|DIR/results.csv [--max-grids K] [--jobs J]
 
 - nmse_time_<luminaire>_<precision>.png: NMSE against median kernel time,
   log-log, one panel per height (rows) and rotation (columns): the MCI curve
@@ -17,9 +17,11 @@ writes DIR/plots/*.png (300 dpi) and a PDF beside each, in the suite's style
 - grad_nmse_time_*, grad_nmse_h*, flip_time_*, flip_h*: the same for
   grad_nmse and FLIP (docs/design.md section 5), when some record carries them
   (flip is null where flip-evaluator was not available).
-- grid_<scene>.png: reference | method | error for each method of a scene, from
-  the PNG triples the runner saves with "save_images" (plots/image_grid.py);
-  at most --max-grids scenes.
+- grids/grid_<scene>.png: reference | method | error for each method of a
+  scene, from the PNG triples the runner saves with "save_images"
+  (plots/image_grid.py), the error pictures on the scene's one bound with its
+  colour bar (`lumibench report` draws them so); every scene (or the first
+  --max-grids), drawn by as many processes as there are CPUs.
 
 Only the JSON is read, so figures can be redone without re-running. Exits 3
 when matplotlib is missing (lumibench then still writes report.md).
@@ -64,6 +66,17 @@ def label(r):
 
 def stem(lum):
     return os.path.splitext(os.path.basename(lum))[0]
+
+
+def lum_name(r):
+    """The luminaire as its file names it (the record's luminaire_name), else the file's stem."""
+    return r.get("luminaire_name") or stem(r["luminaire"])
+
+
+def wrapped(name, width=22):
+    """A long name on lines of at most `width` characters (a category label on x)."""
+    import textwrap
+    return "\n".join(textwrap.wrap(name, width)) or name
 
 
 def safe(s):
@@ -147,6 +160,7 @@ def metric_time(records, out, dpi, key, name):
         by[(r["luminaire"], r["precision"])].append(r)
     files = []
     for (lum, prec), rs in sorted(by.items()):
+        shown = lum_name(rs[0])
         heights = sorted({r["height"] for r in rs})
         rots = sorted({r["rotation"] for r in rs})
         # at most the text width: 0.75 in for the y labels, panels of at most 1.8 in
@@ -165,7 +179,7 @@ def metric_time(records, out, dpi, key, name):
                 if i == len(heights) - 1:
                     ax.set_xlabel("time (ms)")
         figure_legend(fig, W, "{}..{}".format(ns[0], ns[-1]) if ns else "")
-        fig.suptitle("{} ({}): {} against kernel time".format(stem(lum), prec, name))
+        fig.suptitle("{} ({}): {} against kernel time".format(shown, prec, name))
         # Fixed margins in inches instead of tight_layout, which took 70 % of
         # the plotting time (it measures every tick label of every panel);
         # the saved file's bounding box takes in the legend below.
@@ -187,7 +201,7 @@ def metric_per_height(records, out, dpi, key, name):
     for r in records:
         if role(r) == "mci_curve" or not finite(r.get(key)):
             continue
-        acc[(r["height"], r["precision"], style.series_of(r), stem(r["luminaire"]))].append(r)
+        acc[(r["height"], r["precision"], style.series_of(r), wrapped(lum_name(r)))].append(r)
     files = []
     for h, prec in sorted({(k[0], k[1]) for k in acc}):
         lums = sorted({k[3] for k in acc if k[0] == h and k[1] == prec})
@@ -223,34 +237,61 @@ def metric_per_height(records, out, dpi, key, name):
     return files
 
 
-def grids(records, dir_, out, max_grids, dpi):
-    """reference | method | error per scene from DIR/images/<scene>/<cell>_{ref,test,err}.png."""
+def grid_rows(scene, rs, dir_):
+    """image_grid.py's rows LABEL=PREFIX of a scene's method and partner cells with pictures."""
+    rows = []
+    for r in rs:
+        cell = safe(r.get("spec", r["method"])) if role(r) == "method" else \
+            "mci_eq_" + safe(equal_time(r)["label"] if "equal_time_to" in r else "")
+        prefix = os.path.join(dir_, "images", scene, cell)
+        if os.path.exists(prefix + "_err.png"):
+            name = label(r) + (" N={}".format(r["n"]) if "n" in r else "")
+            rows.append("{}={}".format(name, prefix))
+    return rows
+
+
+def one_grid(job):
+    scene, rows, path, dpi = job
+    style.use()
+    with open(os.devnull, "w") as null:  # image_grid prints the path
+        stdout, sys.stdout = sys.stdout, null
+        try:
+            image_grid.main(rows + ["--out", path, "--title", scene, "--size", "2.0", "--dpi", str(dpi)])
+        finally:
+            sys.stdout = stdout
+    plt.close("all")
+    return [path, os.path.splitext(path)[0] + ".pdf"]
+
+
+def grids(records, dir_, out, max_grids, dpi, jobs=0):
+    """reference | method | error per scene from DIR/images/<scene>/<cell>_{ref,test,err}.png,
+    into OUT/grids/ (max_grids 0: every scene; jobs 0: one process per CPU)."""
     by = collections.OrderedDict()
     for r in records:
         if role(r) != "mci_curve" and "scene" in r:
             by.setdefault(r["scene"], []).append(r)
-    files = []
-    for scene, rs in list(by.items())[:max_grids]:
-        rows = []
-        for r in rs:
-            cell = safe(r.get("spec", r["method"])) if role(r) == "method" else \
-                "mci_eq_" + safe(equal_time(r)["label"] if "equal_time_to" in r else "")
-            prefix = os.path.join(dir_, "images", scene, cell)
-            if os.path.exists(prefix + "_err.png"):
-                name = label(r) + (" N={}".format(r["n"]) if "n" in r else "")
-                rows.append("{}={}".format(name, prefix))
+    todo = []
+    for scene, rs in list(by.items())[:max_grids or None]:
+        rows = grid_rows(scene, rs, dir_)
         if rows:
-            path = os.path.join(out, "grid_{}.png".format(safe(scene)))
-            image_grid.main(rows + ["--out", path, "--title", scene, "--size", "2.0", "--dpi", str(dpi)])
-            files += [path, os.path.splitext(path)[0] + ".pdf"]
-    return files
+            todo.append((scene, rows, os.path.join(out, "grids", "grid_{}.png".format(safe(scene))), dpi))
+    if not todo:
+        return []
+    os.makedirs(os.path.join(out, "grids"), exist_ok=True)
+    jobs = min(jobs or os.cpu_count() or 1, len(todo))
+    if jobs <= 1:
+        return [f for job in todo for f in one_grid(job)]
+    import multiprocessing
+    with multiprocessing.get_context("fork").Pool(jobs) as pool:
+        return [f for files in pool.map(one_grid, todo) for f in files]
 
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("dir", help="results directory (with results.json or results.csv), or one of those files; "
                     "the figures go to plots/ beside it")
-    ap.add_argument("--max-grids", type=int, default=8, help="image grids for at most this many scenes")
+    ap.add_argument("--max-grids", type=int, default=0, help="image grids for at most this many scenes (0: all)")
+    ap.add_argument("--jobs", type=int, default=0, help="processes drawing the grids (0: one per CPU)")
     ap.add_argument("--dpi", type=int, default=style.DPI, help="PNG resolution (default %(default)s)")
     args = ap.parse_args(argv)
     style.use()
@@ -266,7 +307,7 @@ def main(argv=None):
     for key, name in METRICS:
         if any(value(r, key) for r in records):  # none: older records, or no flip-evaluator
             files += metric_time(records, out, args.dpi, key, name) + metric_per_height(records, out, args.dpi, key, name)
-    files += grids(records, args.dir, out, args.max_grids, args.dpi)
+    files += grids(records, args.dir, out, args.max_grids, args.dpi, args.jobs)
     print("experiment.py: {} figures in {}".format(len(files), out))
 
 

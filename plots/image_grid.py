@@ -6,10 +6,14 @@ PREFIX_ref.png, PREFIX_test.png (tone mapped, L/(1+L) of L = k E) and
 PREFIX_err.png (orange too bright, blue too dark, white no error, magenta
 non-finite). When PREFIX.json exists (`lumibench compare ... --json --png PREFIX
 > PREFIX.json`), its NMSE, UEB and LEB are printed under the error picture, as
-in the thesis' tables (Prost 2019, Table 6.2).
+in the thesis' tables (Prost 2019, Table 6.2), and its `bound`, `mean_ref` and
+`colour_bar` give the error pictures a colour bar in lux and in % of the
+reference mean: one bar beside the error column where every row has the same
+bound, else one per row.
 
-Give every row of one figure the same --k in `compare`, so that the tone-mapped
-pictures are comparable (thesis 6.2).
+Give every row of one figure the same --k and the same --bound in `compare`,
+so that the pictures are comparable (thesis 6.2); `lumibench run` and
+`report` draw a scene's pictures at one bound (docs/figures.md).
 
     python3 plots/image_grid.py --out fig.png \\
         "cubature h=0.1=out/cub_h0.1" "MCI-40 h=0.1=out/mc40_h0.1"
@@ -27,7 +31,10 @@ import matplotlib
 
 matplotlib.use("Agg")  # files only, no display
 import matplotlib.image as mpimg  # noqa: E402
+import numpy as np  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.cm import ScalarMappable  # noqa: E402
+from matplotlib.colors import LinearSegmentedColormap, Normalize  # noqa: E402
 from matplotlib.patches import Patch  # noqa: E402
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import style  # noqa: E402
@@ -55,6 +62,43 @@ def parse_row(spec):
 
 def fmt(v, spec):
     return "n/a" if v is None or (isinstance(v, float) and not math.isfinite(v)) else format(v, spec)
+
+
+def scale(prefix):
+    """(bound, mean_ref, colours) of PREFIX.json's error scale, or None (no file,
+    no bound, or an exact picture: bound 0)."""
+    path = prefix + ".json"
+    if not os.path.exists(path):
+        return None
+    with open(path) as f:
+        m = json.load(f)
+    b, colours = m.get("bound"), m.get("colour_bar")
+    if not isinstance(b, (int, float)) or not b > 0 or not colours:
+        return None
+    return float(b), float(m.get("mean_ref") or 0), list(colours)
+
+
+def signed(v):
+    """+4, -2.5, +8420: three significant digits, whole numbers from 1000 on (no exponent)."""
+    return "0" if v == 0 else format(v, "+.0f" if abs(v) >= 1000 else "+.3g")
+
+
+def colour_bar(fig, cax, sc):
+    """A vertical bar from -bound to +bound in the pictures' colours, ticks
+    in lux and in % of the reference mean."""
+    bound, mean, colours = sc
+    cmap = LinearSegmentedColormap.from_list("lumibench_error", colours, N=257)  # odd: 0 is a colour of its own
+    cmap.set_under(colours[0])
+    cmap.set_over(colours[-1])
+    cax.set_gid("colour_bar")
+    bar = fig.colorbar(ScalarMappable(Normalize(-bound, bound), cmap), cax=cax, extend="both")
+    ticks = [-bound, -bound / 2, 0.0, bound / 2, bound]
+    bar.set_ticks(ticks)
+    bar.set_ticklabels(["{} lx".format(signed(t)) + ("\n{} %".format(signed(100 * t / mean)) if mean > 0 else "")
+                        for t in ticks])
+    bar.ax.tick_params(labelsize=style.MIN_FONT_PT)
+    bar.set_label("test - reference", fontsize=style.MIN_FONT_PT)
+    return bar
 
 
 def caption(prefix):
@@ -110,7 +154,12 @@ def main(argv=None):
     n = len(rows)
     lines = max([caption(p).count("\n") + 1 for _, p in rows if caption(p)] + [0])
     height = n * (args.size + 0.35 + 0.14 * lines) + (0 if args.no_legend else 0.3)
-    fig, axes = plt.subplots(n, 3, figsize=(3 * args.size, height), squeeze=False)
+    scales = [scale(p) for _, p in rows]
+    shared = all(scales) and len({sc[0] for sc in scales}) == 1
+    bars = any(scales)
+    fig = plt.figure(figsize=(3 * args.size + (0.9 if bars else 0), height))
+    grid = fig.add_gridspec(n, 4 if bars else 3, width_ratios=[1, 1, 1, 0.07] if bars else [1, 1, 1])
+    axes = np.array([[fig.add_subplot(grid[i, j]) for j in range(3)] for i in range(n)])
     for i, (label, prefix) in enumerate(rows):
         for j, suffix in enumerate(("_ref.png", "_test.png", "_err.png")):
             ax = axes[i][j]
@@ -121,15 +170,19 @@ def main(argv=None):
                 ax.set_title(columns[j])
         axes[i][0].set_ylabel(label)
         axes[i][2].set_xlabel(caption(prefix), fontsize=style.MIN_FONT_PT)
+        if scales[i] and not shared:
+            colour_bar(fig, fig.add_subplot(grid[i, 3]), scales[i])
+    if shared:
+        colour_bar(fig, fig.add_subplot(grid[:, 3]), scales[0])
     if args.title:
         fig.suptitle(args.title)
     # Room at the bottom for the legend of the error colours (0.3 inch).
     legend_frac = 0 if args.no_legend else 0.3 / fig.get_figheight()
     fig.tight_layout(rect=(0, legend_frac, 1, 1))
     if not args.no_legend:
-        legend = [Patch(color=ORANGE, label="too bright (full at UEB)"),
+        legend = [Patch(color=ORANGE, label="too bright"),
                   Patch(facecolor="white", edgecolor="0.5", label="no error"),
-                  Patch(color=BLUE, label="too dark (full at |LEB|)"),
+                  Patch(color=BLUE, label="too dark"),
                   Patch(color=MAGENTA, label="non-finite")]
         fig.legend(handles=legend, loc="lower center", ncol=4, frameon=False)
     for ax in axes[:, 2]:

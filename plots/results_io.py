@@ -22,8 +22,11 @@ TEXT = {"role", "series", "method", "spec", "scene", "luminaire", "precision", "
 # Metric keys: an empty field is an undefined value (null in the JSON), kept as None.
 METRICS = {"nmse", "nrmse", "relmse", "ueb", "leb", "mean_ref", "mean_test", "grad_nmse", "flip"}
 # CSV columns named with their unit: the record key each stands for.
+# The values are lux, or cd/m^2 on the specular scene's rows (ueb_cd_m2, ...;
+# a column holds one unit, the other's column is empty on that row).
 RENAMED = {"height_m": "height", "rotation_rad": "rotation", "ueb_lux": "ueb", "leb_lux": "leb",
-           "mean_ref_lux": "mean_ref", "mean_test_lux": "mean_test"}
+           "mean_ref_lux": "mean_ref", "mean_test_lux": "mean_test", "ueb_cd_m2": "ueb", "leb_cd_m2": "leb",
+           "mean_ref_cd_m2": "mean_ref", "mean_test_cd_m2": "mean_test"}
 
 
 def _value(s):
@@ -67,7 +70,7 @@ def _record(row):
         key = _key(col)
         if s == "":
             if key in METRICS:
-                r[key] = None
+                r.setdefault(key, None)  # the same key's column in the other unit may hold it
             continue
         if key.endswith("_ci95_lo") or key.endswith("_ci95_hi"):
             pair = r.setdefault("ci95", {}).setdefault(key[:-len("_ci95_lo")], [None, None])
@@ -194,6 +197,22 @@ def equal_time(r):
     if out["label"] is None:
         out["label"] = r.get("equal_time_to")
     return out
+
+
+def matched(r):
+    """The method an equal-time partner was timed against, as (name, params):
+    from its equal-time label (the SPEC as the experiment wrote it, e.g.
+    "ltc") or, where a record has none (schema 1), the canonical SPEC in
+    equal_time_to ("ltc:g_omega=estimate,..."); None for a record that is no
+    partner. Whichever file it came from (results.json or results.csv, whose
+    equal_time_to is the label): compare params against the family's
+    defaults, not the strings."""
+    et = equal_time(r)
+    spec = (et or {}).get("label") or r.get("equal_time_to")
+    if not et or not isinstance(spec, str):
+        return None
+    name, _, rest = spec.partition(":")
+    return name, dict(kv.split("=", 1) for kv in rest.split(",") if "=" in kv)
 
 
 def interval(r, metric="nmse"):

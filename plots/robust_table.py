@@ -22,11 +22,11 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from atomic import emit_text  # noqa: E402
-from results_io import load_records, verdict  # noqa: E402
+from results_io import load_records, matched, verdict  # noqa: E402
 
 
 def spec_of(r):
-    if r.get("equal_time_to"):
+    if matched(r):
         return None
     p = r.get("params") or {}
     return r["method"] + ":" + ",".join(f"{k}={p[k]}" for k in sorted(p))
@@ -74,7 +74,7 @@ def main():
     for r in recs:
         s = spec_of(r)
         if s is None:
-            eq[scene(r)][r["equal_time_to"].split(":")[0]] = r
+            eq[scene(r)][matched(r)[0]] = r
         else:
             nmse[scene(r)][s] = r["nmse"]
             rec[scene(r)][s] = r

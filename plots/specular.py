@@ -17,14 +17,14 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from results_io import load_records  # noqa: E402
+from results_io import load_records, matched  # noqa: E402
 
 
 def label(r):
-    if r.get("equal_time_to"):
-        return "MCI=" + ("ltc" if r["equal_time_to"].startswith("ltc:g_omega=estimate") and
-                         "radiance=cubature" in r["equal_time_to"] and "triangulation=fan" in r["equal_time_to"]
-                         else r["equal_time_to"])
+    m = matched(r)
+    if m:  # MCI at the time of the method: the method's name as below (results.json or .csv alike)
+        return "MCI=" + label({"method": m[0], "params": m[1], "spec": m[0] + (":" if m[1] else "") +
+                               ",".join("{}={}".format(k, v) for k, v in m[1].items())})
     p = r.get("params", {})
     if r["method"] == "ltc":
         parts = []

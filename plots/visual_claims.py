@@ -27,7 +27,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from atomic import emit_text  # noqa: E402
-from results_io import load_records  # noqa: E402
+from results_io import load_records, matched  # noqa: E402
 
 METRICS = ("nmse", "grad_nmse", "flip")
 ORDER = ("SCT", "voronoi", "Delaunay+", "MCI-24", "MCI-40", "MCI-eq")
@@ -36,8 +36,8 @@ ORDER = ("SCT", "voronoi", "Delaunay+", "MCI-24", "MCI-40", "MCI-eq")
 def label(r):
     """The seeds' name of a record's method, or None for the MCI curve and others."""
     p = r.get("params") or {}
-    if r.get("equal_time_to"):
-        return "MCI-eq" if r["equal_time_to"].split(":")[0] == "cubature" else None
+    if matched(r):
+        return "MCI-eq" if matched(r)[0] == "cubature" else None
     if r["method"] == "mc":
         return {24: "MCI-24", 40: "MCI-40"}.get(int(p.get("n", 0))) if r.get("role") != "mci_curve" else None
     if r["method"] == "voronoi":

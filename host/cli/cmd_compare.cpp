@@ -4,8 +4,12 @@
 // metrics/flip.h) as a table or one JSON object, and optionally the pictures of a figure row: PREFIX_ref.png and
 // PREFIX_test.png tone mapped with one k (default 1 / mean(reference), or --k
 // so that several rows share one k), PREFIX_err.png (orange too bright, blue
-// too dark, white no error, saturated at UEB / |LEB| or at --bound).
+// too dark, white no error, saturated at one symmetric bound: tonemap::sharedBound
+// of this picture or --bound, so that several rows share one) and
+// PREFIX_err.svg, the error picture with its colour bar in lux and in % of the
+// reference mean.
 #include "cli/commands.h"
+#include "metrics/colour_bar.h"
 #include "metrics/flip.h"
 #include "metrics/image.h"
 #include "metrics/metrics.h"
@@ -30,7 +34,7 @@ struct CompareArgs {
     std::string ref, test, png;
     bool json = false;
     double k = 0;  // 0: default 1 / mean(reference)
-    double bound = 0;  // 0: UEB and |LEB|
+    double bound = 0;  // 0: tonemap::sharedBound of the one picture
 };
 
 // "1.234567e-03" or "n/a" for an undefined value.
@@ -62,18 +66,22 @@ void runCompare(const CompareArgs& a)
                 throw InputError(fmt::format("{}; give --k", e.what()));
             }
         }
-        // The bounds the error picture saturates at; UEB / LEB may be NaN only
-        // when every test pixel is non-finite, and then everything is magenta.
-        const double over = a.bound > 0 ? a.bound : (std::isfinite(m.ueb) ? m.ueb : 0.0);
-        const double under = a.bound > 0 ? a.bound : (std::isfinite(m.leb) ? -m.leb : 0.0);
-        const std::string fr = a.png + "_ref.png", ft = a.png + "_test.png", fe = a.png + "_err.png";
+        // The one bound the error picture saturates at on both sides (0 when
+        // the test is exact or every pixel non-finite: white, or magenta).
+        const double bound = a.bound > 0 ? a.bound : tonemap::sharedBound(R, {&A});
+        const std::string fr = a.png + "_ref.png", ft = a.png + "_test.png", fe = a.png + "_err.png",
+                          fs = a.png + "_err.svg";
+        const std::string err = encodePng(tonemap::errorPicture(R, A, bound, bound));
         util::writeFilesAtomic({{fr, encodePng(tonemap::tonemapPicture(R, k))},
                                 {ft, encodePng(tonemap::tonemapPicture(A, k))},
-                                {fe, encodePng(tonemap::errorPicture(R, A, over, under))}});
+                                {fe, err},
+                                {fs, tonemap::errorFigureSvg(err, R.width, R.height, bound, m.mean_ref)}});
         j["k"] = k;
-        j["bound_over"] = over;
-        j["bound_under"] = under;
-        j["pictures"] = {{"ref", fr}, {"test", ft}, {"err", fe}};
+        j["bound"] = bound;
+        j["bound_over"] = bound;
+        j["bound_under"] = bound;
+        j["colour_bar"] = tonemap::colourBar(33);
+        j["pictures"] = {{"ref", fr}, {"test", ft}, {"err", fe}, {"err_svg", fs}};
     }
 
     // Said on stderr in both modes, so that it is seen even when stdout is parsed.
@@ -96,10 +104,12 @@ void runCompare(const CompareArgs& a)
                              m.grad_pairs)
               << fmt::format("FLIP       {} (mean HDR-FLIP, NVIDIA flip-evaluator)\n", num(m.flip));
     if (!a.png.empty())
-        std::cout << fmt::format("pictures   {} {} {} (k = {}, error saturates at +{} / -{} lx)\n",
+        std::cout << fmt::format("pictures   {} {} {} {} (k = {}, error saturates at +-{} lx, {:.3g} % of the "
+                                 "reference mean)\n",
                                  j["pictures"]["ref"].get<std::string>(), j["pictures"]["test"].get<std::string>(),
-                                 j["pictures"]["err"].get<std::string>(), num(j["k"].get<double>()),
-                                 num(j["bound_over"].get<double>()), num(j["bound_under"].get<double>()));
+                                 j["pictures"]["err"].get<std::string>(), j["pictures"]["err_svg"].get<std::string>(),
+                                 num(j["k"].get<double>()), num(j["bound"].get<double>()),
+                                 100 * j["bound"].get<double>() / m.mean_ref);
 }
 
 }  // namespace
@@ -117,15 +127,17 @@ void addCompareCommand(CLI::App& app)
                   "mean_ref, mean_test, grad_nmse, grad_pairs, flip, ...) instead of a table; "
                   "flip is null when flip-evaluator cannot be imported");
     cmd->add_option("--png", a->png,
-                    "Write PREFIX_ref.png, PREFIX_test.png (tone mapped) and PREFIX_err.png "
-                    "(orange too bright, blue too dark, white no error, magenta non-finite)")
+                    "Write PREFIX_ref.png, PREFIX_test.png (tone mapped), PREFIX_err.png "
+                    "(orange too bright, blue too dark, white no error, magenta non-finite) and PREFIX_err.svg "
+                    "(the error picture with its colour bar in lux and in % of the reference mean)")
         ->check(outFilePath());
     cmd->add_option("--k", a->k,
                     "Tone-mapping scale: display L/(1+L) of L = k E (default 1/mean(reference); "
                     "give one k to every row of a figure; positive and finite)");
     cmd->add_option("--bound", a->bound,
-                    "Error (lux) at which the error picture saturates on both sides "
-                    "(default UEB for orange, |LEB| for blue; positive and finite)");
+                    "Error (lux) at which the error picture saturates on both sides (give every row of a "
+                    "figure the same; default the 99.9th percentile of |test - reference|, docs/figures.md; "
+                    "positive and finite)");
     cmd->callback([a, cmd] {
         // Any positive finite value; the bounds only keep nan, inf and 0 out.
         if (cmd->count("--k")) util::checkRange("--k", a->k, 1e-300, 1e300);

@@ -22,10 +22,15 @@ void addReportCommand(CLI::App& app)
     cmd->callback([dir, noPlots] {
         const std::string json = (std::filesystem::path(*dir) / "results.json").string();
         if (results::exists(json)) results::compact(json, {});  // an interrupted run's journal folded in
-        results::saveCsv(json, results::load(json));
-        std::string note = *noPlots ? std::string("--no-plots") : experiments::makePlots(*dir);
-        if (!note.empty() && !*noPlots) std::cerr << "lumibench: warning: plots not made: " << note << '\n';
-        experiments::writeReport(*dir, note);
+        results::Results doc = results::load(json);
+        experiments::nameLuminaires(doc);  // older records: the names their files give
+        results::saveCsv(json, doc);
+        experiments::ReportSteps steps;
+        std::filesystem::path name(*dir);
+        if (name.filename().empty()) name = name.parent_path();  // "out/main/"
+        steps.tag = name.filename().string();
+        if (*noPlots) steps.plotNote = "--no-plots";
+        experiments::makeReport(*dir, steps);
         std::cerr << "report: " << *dir << "/report.html (and report.md; the records as a table: results.csv)\n";
     });
 }

@@ -84,9 +84,10 @@ void addRunCommand(CLI::App& app)
                                                          s.dropped)
                                            : "");
         if (!o->noReport) {
-            std::string note = experiments::makePlots(o->out);
-            if (!note.empty()) std::cerr << "lumibench: warning: plots not made: " << note << '\n';
-            experiments::writeReport(o->out, note);
+            experiments::ReportSteps steps;
+            steps.tag = e.name;
+            steps.progress = !o->quiet;
+            experiments::makeReport(o->out, steps);
             std::cerr << fmt::format("[{}] report: {}/report.html (and report.md)\n", e.name, o->out);
         }
     });

@@ -211,10 +211,24 @@ Scene SceneId::scene() const
     return kindKeys.applied(s, alpha);
 }
 
+std::string angleText(double radians)
+{
+    constexpr double kPi = 3.14159265358979323846;
+    if (radians == 0) return "0";
+    for (long d = 1; d <= 64; ++d) {
+        const double c = radians * double(d) / kPi;
+        if (std::fabs(c - std::round(c)) > 1e-9 * std::max(1.0, std::fabs(c)) || std::round(c) <= 0) continue;
+        const long ci = std::lround(c);
+        const std::string num = ci == 1 ? "pi" : fmt::format("{}pi", ci);
+        return d == 1 ? num : fmt::format("{}/{}", num, d);
+    }
+    return fmt::format("{}", radians);
+}
+
 std::string SceneId::label() const
 {
     std::string rot;
-    for (char c : rotationText) rot += (std::isalnum(static_cast<unsigned char>(c)) || c == '.') ? c : '-';
+    for (char c : angleText(rotation)) rot += (std::isalnum(static_cast<unsigned char>(c)) || c == '.') ? c : '-';
     const std::string a = kindKeys.kind == SceneKind::Specular ? fmt::format("_a{}", alpha) : "";
     return fmt::format("{}-{}_h{}_r{}{}_{}", fs::path(luminaire).stem().string(),
                        util::digestHex(luminaireName).substr(0, 6), height, rot, a, precision);

@@ -118,9 +118,15 @@ struct SceneId {
     Scene scene() const;
     // short, file-name safe: "lambert-1a2b3c_h0.1_r3pi-4_float", specular
     // scenes "lambert-1a2b3c_h0.1_r3pi-4_a0.1_float"; 1a2b3c from a digest
-    // of luminaireName, so t.ldt and t.ies (or x/l.ldt and y/l.ldt) differ.
+    // of luminaireName, so t.ldt and t.ies (or x/l.ldt and y/l.ldt) differ;
+    // the rotation as angleText, so that 3*pi/4, 3pi/4 and 6pi/8 are one label.
     std::string label() const;
 };
+
+// The canonical text of an angle (radians) in labels: "0", "pi", "Cpi",
+// "pi/D" or "Cpi/D" (C, D coprime, D <= 64) where it is such a multiple of pi
+// to 1e-9, else the shortest decimal that reads back as the same double.
+std::string angleText(double radians);
 
 // Every scene of the experiment in the deterministic order described above,
 // with `size` and `extent` from the experiment.

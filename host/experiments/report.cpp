@@ -1,11 +1,14 @@
 #include "experiments/report.h"
 
+#include "experiments/report_bounds.h"
 #include "experiments/report_page.h"
 #include "experiments/results.h"
 #include "experiments/runner.h"
 #include "metrics/image.h"
 #include "metrics/metrics.h"
+#include "metrics/colour_bar.h"
 #include "metrics/tonemap.h"
+#include "util/base64.h"
 #include "util/error.h"
 #include "util/fileio.h"
 #include "util/process.h"
@@ -13,6 +16,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
+#include <iostream>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -32,10 +37,7 @@ using nlohmann::json;
 
 namespace {
 
-std::string str(const json& j, const std::string& key, const std::string& def = "")
-{
-    return j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : def;
-}
+std::string str(const json& j, const std::string& key, const std::string& def = "") { return jsonText(j, key, def); }
 
 // The method an equal-time partner was timed against, as the experiment wrote it.
 std::string matched(const results::Record& r)
@@ -51,7 +53,14 @@ std::string label(const results::Record& r)
     return str(r.extra, "spec", r.method);
 }
 
-std::string role(const results::Record& r) { return r.equal_time_to ? "equal_time" : str(r.extra, "role", "method"); }
+// The luminaire as people know it: the name its file gives it (the runner's
+// luminaire_name, photometry::displayName), else its file name.
+std::string lumName(const results::Record& r)
+{
+    return str(r.extra, "luminaire_name", fs::path(r.luminaire).filename().string());
+}
+
+std::string role(const results::Record& r) { return cellRole(r); }
 
 std::string sci(double v) { return std::isfinite(v) ? fmt::format("{:.3e}", v) : "n/a"; }
 
@@ -207,34 +216,17 @@ std::string htmlTable(const Table& t)
     return o.str();
 }
 
-const char kB64[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-
-std::string base64(const void* data, size_t n)
-{
-    const auto* p = static_cast<const unsigned char*>(data);
-    std::string o;
-    o.reserve((n + 2) / 3 * 4);
-    for (size_t i = 0; i < n; i += 3) {
-        unsigned v = unsigned(p[i]) << 16 | (i + 1 < n ? unsigned(p[i + 1]) << 8 : 0u) | (i + 2 < n ? p[i + 2] : 0u);
-        o += kB64[v >> 18 & 63];
-        o += kB64[v >> 12 & 63];
-        o += i + 1 < n ? kB64[v >> 6 & 63] : '=';
-        o += i + 2 < n ? kB64[v & 63] : '=';
-    }
-    return o;
-}
-
 std::string dataUri(const fs::path& png)
 {
     std::string bytes = util::readFile(png.string(), "a PNG picture", size_t(64) << 20);
-    return "data:image/png;base64," + base64(bytes.data(), bytes.size());
+    return "data:image/png;base64," + util::base64(bytes.data(), bytes.size());
 }
 
 // Float32 little-endian samples of an image, base64 (the viewer tone maps them).
 std::string floatsB64(const Image& img)
 {
     std::vector<float> v(img.px.begin(), img.px.end());
-    return base64(v.data(), v.size() * sizeof(float));
+    return util::base64(v.data(), v.size() * sizeof(float));
 }
 
 std::string caption(const metrics::Metrics& m)
@@ -246,11 +238,12 @@ std::string caption(const metrics::Metrics& m)
     return s;
 }
 
-// The viewer's data: per scene with saved pictures, the reference and every
-// method's and equal-time partner's image as floats, their error pictures as
-// PNG, captions. Returns the JSON and sets `left` to the scenes left out by
-// the size limit.
-json viewerData(const std::string& dir, const std::vector<results::Record>& recs, size_t& shown, size_t& left)
+// The viewer's data: {"scenes": [...], "bar": colours}; per scene with saved
+// pictures the reference and every method's and equal-time partner's image as
+// floats (the page draws their errors at the scene's `bound`), captions.
+// Sets `shown`, and `left` to the scenes left out by the size limit.
+json viewerData(const std::string& dir, const std::vector<results::Record>& recs,
+                const std::map<std::string, SceneScale>& scales, size_t& shown, size_t& left)
 {
     std::vector<std::string> order;
     std::map<std::string, std::vector<const results::Record*>> byScene;
@@ -278,20 +271,24 @@ json viewerData(const std::string& dir, const std::vector<results::Record>& recs
         } catch (const InputError&) {
         }
         json sc = {{"label", s},
-                   {"luminaire", r0.luminaire},
+                   {"luminaire", lumName(r0)},
                    {"height", r0.height},
                    {"rotation", r0.rotation},
                    {"precision", r0.precision},
                    {"width", ref.width},
                    {"height_px", ref.height},
                    {"k", k},
+                   {"bound", scales.count(s) ? scales.at(s).bound : 0.0},
+                   {"mean_ref", scales.count(s) ? scales.at(s).meanRef : 0.0},
+                   {"unit",
+                    r0.sceneKeys.is_object() && r0.sceneKeys.value("scene_kind", json("")) == "specular" ? "cd/m\u00b2"
+                                                                                                         : "lx"},
                    {"ref", floatsB64(ref)}};
         json methods = json::array(), mci = json::object();
         for (const auto* r : byScene[s]) {
             const bool eq = role(*r) == "equal_time";
             const std::string spec = eq ? matched(*r) : label(*r);
-            fs::path stem = idir / cellImageName(role(*r), spec);
-            fs::path exr = stem.string() + ".exr", err = stem.string() + "_err.png";
+            fs::path exr = (idir / cellStem(*r)).string() + ".exr";
             if (!fs::is_regular_file(exr)) continue;
             Image img = readExr(exr.string());
             if (img.width != ref.width || img.height != ref.height) continue;
@@ -302,7 +299,6 @@ json viewerData(const std::string& dir, const std::vector<results::Record>& recs
             json m = {{"label",
                        eq ? fmt::format("MCI at the time of {} (N = {}{})", spec, r->n ? *r->n : 0, pairText) : spec},
                       {"img", floatsB64(img)},
-                      {"err", fs::is_regular_file(err) ? dataUri(err) : ""},
                       {"caption", caption(r->error)},
                       {"ms", r->time_ms.median}};
             if (eq)
@@ -317,7 +313,7 @@ json viewerData(const std::string& dir, const std::vector<results::Record>& recs
         scenes.push_back(std::move(sc));
         ++shown;
     }
-    return scenes;
+    return {{"scenes", scenes}, {"bar", tonemap::colourBar(257)}};
 }
 
 }  // namespace
@@ -407,12 +403,14 @@ Table mainTable(const results::Results& doc, const std::vector<std::string>& col
         double nsum = 0;
     };
     std::map<std::tuple<std::string, std::string, std::string, double>, std::map<std::string, Acc>> rows;
+    std::map<std::string, std::string> names;  // luminaire file -> the name shown
     size_t carried = 0;
     bool kinds = false;  // records of a scene kind other than diffuse: a column for it
     for (const auto& r : doc.records) {
         if (role(r) == "mci_curve") continue;
         kinds = kinds || !kindText(r).empty();
         auto& a = rows[{r.luminaire, kindText(r), r.precision, r.height}][label(r)];
+        names[r.luminaire] = lumName(r);
         a.parts.push_back(r.error);
         carried += std::isfinite(metrics::minimisable(r.error, key));
         if (r.n) a.nsum += r.equalTime ? r.equalTime->n : double(*r.n);  // N + extra: MC's mean count
@@ -433,7 +431,7 @@ Table mainTable(const results::Results& doc, const std::vector<std::string>& col
             ratioOf.push_back(col.substr(4));
     for (const auto& m : ratioOf) t.head.push_back(mdLiteral(m) + " / MCI");
     for (const auto& [k, m] : rows) {
-        std::vector<Cell> row = {{mdLiteral(std::get<0>(k))},
+        std::vector<Cell> row = {{mdLiteral(names[std::get<0>(k)])},
                                  {mdLiteral(std::get<2>(k))},
                                  num(std::get<3>(k), fmt::format("{}", std::get<3>(k)))};
         if (kinds) row.insert(row.begin() + 1, Cell{mdLiteral(std::get<1>(k))});
@@ -516,6 +514,22 @@ Table timesTable(const results::Results& doc, const std::vector<std::string>& co
     return times;
 }
 
+// The luminaires: the name shown in the tables (the file's own, lumName)
+// beside the file the records name.
+Table luminairesTable(const results::Results& doc)
+{
+    Table t{"Luminaires",
+            "The tables name a luminaire as its file does (IES `[LUMINAIRE]` and `[LUMCAT]`, EULUMDAT fields 9 "
+            "and 10); the file, relative to `luminaire_dir`, is `luminaire` in results.csv.",
+            {"name shown", "file"},
+            {},
+            "No records."};
+    std::set<std::string> seen;
+    for (const auto& r : doc.records)
+        if (seen.insert(r.luminaire).second) t.rows.push_back({{mdLiteral(lumName(r))}, {mdLiteral(r.luminaire)}});
+    return t;
+}
+
 // An equal-time pair of the results: the partner and the method it was timed against.
 struct Pair {
     const results::Record* method = nullptr;  // null: the method's record is missing
@@ -565,7 +579,7 @@ Table pairsTable(const results::Results& doc)
         };
         const results::EqualTime et = r.equalTime.value_or(results::EqualTime{});
         const char* v = p.method ? results::verdictName(results::verdict(*p.method, r)) : "n/a";
-        pairs.rows.push_back({{mdLiteral(r.luminaire)},
+        pairs.rows.push_back({{mdLiteral(lumName(r))},
                               num(r.height, fmt::format("{}", r.height)),
                               num(r.rotation, fmt::format("{:.4f}", r.rotation)),
                               {mdLiteral(matched(r))},
@@ -661,6 +675,7 @@ struct ReportContent {
     std::vector<Table> tables;
     fs::path plotDir;
     std::vector<std::string> pngs;  // in plotDir
+    std::vector<std::string> grids;  // in plotDir/grids: one figure per scene, linked, not inlined
     std::string plotsMissing;  // why there are none, where there are none
 };
 
@@ -703,13 +718,30 @@ ReportContent reportContent(const std::string& dir, const results::Results& doc,
         timesTable(doc, cols)};
     if (std::any_of(doc.records.begin(), doc.records.end(), [](const auto& r) { return bool(r.equal_time_to); }))
         c.tables.push_back(pairsTable(doc));
+    c.tables.push_back(luminairesTable(doc));
     c.plotDir = fs::path(dir) / "plots";
     c.pngs = plotFiles(c.plotDir);
+    c.grids = plotFiles(c.plotDir / "grids");
     if (!plotNote.empty())
         c.plotsMissing = "Plots not made: " + plotNote + ".";
     else if (c.pngs.empty())
         c.plotsMissing = "No plots in `plots/` (run `lumibench report DIR`).";
     return c;
+}
+
+// The per-scene image grids: a list of links (PNG and the PDF beside it).
+std::string gridsMarkdown(const std::vector<std::string>& grids)
+{
+    if (grids.empty()) return "";
+    std::string o = fmt::format("\n## Image grids\n\nReference | method | error of every method and its MCI "
+                                "partner, one figure per scene ({}), the error pictures on the scene's one scale "
+                                "with its colour bar: PNG (300 dpi) and PDF in `plots/grids/`.\n\n",
+                                grids.size());
+    for (const auto& g : grids) {
+        const std::string stem = g.substr(0, g.size() - 4);
+        o += fmt::format("- [{}](plots/grids/{}) ([PDF](plots/grids/{}.pdf))\n", mdLiteral(stem), g, stem);
+    }
+    return o;
 }
 
 std::string reportMarkdown(const ReportContent& c)
@@ -724,6 +756,7 @@ std::string reportMarkdown(const ReportContent& c)
     o << "\n## Plots\n\n";
     if (!c.plotsMissing.empty()) o << c.plotsMissing << "\n\n";
     for (const auto& p : c.pngs) o << fmt::format("![{}](plots/{})\n\n", p, p);
+    o << gridsMarkdown(c.grids);
     return o.str();
 }
 
@@ -768,6 +801,17 @@ std::string reportHtml(const ReportContent& c, const json& viewer, size_t shown,
     for (const auto& p : c.pngs)
         o << "<figure><img alt=\"" << htmlEscape(p) << "\" src=\"" << dataUri(c.plotDir / p) << "\"><figcaption>"
           << htmlEscape(p) << "</figcaption></figure>\n";
+    if (!c.grids.empty()) {
+        o << "<h3>Image grids</h3>\n<ul class=\"grids\">";
+        for (const auto& g : c.grids) {
+            const std::string stem = g.substr(0, g.size() - 4);
+            o << fmt::format("<li><a href=\"plots/grids/{0}\">{1}</a> (<a href=\"plots/grids/{1}.pdf\">PDF</a>)</li>",
+                             htmlEscape(g), htmlEscape(stem));
+        }
+        o << "</ul>\n<p>One figure per scene (reference | method | error on the scene's one scale, with its "
+             "colour bar), beside this page in <code>plots/grids/</code>; the viewer above shows the same "
+             "pictures.</p>\n";
+    }
     o << "</section>\n";
     std::string data = viewer.dump();
     // JSON inside <script>: "</script" would end the element and "<!--" opens
@@ -782,17 +826,44 @@ std::string reportHtml(const ReportContent& c, const json& viewer, size_t shown,
 
 }  // namespace
 
-void writeReport(const std::string& dir, const std::string& plotNote)
+void writeReport(const std::string& dir, const std::string& plotNote, const std::map<std::string, SceneScale>* scales)
 {
     results::Results doc = results::load((fs::path(dir) / "results.json").string());
     results::dedupe(doc.records);  // files of older versions may hold two partners of one method
+    nameLuminaires(doc);
     size_t shown = 0, left = 0;
-    json viewer = viewerData(dir, doc.records, shown, left);
+    const std::map<std::string, SceneScale> own =
+        scales ? std::map<std::string, SceneScale>{} : shareErrorBounds(dir, doc.records);
+    json viewer = viewerData(dir, doc.records, scales ? *scales : own, shown, left);
     std::map<std::string, size_t> viewerIndex;  // scene label -> its index in the viewer (the #scene= fragment)
-    for (size_t i = 0; i < viewer.size(); ++i) viewerIndex[viewer[i]["label"].get<std::string>()] = i;
+    for (size_t i = 0; i < viewer["scenes"].size(); ++i)
+        viewerIndex[viewer["scenes"][i]["label"].get<std::string>()] = i;
     const ReportContent c = reportContent(dir, doc, plotNote, viewerIndex);
     util::writeFileAtomic((fs::path(dir) / "report.md").string(), reportMarkdown(c));
     util::writeFileAtomic((fs::path(dir) / "report.html").string(), reportHtml(c, viewer, shown, left));
+}
+
+void makeReport(const std::string& dir, const ReportSteps& steps)
+{
+    using Clock = std::chrono::steady_clock;
+    const auto t0 = Clock::now();
+    auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+    auto say = [&](const std::string& line) {
+        if (steps.progress) std::cerr << fmt::format("[{}] report {} ({:.1f} s)\n", steps.tag, line, since(t0));
+    };
+    results::Results doc = results::load((fs::path(dir) / "results.json").string());
+    results::dedupe(doc.records);
+    say("1/3: error pictures on one bound per scene (images/)");
+    const std::map<std::string, SceneScale> scales = shareErrorBounds(dir, doc.records);
+    std::string note = steps.plotNote;
+    if (note.empty()) {
+        say(fmt::format("2/3: plots, and an image grid for each of {} scenes (plots/experiment.py)", scales.size()));
+        note = makePlots(dir);
+        if (!note.empty()) std::cerr << "lumibench: warning: plots not made: " << note << '\n';
+    }
+    say("3/3: report.md and report.html");
+    writeReport(dir, note, &scales);
+    say(fmt::format("done: {}/report.html", dir));
 }
 
 }  // namespace lb::experiments

@@ -3,6 +3,9 @@
 // re-running (`lumibench report DIR`).
 #pragma once
 
+#include "experiments/report_bounds.h"
+
+#include <map>
 #include <string>
 
 namespace lb::experiments {
@@ -33,8 +36,24 @@ std::string makePlots(const std::string& dir);
 // kMaxInlineBytes of pictures are inlined; later scenes are left out, and the
 // page says how many.
 //
+// Its error pictures are drawn at one symmetric bound per scene, with a
+// colour bar in lux and in % of the reference mean: `scales`, or where null
+// the bounds of shareErrorBounds (which redraws DIR/images/).
+//
 // `plotNote` (from makePlots) is printed when the plots are missing.
-void writeReport(const std::string& dir, const std::string& plotNote = "");
+void writeReport(const std::string& dir, const std::string& plotNote = "",
+                 const std::map<std::string, SceneScale>* scales = nullptr);
+
+struct ReportSteps {
+    std::string tag;  // the progress lines' prefix, "[tag] report ..." (the experiment's name)
+    bool progress = true;  // a line per stage on stderr, with the seconds since the start
+    std::string plotNote;  // non-empty: no plots, and this says why (e.g. "--no-plots")
+};
+
+// The report step of `run` and `report`: the error pictures on one bound per
+// scene (shareErrorBounds), the plots (makePlots; its image grids use those
+// pictures) and writeReport, a progress line per stage.
+void makeReport(const std::string& dir, const ReportSteps& steps);
 
 inline constexpr size_t kMaxInlineBytes = size_t(48) << 20;
 

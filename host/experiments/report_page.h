@@ -42,6 +42,14 @@ figcaption { font-size: 0.85em; color: #555; }
             height: auto; }
 #lbCap { margin: 0.3em 0; font-weight: 600; overflow-wrap: anywhere; }
 #lbv .help { color: #555; font-size: 0.9em; max-width: 60em; }
+/* The error pictures' colour bar: under the picture, as wide as it. */
+#lbBar { width: 512px; max-width: 100%; margin: 0.2em 0 0.4em; }
+#lbBar.off { visibility: hidden; }
+#lbBarC { display: block; width: 100%; height: 14px; border: 1px solid #888; box-sizing: border-box; }
+#lbBarT { position: relative; height: 2.6em; font-size: 0.8em; }
+#lbBarT span { position: absolute; top: 0; transform: translateX(-50%); white-space: nowrap; text-align: center; }
+#lbBarT span:first-child { transform: none; } #lbBarT span:last-child { transform: translateX(-100%); }
+#lbBarCap { font-size: 0.85em; color: #444; margin-top: 0.2em; }
 )CSS";
 
 inline constexpr const char* kViewerHtml = R"HTML(<div id="lbv">
@@ -53,13 +61,17 @@ inline constexpr const char* kViewerHtml = R"HTML(<div id="lbv">
 <label>Zoom <select id="lbZoom"><option>1</option><option>2</option><option>4</option><option>8</option><option>16</option></select> x</label>
 </div>
 <canvas id="lbCanvas" width="512" height="512"></canvas>
+<div id="lbBar" class="off"><canvas id="lbBarC" width="512" height="1"></canvas><div id="lbBarT"></div>
+<div id="lbBarCap"></div></div>
 <div id="lbCap"></div>
 <p class="help">Keys: <b>1</b> reference, <b>2</b> method, <b>3</b> its error, <b>4</b> MCI at equal time,
 <b>5</b> MCI's error; <b>space</b> or a click on the picture: the next one; <b>&larr; &rarr;</b> scene;
 <b>&uarr; &darr;</b> method; <b>+ &minus;</b> zoom on the near field (the image centre, under the light);
 <b>[ ]</b> exposure by half a stop; <b>0</b> resets zoom and exposure. Pictures: L/(1+L) of L = k 2<sup>exposure</sup> E,
 k = 1/mean(reference) per scene (as <code>lumibench compare --png</code>), magenta where a pixel is not finite;
-error pictures: orange too bright, blue too dark, white no error, saturated at UEB and |LEB|.
+error pictures: test &minus; reference, orange too bright, blue too dark, white no error, on one symmetric
+scale per scene shared by every method and MCI (the bar under the picture, in lux and in % of the reference
+mean; saturated beyond it; docs/figures.md says how it is chosen).
 The URL fragment holds the view (e.g. <code>#scene=3&amp;view=mci&amp;zoom=4</code>): copy the address to share it.</p>
 </div>
 )HTML";
@@ -74,7 +86,12 @@ inline constexpr const char* kScript = R"JS(
                 mci: "MCI at equal time", mci_error: "MCI's error" };
   var ZOOMS = [1, 2, 4, 8, 16];
   var el = document.getElementById("lbdata");
-  var D = el ? JSON.parse(el.textContent) : [];
+  var DATA = el ? JSON.parse(el.textContent) : {};
+  var D = DATA.scenes || [];
+  // The error colours of host/metrics/tonemap.h (colourBar): -bound .. +bound.
+  var BAR = (DATA.bar || ["#ffffff"]).map(function (h) {
+    return [parseInt(h.slice(1, 3), 16), parseInt(h.slice(3, 5), 16), parseInt(h.slice(5, 7), 16)];
+  });
   var S = { scene: 0, method: 0, view: "reference", exposure: 0, zoom: 1 };
   var canvas = document.getElementById("lbCanvas");
 
@@ -105,7 +122,7 @@ inline constexpr const char* kScript = R"JS(
   if (!canvas || !D.length) return;
 
   // --- pictures -------------------------------------------------------------
-  var floatCache = {}, pngCache = {};
+  var floatCache = {};
   function floats(key, b64) {
     if (!floatCache[key]) {
       var bin = atob(b64), u = new Uint8Array(bin.length);
@@ -132,14 +149,55 @@ inline constexpr const char* kScript = R"JS(
     ctx.putImageData(img, 0, 0);
     return c;
   }
-  function png(uri) {
-    if (!pngCache[uri]) {
-      var im = new Image();
-      im.onload = function () { draw(); };
-      im.src = uri;
-      pngCache[uri] = im;
+  // The error picture of f against the reference r at the scene's bound:
+  // tonemap.h errorColour through the bar's colours, magenta where not finite.
+  function errored(f, r, w, h, bound) {
+    var c = document.createElement("canvas");
+    c.width = w; c.height = h;
+    var ctx = c.getContext("2d"), img = ctx.createImageData(w, h), d = img.data, n = BAR.length;
+    for (var i = 0; i < w * h; i++) {
+      var e = f[i] - r[i], col;
+      if (!isFinite(e)) col = [255, 0, 255];
+      else {
+        var t = bound > 0 ? Math.min(Math.max(e / bound, -1), 1) : 0;
+        col = BAR[Math.round((t + 1) / 2 * (n - 1))];
+      }
+      d[4 * i] = col[0]; d[4 * i + 1] = col[1]; d[4 * i + 2] = col[2]; d[4 * i + 3] = 255;
     }
-    return pngCache[uri];
+    ctx.putImageData(img, 0, 0);
+    return c;
+  }
+  // "+4", "\u22122.5", "0", "+8420": three significant digits, whole numbers
+  // from 1000 on (tonemap::barTicks).
+  function mag(v) {
+    var s = Math.abs(v) >= 1000 ? Math.abs(v).toFixed(0) : Math.abs(v).toPrecision(3);
+    if (s.indexOf(".") >= 0 && s.indexOf("e") < 0) s = s.replace(/0+$/, "").replace(/\.$/, "");
+    return s;
+  }
+  function signed(v) { return v === 0 ? "0" : (v > 0 ? "+" : "\u2212") + mag(v); }
+  // The colour bar of the scene's error pictures, labelled in lux and in % of
+  // the reference mean; hidden on the other views.
+  function bar(sc, on) {
+    var box = document.getElementById("lbBar"), bc = document.getElementById("lbBarC");
+    box.className = on ? "" : "off";
+    if (!on) return;
+    bc.width = BAR.length;
+    var ctx = bc.getContext("2d"), img = ctx.createImageData(BAR.length, 1);
+    BAR.forEach(function (c, i) { img.data.set([c[0], c[1], c[2], 255], 4 * i); });
+    ctx.putImageData(img, 0, 0);
+    var T = document.getElementById("lbBarT"), B = sc.bound, M = sc.mean_ref, U = " " + (sc.unit || "lx");
+    T.innerHTML = "";
+    [-1, -0.5, 0, 0.5, 1].forEach(function (t) {
+      var s = document.createElement("span");
+      s.style.left = ((t + 1) * 50) + "%";
+      s.textContent = signed(t * B) + U;
+      if (M > 0) { s.appendChild(document.createElement("br")); s.appendChild(document.createTextNode(signed(100 * t * B / M) + " %")); }
+      T.appendChild(s);
+    });
+    document.getElementById("lbBarCap").textContent = B > 0
+      ? "Error scale of this scene, shared by every method and MCI: \u00b1" + mag(B) + U + " = \u00b1" +
+        mag(100 * B / M) + " % of the reference mean " + mag(M) + U + "; saturated beyond."
+      : "Every picture of this scene is exact: no error to show.";
   }
   function current() {
     var sc = D[S.scene], m = sc.methods[S.method] || null;
@@ -157,9 +215,7 @@ inline constexpr const char* kScript = R"JS(
       else {
         cap += item.label + " (" + item.caption + (item.ms ? ", " + item.ms.toPrecision(3) + " ms" : "") + ")";
         if (S.view === "error" || S.view === "mci_error") {
-          var im = item.err ? png(item.err) : null;
-          if (im && im.complete && im.naturalWidth) src = im;
-          else if (!item.err) cap += ": no error picture saved";
+          src = errored(floats(S.scene + "/" + item.label, item.img), floats(S.scene + "/ref", sc.ref), w, h, sc.bound);
         } else {
           src = toned(floats(S.scene + "/" + item.label, item.img), w, h, k);
         }
@@ -174,6 +230,7 @@ inline constexpr const char* kScript = R"JS(
       var sw = w / S.zoom, sh = h / S.zoom;
       ctx.drawImage(src, (w - sw) / 2, (h - sh) / 2, sw, sh, 0, 0, W, H);
     }
+    bar(sc, S.view === "error" || S.view === "mci_error");
     document.getElementById("lbCap").textContent = cap + (S.zoom > 1 ? " - zoom " + S.zoom + "x on the centre" : "");
   }
   function fragment() {

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <charconv>
@@ -569,6 +570,17 @@ size_t retain(const std::string& path, const std::function<bool(const Record&)>&
     return moved;
 }
 
+size_t update(const std::string& path, const std::function<bool(Record&)>& edit)
+{
+    if (!exists(path)) return 0;
+    FileLock lock(path);
+    Results doc = loadUnlocked(path);
+    size_t changed = 0;
+    for (auto& r : doc.records) changed += edit(r);
+    if (changed) save(path, doc);
+    return changed;
+}
+
 Results mergeResults(const std::vector<std::string>& paths, MergeStats* stats)
 {
     Results out;
@@ -638,12 +650,20 @@ bool flatValue(const json& v)
     return true;
 }
 
-// The CSV column of a metric key: the unit of the image's values (lux,
-// docs/usage.md "Comparing images") appended where the metric has one.
-std::string metricColumn(const std::string& key)
+// The unit of a record's image values: luminance in cd/m^2 for the specular
+// scene (docs/design.md section 8), irradiance in lux otherwise.
+std::string valueUnit(const Record& r)
+{
+    const bool specular = r.sceneKeys.is_object() && r.sceneKeys.value("scene_kind", json("")) == "specular";
+    return specular ? "cd_m2" : "lux";
+}
+
+// The CSV column of a metric key in a unit: the unit appended where the
+// metric has one (ueb_lux, ueb_cd_m2), the key alone where it has none.
+std::string metricColumn(const std::string& key, const std::string& unit = "lux")
 {
     static const std::set<std::string> withUnit = {"ueb", "leb", "mean_ref", "mean_test"};
-    return withUnit.count(key) ? key + "_lux" : key;
+    return withUnit.count(key) ? key + "_" + unit : key;
 }
 
 // The columns of results.csv beyond the fixed head: what some record has;
@@ -651,6 +671,7 @@ std::string metricColumn(const std::string& key)
 struct CsvColumns {
     std::vector<std::string> metrics;
     std::set<std::string> params, extras, intervals;
+    std::vector<std::string> units;  // of the records' values: "lux" first, then "cd_m2"
 };
 
 std::set<std::string> varyingParams(const Results& doc)
@@ -671,6 +692,10 @@ CsvColumns csvColumns(const Results& doc)
     CsvColumns c;
     const json metricKeys = metrics::Metrics{};
     for (auto it = metricKeys.begin(); it != metricKeys.end(); ++it) c.metrics.push_back(it.key());
+    for (const char* u : {"lux", "cd_m2"})
+        if (std::any_of(doc.records.begin(), doc.records.end(), [&](const Record& r) { return valueUnit(r) == u; }))
+            c.units.push_back(u);
+    if (c.units.empty()) c.units.push_back("lux");
     for (const auto& r : doc.records) {
         for (const auto& kv : r.ci95) c.intervals.insert(kv.first);
         for (const json* o : {&r.extra, &r.sceneKeys})
@@ -727,10 +752,16 @@ std::vector<std::string> csvHeader(const CsvColumns& c)
                                      "luminaire",    "height_m",    "rotation_rad",   "res",         "precision",
                                      "device",       "driver",      "time_ms_median", "time_ms_min", "time_ms_max",
                                      "time_ms_reps", "time_ms_res", "time_ms_cv"};
-    for (const auto& m : c.metrics) cols.push_back(metricColumn(m));
+    // a metric with a unit gets a column per unit of the records: a column
+    // holds one unit, the other's is empty on that row
+    for (const auto& m : c.metrics)
+        for (const auto& u : c.units)
+            if (metricColumn(m, u) != m || u == c.units.front()) cols.push_back(metricColumn(m, u));
     cols.push_back("seeds");
     for (const auto& m : c.intervals)
-        cols.insert(cols.end(), {metricColumn(m) + "_ci95_lo", metricColumn(m) + "_ci95_hi"});
+        for (const auto& u : c.units)
+            if (metricColumn(m, u) != m || u == c.units.front())
+                cols.insert(cols.end(), {metricColumn(m, u) + "_ci95_lo", metricColumn(m, u) + "_ci95_hi"});
     cols.push_back("n");
     for (const char* k : kEqualTimeCsv)
         if (std::string(k) != "n") cols.push_back(std::string("equal_time_") + k);
@@ -758,13 +789,20 @@ std::vector<std::string> csvRow(const Record& r, const CsvColumns& c)
                                   csvValue(j["device"]),
                                   csvValue(j["driver"])};
     for (const char* k : {"median", "min", "max", "reps", "res", "cv"}) f.push_back(csvValue(t[k]));
-    for (const auto& m : c.metrics) f.push_back(csvValue(j.value(m, json(nullptr))));
+    const std::string unit = valueUnit(r);
+    for (const auto& m : c.metrics)
+        for (const auto& u : c.units)
+            if (metricColumn(m, u) != m || u == c.units.front())
+                f.push_back(u == unit || metricColumn(m, u) == m ? csvValue(j.value(m, json(nullptr))) : "");
     f.push_back(csvValue(r.seeds));
-    for (const auto& m : c.intervals) {
-        auto it = r.ci95.find(m);
-        f.push_back(it == r.ci95.end() ? "" : csvValue(num(it->second[0])));
-        f.push_back(it == r.ci95.end() ? "" : csvValue(num(it->second[1])));
-    }
+    for (const auto& m : c.intervals)
+        for (const auto& u : c.units) {
+            if (metricColumn(m, u) == m && u != c.units.front()) continue;
+            auto it = r.ci95.find(m);
+            const bool here = it != r.ci95.end() && (u == unit || metricColumn(m, u) == m);
+            f.push_back(here ? csvValue(num(it->second[0])) : "");
+            f.push_back(here ? csvValue(num(it->second[1])) : "");
+        }
     f.push_back(csvValue(mcSamples(r)));
     for (const char* k : kEqualTimeCsv) {
         if (std::string(k) == "n") continue;

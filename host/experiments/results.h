@@ -190,6 +190,12 @@ void compact(const std::string& path, const nlohmann::json& context);
 // none.
 size_t retain(const std::string& path, const std::function<bool(const Record&)>& keep, const std::string& sidePath);
 
+// Applies `edit` to every record of the results file at `path` (it returns
+// whether it changed the record) and saves the file where one changed, under
+// the exclusive lock of `path`, as appendRecord. Returns how many changed; a
+// missing file changes none. (Migrations of older files, e.g. scene labels.)
+size_t update(const std::string& path, const std::function<bool(Record&)>& edit);
+
 struct MergeStats {
     size_t files = 0, records_in = 0, records_out = 0, replaced = 0;
 };

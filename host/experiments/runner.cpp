@@ -8,6 +8,7 @@
 #include "metrics/metrics.h"
 #include "metrics/png.h"
 #include "metrics/tonemap.h"
+#include "photometry/names.h"
 #include "photometry/text.h"
 #include "util/digest.h"
 #include "util/error.h"
@@ -138,7 +139,13 @@ struct SceneRun {
     Image ref;
     std::string imageDir;
 
-    results::Record base() const { return baseRecord(sid, rt); }
+    // The scene's part of a record, with the name the luminaire file gives it.
+    results::Record base() const
+    {
+        results::Record r = baseRecord(sid, rt);
+        r.extra["luminaire_name"] = photometry::displayName(sid.luminaire);
+        return r;
+    }
 
     methods::RenderResult render(const methods::MethodSpec& spec) const
     {
@@ -427,6 +434,7 @@ public:
         util::removeStaleTemporaries(opt_.outDir);  // left by a killed run
         cells_ = cellsOf(e_);
         dropCellsNotInTheExperiment();
+        relabelScenes();
         done_ = DoneCells::load(resultsPath_);
         for (const auto& s : scenes(e_))
             if (inShard(s, opt_.shardK, opt_.shardN)) mine_.push_back(s);
@@ -474,6 +482,36 @@ private:
         if (sum_.dropped && opt_.progress)
             std::cerr << fmt::format("[{}] moved {} records of cells no longer in the experiment to {}\n", e_.name,
                                      sum_.dropped, side);
+    }
+
+    // Records whose scene label differs from the one the scene has now (a
+    // file of a version that wrote the rotation as given: 3*pi/4 and 3pi/4
+    // two labels) get today's label, and their pictures move with them.
+    void relabelScenes()
+    {
+        std::map<std::string, std::string> labelOf;  // cell key -> its scene's label
+        for (const auto& s : scenes(e_))
+            for (const auto& c : cells_) labelOf[cellKey(s, rt_, c)] = s.label();
+        std::map<std::string, std::string> renamed;  // old label -> new
+        const size_t n = results::update(resultsPath_, [&](results::Record& r) {
+            auto it = labelOf.find(r.key());
+            const std::string old = r.extra.is_object() ? r.extra.value("scene", std::string()) : std::string();
+            if (it == labelOf.end() || old.empty() || old == it->second) return false;
+            renamed[old] = it->second;
+            r.extra["scene"] = it->second;
+            return true;
+        });
+        for (const auto& [from, to] : renamed) {
+            const fs::path src = fs::path(opt_.outDir) / "images" / from, dst = fs::path(opt_.outDir) / "images" / to;
+            if (!fs::is_directory(src)) continue;
+            fs::create_directories(dst);
+            for (const auto& f : fs::directory_iterator(src))  // a picture already under the new label is newer
+                if (!fs::exists(dst / f.path().filename())) fs::rename(f.path(), dst / f.path().filename());
+            fs::remove_all(src);
+        }
+        if (n && opt_.progress)
+            std::cerr << fmt::format("[{}] {} records of {} scenes relabelled (angles in one form: {} -> {}, ...)\n",
+                                     e_.name, n, renamed.size(), renamed.begin()->first, renamed.begin()->second);
     }
 
     // A scene's cells still to do: its reference, then each cell in order.

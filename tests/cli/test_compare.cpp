@@ -4,6 +4,7 @@
 #include "metrics/image.h"
 #include "metrics/png.h"
 #include "testutil.h"
+#include "util/fileio.h"
 
 #include <nlohmann/json.hpp>
 
@@ -153,17 +154,28 @@ TEST_F(CompareCli, PicturesHaveTheExpectedColours)
     ASSERT_EQ(r.code, 0) << r.out << r.err;
     auto j = nlohmann::json::parse(r.out);
     EXPECT_DOUBLE_EQ(j["k"].get<double>(), 0.4);  // default 1 / mean(R) = 1 / 2.5
+    // One symmetric bound: the 99.9th percentile of |A - R| = [1 0 1 2] (at 4
+    // pixels the largest), the same for both sides.
+    EXPECT_EQ(j["bound"].get<double>(), 2.0);
     EXPECT_EQ(j["bound_over"].get<double>(), 2.0);
-    EXPECT_EQ(j["bound_under"].get<double>(), 1.0);
+    EXPECT_EQ(j["bound_under"].get<double>(), 2.0);
+    EXPECT_EQ(j["colour_bar"].size(), 33u);
 
-    // Error A - R = [1 0; -1 2] with bounds UEB 2, |LEB| 1: half orange, white, blue, orange.
+    // Error A - R = [1 0; -1 2] at the bound 2: half orange, white, half blue, orange.
     auto e = readPng(prefix + "_err.png");
     ASSERT_EQ(e.width, 2);
     ASSERT_EQ(e.height, 2);
-    EXPECT_EQ(e.at(0, 0), tonemap::errorColour(1.0, 2.0, 1.0));  // half way (tests/metrics/test_tonemap.cpp)
+    EXPECT_EQ(e.at(0, 0), tonemap::errorColour(1.0, 2.0, 2.0));  // half way (tests/metrics/test_tonemap.cpp)
     EXPECT_EQ(e.at(0, 1), tonemap::kWhite);
-    EXPECT_EQ(e.at(1, 0), tonemap::kBlue);
+    EXPECT_EQ(e.at(1, 0), tonemap::errorColour(-1.0, 2.0, 2.0));  // as pale as +1: the scale is symmetric
+    EXPECT_FALSE(e.at(1, 0) == tonemap::kBlue);
     EXPECT_EQ(e.at(1, 1), tonemap::kOrange);
+    // The SVG figure: the picture with its colour bar labelled in lux and in %
+    // of the reference mean (2.5 lx: +-2 lx is +-80 %).
+    const std::string svg = util::readFile(prefix + "_err.svg", "an SVG figure", size_t(1) << 20);
+    for (const char* s : {"<svg", "data:image/png;base64,", "linearGradient", "-2 lx", "+2 lx", "+1 lx", "0 lx",
+                          "-80 %", "+80 %", "reference mean 2.5 lx", "saturated beyond +-2 lx"})
+        EXPECT_NE(svg.find(s), std::string::npos) << s << "\n" << svg.substr(0, 400);
     // Tone mapped with k = 0.4: E = 1 -> 0.4/1.4 -> 73; E = 2 (test, row 0 col 0) -> 0.8/1.8 -> 113.3 -> 113.
     EXPECT_EQ(readPng(prefix + "_ref.png").at(0, 0), (tonemap::Rgb8{73, 73, 73}));
     EXPECT_EQ(readPng(prefix + "_test.png").at(0, 0), (tonemap::Rgb8{113, 113, 113}));

@@ -269,6 +269,30 @@ size_t differing(const tonemap::Picture& a, const tonemap::Picture& b)
     return n;
 }
 
+// DIR/results.json of one scene (S150): cubature and its MCI partner, and
+// their pictures in DIR/images/S150 (returned) as the runner saves them.
+fs::path writeScene(const fs::path& dir, const json& context, const Image& ref, const Image& method, const Image& mci)
+{
+    results::Results doc;
+    doc.context = context;
+    doc.records = {rec("cubature", "method", 1.5, ref, method), rec("mc:n=4", "equal_time", 1.5, ref, mci)};
+    results::save((dir / "results.json").string(), doc);
+    const fs::path img = dir / "images" / "S150";
+    fs::create_directories(img);
+    writeExr((img / "reference.exr").string(), ref);
+    writeExr((img / "cubature.exr").string(), method);
+    writeExr((img / "mci_eq_cubature.exr").string(), mci);
+    return img;
+}
+
+// The browser found on PATH, or "" (the browser parts are then skipped).
+std::string chromium()
+{
+    for (const char* c : {"chromium", "chromium-browser", "google-chrome"})
+        if (sh(std::string("command -v ") + c + " >/dev/null 2>&1") == 0) return c;
+    return "";
+}
+
 // report.html: self-contained (no URL outside the file), tables and viewer
 // data inline; opened in headless Chromium at two fragments the picture
 // differs (the fragment goes through the same show() as keys and clicks).
@@ -281,15 +305,9 @@ TEST_F(Report, HtmlIsSelfContainedAndSwitchesViewsInChromium)
             method.at(y, x) = 1.3 * ref.at(y, x);
             mci.at(y, x) = ref.at(y, x) * (((x + y) & 1) ? 0.2 : 1.8);  // noisy: a checkerboard
         }
-    results::Results doc;
-    doc.context = {{"device", "dev"}, {"commit", "abc123"}, {"date", "2026-11-30T00:00:00Z"}, {"experiment", "t"}};
-    doc.records = {rec("cubature", "method", 1.5, ref, method), rec("mc:n=4", "equal_time", 1.5, ref, mci)};
-    results::save((dir / "results.json").string(), doc);
-    fs::path img = dir / "images" / "S150";
-    fs::create_directories(img);
-    writeExr((img / "reference.exr").string(), ref);
-    writeExr((img / "cubature.exr").string(), method);
-    writeExr((img / "mci_eq_cubature.exr").string(), mci);
+    const fs::path img = writeScene(
+        dir, {{"device", "dev"}, {"commit", "abc123"}, {"date", "2026-11-30T00:00:00Z"}, {"experiment", "t"}}, ref,
+        method, mci);
     writePng((img / "cubature_err.png").string(), tonemap::errorPicture(ref, method, 20, 1));
     writePng((img / "mci_eq_cubature_err.png").string(), tonemap::errorPicture(ref, mci, 20, 20));
     experiments::writeReport(dir.string(), "test");
@@ -302,13 +320,8 @@ TEST_F(Report, HtmlIsSelfContainedAndSwitchesViewsInChromium)
     for (const char* s : {"src=\"http", "href=\"http", "src=\"//", "<link", "@import", "fetch("})
         EXPECT_EQ(html.find(s), std::string::npos) << s;
 
-    const char* found = nullptr;
-    for (const char* c : {"chromium", "chromium-browser", "google-chrome"})
-        if (sh(std::string("command -v ") + c + " >/dev/null 2>&1") == 0) {
-            found = c;
-            break;
-        }
-    if (!found)
+    const std::string found = chromium();
+    if (found.empty())
         GTEST_SKIP() << "no Chromium on this machine (Debian: apt-get install chromium; scripts/install-deps.sh "
                         "installs it): the browser part of this test is skipped";
     fs::path profile = dir / "chromium-profile";
@@ -339,6 +352,137 @@ TEST_F(Report, HtmlIsSelfContainedAndSwitchesViewsInChromium)
     EXPECT_GT(differing(r, x), kCaption) << "exposure changed nothing";
     // the same fragment twice: the same picture (the comparison can tell)
     EXPECT_EQ(differing(r, shot("view=reference")), 0u);
+}
+
+}  // namespace
+}  // namespace lb
+
+namespace lb {
+namespace {
+
+size_t near(const tonemap::Picture& p, tonemap::Rgb8 c, int tol)
+{
+    size_t n = 0;
+    for (const auto& q : p.px)
+        n += std::abs(q.r - c.r) <= tol && std::abs(q.g - c.g) <= tol && std::abs(q.b - c.b) <= tol;
+    return n;
+}
+
+// One error scale per scene: the method's error of +1 lx and MCI's of +-4 lx
+// are drawn on one bound (4 lx: the largest 99.9th percentile of |error|),
+// in the viewer and in images/ (the runner wrote the method's at its own
+// extremes, full orange); the viewer's colour bar says +-4 lx and +-40 % of
+// the reference mean 10 lx.
+TEST_F(Report, ErrorPicturesShareOneBoundPerSceneWithAColourBar)
+{
+    const int n = 16;
+    Image ref(n, n, 10.0), method(n, n, 11.0), mci(n, n);
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) mci.at(y, x) = ((x + y) & 1) ? 6.0 : 14.0;
+    const fs::path img = writeScene(dir, {{"experiment", "t"}}, ref, method, mci);
+    writePng((img / "cubature_err.png").string(), tonemap::errorPicture(ref, method, 1, 0));  // as the runner
+    std::ofstream(img / "cubature.json") << R"({"nmse": 0.01, "k": 0.1})";
+    experiments::writeReport(dir.string(), "test");
+
+    const tonemap::Rgb8 pale = tonemap::errorColour(1.0, 4.0, 4.0);
+    EXPECT_EQ(readPng((img / "cubature_err.png").string()).at(3, 3), pale);
+    EXPECT_EQ(readPng((img / "mci_eq_cubature_err.png").string()).at(0, 0), tonemap::kOrange);
+    const json j = json::parse(slurp(img / "cubature.json"));
+    EXPECT_EQ(j["bound"].get<double>(), 4.0);
+    EXPECT_EQ(j["mean_ref"].get<double>(), 10.0);
+    EXPECT_EQ(j["nmse"].get<double>(), 0.01);  // the runner's keys kept
+    EXPECT_EQ(j["colour_bar"].size(), 33u);
+
+    const std::string browser = chromium();
+    if (browser.empty()) GTEST_SKIP() << "no Chromium on this machine: the browser part of this test is skipped";
+    const std::string page = fs::absolute(dir / "report.html").string();
+    const std::string common =
+        fmt::format("timeout 120 {} --headless --disable-gpu {} --user-data-dir='{}' "
+                    "--hide-scrollbars --window-size=1000,1500 --virtual-time-budget=3000",
+                    browser, getuid() == 0 ? "--no-sandbox" : "", (dir / "chromium-profile").string());
+    ASSERT_EQ(sh(fmt::format("{} --dump-dom 'file://{}#view=error' > '{}' 2>/dev/null", common, page,
+                             (dir / "dom.html").string())),
+              0);
+    const std::string dom = slurp(dir / "dom.html");
+    for (const char* s : {"+4 lx", "\u22124 lx", "+2 lx", "0 lx", "+40 %", "\u221240 %",
+                          "shared by every method and MCI: \u00b14 lx = \u00b140 % of the reference mean 10 lx"})
+        EXPECT_NE(dom.find(s), std::string::npos) << s;
+    EXPECT_EQ(dom.find("id=\"lbBar\" class=\"off\""), std::string::npos) << "the bar is hidden on the error view";
+    auto shot = [&](const std::string& fragment) {
+        fs::path out = dir / ("shot_" + std::to_string(std::hash<std::string>{}(fragment)) + ".png");
+        EXPECT_EQ(sh(fmt::format("{} --screenshot='{}' 'file://{}#{}' >/dev/null 2>&1", common, out.string(), page,
+                                 fragment)),
+                  0);
+        return fs::exists(out) ? readPng(out.string()) : tonemap::Picture{};
+    };
+    // The 512 x 512 canvas: the method's error in the pale orange of +1 of 4,
+    // not the full orange of its own extremes; MCI's at the full colours.
+    const tonemap::Picture e = shot("view=error"), m = shot("view=mci_error");
+    EXPECT_GT(near(e, pale, 2), 200000u);
+    EXPECT_LT(near(e, tonemap::kOrange, 2), 20000u);
+    EXPECT_GT(near(m, tonemap::kOrange, 2), 100000u);
+    EXPECT_GT(near(m, tonemap::kBlue, 2), 100000u);
+}
+
+// The report step says what it does, stage by stage, on stderr.
+TEST_F(Report, ReportStepPrintsAProgressLinePerStage)
+{
+    Image ref(4, 4, 1.0);
+    results::Results doc;
+    doc.context = {{"experiment", "t"}};
+    doc.records = {rec("cubature", "method", 1.5, ref, ref)};
+    results::save((dir / "results.json").string(), doc);
+    const test::CliResult r = test::runCli("report '" + dir.string() + "' --no-plots");
+    ASSERT_EQ(r.code, 0) << r.err;
+    const std::string tag = "[" + dir.filename().string() + "] report ";
+    for (const std::string s : {"1/3: error pictures on one bound per scene", "3/3: report.md and report.html", "done"})
+        EXPECT_NE(r.err.find(tag + s), std::string::npos) << s << "\n" << r.err;
+    EXPECT_EQ(r.err.find("2/3"), std::string::npos) << "--no-plots: no plot stage\n" << r.err;
+}
+
+}  // namespace
+}  // namespace lb
+
+namespace lb {
+namespace {
+
+// A column holds one unit: the specular scene's values (luminance, cd/m^2)
+// go to ueb_cd_m2, leb_cd_m2, mean_ref_cd_m2, mean_test_cd_m2, the others'
+// (lux) to *_lux, each empty on the other's rows; plots/results_io.py reads
+// either back under the record's key.
+TEST_F(Report, CsvColumnsNameTheUnitOfTheirValues)
+{
+    Image ref = ramp(4, 1), test = ramp(4, 1.5);
+    Record diffuse = rec("cubature", "method", 1.5, ref, test), specular = rec("ltc", "method", 1.5, ref, test);
+    specular.sceneKeys = {{"scene_kind", "specular"}, {"alpha", 0.1}};
+    specular.error.ueb = 7.25;
+    results::Results doc;
+    doc.records = {diffuse, specular};
+    const fs::path file = dir / "results.json";
+    results::save(file.string(), doc);
+    results::saveCsv(file.string(), doc);
+    const std::string script = (dir / "t.py").string();
+    std::ofstream(script) << fmt::format(R"(import csv, sys
+sys.path.insert(0, "{}/plots")
+from results_io import load_records
+rows = list(csv.DictReader(open("{}/results.csv")))
+for k in ("ueb", "leb", "mean_ref", "mean_test"):
+    assert rows[0][k + "_lux"] != "" and rows[0][k + "_cd_m2"] == "", (k, rows[0])
+    assert rows[1][k + "_lux"] == "" and rows[1][k + "_cd_m2"] != "", (k, rows[1])
+assert float(rows[1]["ueb_cd_m2"]) == 7.25
+a, b = load_records("{}/results.csv")
+assert b["ueb"] == 7.25 and a["ueb"] > 0, (a["ueb"], b["ueb"])
+assert isinstance(a["mean_ref"], float) and isinstance(b["mean_ref"], float)
+)",
+                                         test::sourceDir(), dir.string(), dir.string());
+    int code = -1;
+    const std::string out = test::shellOutput("/usr/bin/python3 " + script + " 2>&1", &code);
+    EXPECT_EQ(code, 0) << out;
+    // diffuse alone: the columns of before, no cd/m^2
+    doc.records = {diffuse};
+    const std::string csv = results::toCsv(doc);
+    EXPECT_NE(csv.find("ueb_lux"), std::string::npos);
+    EXPECT_EQ(csv.find("cd_m2"), std::string::npos);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include "experiments/results.h"
 #include "experiments/runner.h"
 #include "metrics/flip.h"
+#include "util/check.h"
 #include "util/error.h"
 
 #include "../testutil.h"
@@ -97,6 +98,31 @@ TEST(Experiment, ParsesAndEnumeratesScenesInFileOrder)
     EXPECT_EQ(e2.res, 7);
     EXPECT_EQ(e2.luminaires.size(), 12u);  // the suite's twelve, .ldt preferred over the .ies twin
     for (auto& l : e2.luminaires) EXPECT_EQ(fs::path(l).extension(), ".ldt");
+    fs::remove_all(d);
+}
+
+// Labels name an angle in one form, however the experiment wrote it.
+TEST(Experiment, SceneLabelsNameAnglesInOneForm)
+{
+    const auto angle = [](const std::string& t) { return experiments::angleText(util::parseAngle("r", t)); };
+    for (const char* t : {"3pi/4", "3*pi/4", " 3 * pi / 4", "6pi/8", "2.356194490192345"})
+        EXPECT_EQ(angle(t), "3pi/4") << t;
+    EXPECT_EQ(angle("pi"), "pi");
+    EXPECT_EQ(angle("1*pi"), "pi");
+    EXPECT_EQ(angle("2pi"), "2pi");
+    EXPECT_EQ(angle("pi/2"), "pi/2");
+    EXPECT_EQ(angle("0"), "0");
+    EXPECT_EQ(angle("0.0"), "0");
+    EXPECT_EQ(angle("2.356"), "2.356");  // no multiple of pi: the number
+    EXPECT_EQ(angle("1"), "1");
+    fs::path d = tmpDir("angles");
+    json j = tinyExperiment();
+    j["rotations"] = {"3*pi/4"};
+    const auto a = experiments::scenes(experiments::loadExperiment(writeJson(d / "a.json", j)));
+    j["rotations"] = {"3pi/4"};
+    const auto b = experiments::scenes(experiments::loadExperiment(writeJson(d / "b.json", j)));
+    EXPECT_EQ(a[0].label(), b[0].label());
+    EXPECT_NE(a[0].label().find("_r3pi-4_"), std::string::npos) << a[0].label();  // as labels were for 3pi/4
     fs::remove_all(d);
 }
 
@@ -389,6 +415,42 @@ TEST_F(ExperimentRun, RecordsAreSaneAndAnInterruptedRunResumes)
     EXPECT_EQ(slurp(dir / "b" / "results.json"), before);
 }
 
+// Results of a version that labelled scenes by the angle as written
+// ("..._r3-pi-4_..." for 3*pi/4) resume: nothing is computed again, the
+// records get today's label and their pictures move to its folder.
+TEST_F(ExperimentRun, OldAngleLabelsResumeAndMove)
+{
+    json j = tinyExperiment();
+    j["luminaires"] = {"lambert.ldt"};
+    j["heights"] = {1.1};
+    j["rotations"] = {"3*pi/4"};
+    j["methods"] = {"point"};
+    j["equal_time"] = json::array();
+    j["mci_curve"] = json::array();
+    j["save_images"] = true;
+    const std::string e = writeJson(dir / "old.json", j), out = (dir / "o").string();
+    ASSERT_EQ(run("run " + e + " --out " + out + " --no-report"), 0) << slurp(dir / "stderr.txt");
+    const std::string now = results::load(out + "/results.json").records.at(0).extra["scene"];
+    ASSERT_NE(now.find("_r3pi-4_"), std::string::npos) << now;
+    // as the older version wrote it
+    std::string old = now;
+    old.replace(old.find("_r3pi-4_"), 8, "_r3-pi-4_");
+    results::update(out + "/results.json", [&](results::Record& r) {
+        r.extra["scene"] = old;
+        return true;
+    });
+    fs::rename(fs::path(out) / "images" / now, fs::path(out) / "images" / old);
+    const std::string before = slurp(dir / "stderr.txt");
+    ASSERT_EQ(run("run " + e + " --out " + out + " --no-report"), 0) << slurp(dir / "stderr.txt");
+    const std::string log = slurp(dir / "stderr.txt").substr(before.size());
+    EXPECT_NE(log.find("0 computed"), std::string::npos) << log;
+    EXPECT_NE(log.find("relabelled"), std::string::npos) << log;
+    for (const auto& r : results::load(out + "/results.json").records) EXPECT_EQ(r.extra["scene"], now);
+    EXPECT_TRUE(fs::exists(fs::path(out) / "images" / now / "point.exr"));
+    EXPECT_TRUE(fs::exists(fs::path(out) / "images" / now / "reference.exr"));
+    EXPECT_FALSE(fs::exists(fs::path(out) / "images" / old));
+}
+
 TEST_F(ExperimentRun, TwoShardsWithGnuParallelMergeToOneRun)
 {
     if (sh("command -v parallel >/dev/null") != 0) GTEST_SKIP() << "GNU parallel is not installed";
@@ -483,12 +545,15 @@ TEST_F(ExperimentRun, SmokeExperimentProducesResultsPlotsAndReport)
     std::string report = slurp(out / "report.md");
     EXPECT_NE(report.find(doc.context["device"].get<std::string>()), std::string::npos);
     EXPECT_NE(report.find("MCI=cubature"), std::string::npos);
-    size_t pngs = 0;
+    size_t pngs = 0, grids = 0;
     for (auto& f : fs::directory_iterator(out / "plots")) pngs += f.path().extension() == ".png";
+    for (auto& f : fs::directory_iterator(out / "plots" / "grids")) grids += f.path().extension() == ".png";
     // Per metric 2 metric-time figures (one per luminaire) and 2 per-height
-    // figures: NMSE, grad_nmse and, with flip-evaluator, FLIP; 8 image grids.
+    // figures: NMSE, grad_nmse and, with flip-evaluator, FLIP; an image grid
+    // for every scene in plots/grids.
     const size_t metricsPlotted = metrics::flipAvailable() ? 3 : 2;
-    EXPECT_EQ(pngs, metricsPlotted * (2u + 2u) + 8u);
+    EXPECT_EQ(pngs, metricsPlotted * (2u + 2u));
+    EXPECT_EQ(grids, experiments::scenes(e).size());
     for (const char* f : {"grad_nmse_h0.1_float.png", "nmse_h0.1_float.png"})
         EXPECT_TRUE(fs::exists(out / "plots" / f)) << f;
     for (const char* t : {"## grad_nmse per luminaire and height", "## FLIP per luminaire and height"})

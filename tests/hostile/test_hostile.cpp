@@ -445,7 +445,7 @@ TEST(Hostile, MarkupAndFormulasInNamesAreEscapedForEachFormat)
     if (std::system("/usr/bin/python3 -c 'import matplotlib' 2>/dev/null") == 0) {
         EXPECT_EQ(r.err.find("plots not made"), std::string::npos) << r.err;
         bool grid = false;
-        for (const auto& e : fs::directory_iterator(d / "out" / "plots"))
+        for (const auto& e : fs::directory_iterator(d / "out" / "plots" / "grids"))
             grid = grid || e.path().filename().string().rfind("grid_", 0) == 0;
         EXPECT_TRUE(grid) << "no image grid for the scene";
     }

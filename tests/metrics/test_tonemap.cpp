@@ -1,5 +1,6 @@
 // Tone mapping (thesis Eq. 6.8 with a fixed k), error colours and PNG files.
 #include "metrics/png.h"
+#include "metrics/colour_bar.h"
 #include "metrics/tonemap.h"
 #include "util/error.h"
 
@@ -196,6 +197,37 @@ TEST(ErrorColour, PictureOfSignedErrors)
     EXPECT_EQ(p.at(0, 1), tonemap::kOrange);
     EXPECT_EQ(p.at(0, 2), tonemap::kBlue);
     EXPECT_THROW(tonemap::errorPicture(r, Image(1, 3), 1, 1), InputError);
+}
+
+// One bound for a scene's pictures: the 99.9th percentile of each picture's
+// |error|, the largest over the pictures. One outlier pixel among 2000 does
+// not set it (it would pale the rest 100x); below 0.1 % of exact pixels the
+// largest error sets it; a sign does not matter.
+TEST(ErrorBound, SharedBoundIgnoresOneOutlierPixelAndTakesTheWorstPicture)
+{
+    Image r(2000, 1, 10.0), a(2000, 1, 10.0), b(2000, 1, 10.0), c(2000, 1, 10.0);
+    for (int i = 0; i < 2000; ++i) {
+        a.px[i] = 10.0 + (i % 2 ? 1.0 : -1.0);  // |error| 1 everywhere
+        b.px[i] = 10.0 - 3.0 * (i % 2);  // |error| 3 on half of the pixels, too dark
+    }
+    a.px[7] = 110.0;  // one outlier pixel: +100
+    EXPECT_DOUBLE_EQ(tonemap::errorQuantile(r, a, 1.0), 100.0);
+    EXPECT_DOUBLE_EQ(tonemap::errorQuantile(r, a, tonemap::kBoundQuantile), 1.0);
+    EXPECT_DOUBLE_EQ(tonemap::sharedBound(r, {&a}), 1.0);
+    EXPECT_DOUBLE_EQ(tonemap::sharedBound(r, {&a, &b}), 3.0);  // the worst picture's scale for both
+    EXPECT_DOUBLE_EQ(tonemap::sharedBound(r, {&b, &a}), 3.0);
+    c.px[3] = 12.5;  // exact but for one pixel: that pixel's error
+    EXPECT_DOUBLE_EQ(tonemap::sharedBound(r, {&c}), 2.5);
+    EXPECT_DOUBLE_EQ(tonemap::sharedBound(r, {&r}), 0.0);
+    a.px[8] = std::numeric_limits<double>::quiet_NaN();  // non-finite pixels are left out
+    EXPECT_DOUBLE_EQ(tonemap::errorQuantile(r, a, tonemap::kBoundQuantile), 1.0);
+    EXPECT_THROW(tonemap::errorQuantile(r, Image(3, 3), 0.5), InputError);
+    // The bar: 33 colours from full blue over white to full orange.
+    const auto bar = tonemap::colourBar(33);
+    ASSERT_EQ(bar.size(), 33u);
+    EXPECT_EQ(bar.front(), "#0080ff");
+    EXPECT_EQ(bar[16], "#ffffff");
+    EXPECT_EQ(bar.back(), "#d55e00");
 }
 
 TEST(Png, WriteReadRoundTripIsExact)

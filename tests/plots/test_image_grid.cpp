@@ -6,6 +6,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include <sys/wait.h>
@@ -42,6 +43,18 @@ std::string comparePictures(const fs::path& dir, const std::string& extra)
                  prefix + extra),
               0);
     return prefix;
+}
+
+// Runs `body` in /usr/bin/python3 after a header that imports image_grid and
+// sets d (DIR) and prefix; returns the exit status.
+int imageGridScript(const fs::path& dir, const std::string& prefix, const std::string& body)
+{
+    std::ofstream((dir / "t.py").string())
+        << "import sys\nsys.path.insert(0, '" << test::sourceDir()
+        << "/plots')\nimport matplotlib\nmatplotlib.use('Agg')\n"
+        << "import image_grid\nd, prefix = '" << dir.string() << "', '" << prefix << "'\n"
+        << body;
+    return sh(python() + " " + (dir / "t.py").string() + " > /dev/null");
 }
 
 TEST(Plots, ImageGridOfComparePictures)
@@ -103,6 +116,53 @@ assert not image_grid.inside(fig, ax.xaxis.label), "inside() cannot fail"
                  ("'" + prefix + "'").c_str());
     std::fclose(f);
     EXPECT_EQ(sh(python() + " " + script + " > /dev/null"), 0);
+    fs::remove_all(dir);
+}
+
+// Error pictures of several rows at one bound (compare --bound, as run and
+// report draw a scene) get one colour bar beside the error column, in the
+// pictures' colours, labelled in lux and in % of the reference mean; rows at
+// different bounds get one bar each; a row without a bound none.
+TEST(Plots, ImageGridHasALabelledColourBar)
+{
+    if (sh(python() + " -c 'import matplotlib' 2>/dev/null") != 0 && !test::deviceRequired())
+        GTEST_SKIP() << python() << " has no matplotlib";
+    fs::path dir = fs::temp_directory_path() / ("lb_grid_bar_" + std::to_string(getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    // the reference's mean is 1.75 lx: 0.5 lx is 28.6 %
+    const std::string prefix = comparePictures(dir, " --bound 0.5 --json > " + (dir / "row.json").string());
+    fs::copy_file(dir / "row.json", dir / "other.json");
+    for (const char* s : {"_ref.png", "_test.png", "_err.png"}) fs::copy_file(prefix + s, (dir / "other").string() + s);
+    EXPECT_EQ(imageGridScript(dir, prefix, R"(import json
+def bars(fig):
+    return [a for a in fig.axes if a.get_gid() == "colour_bar"]
+def labels(fig):
+    return [t.get_text() for a in bars(fig) for t in a.get_yticklabels()]
+fig = image_grid.main(["a=" + prefix, "b=" + d + "/other", "--out", d + "/g.png", "--no-legend"])
+assert len(bars(fig)) == 1, len(bars(fig))
+got = labels(fig)
+for want in ("+0.5 lx\n+28.6 %", "-0.5 lx\n-28.6 %", "0 lx\n0 %", "+0.25 lx\n+14.3 %"):
+    assert want in got, (want, got)
+# the bar's colours are the pictures' (host/metrics/tonemap.h colourBar)
+from matplotlib.colors import to_hex
+m = json.load(open(prefix + ".json"))
+cmap = [c for c in bars(fig)[0].collections if c.cmap.name == "lumibench_error"][0].cmap
+assert (to_hex(cmap(0.0)), to_hex(cmap(0.5)), to_hex(cmap(1.0))) == ("#0080ff", "#ffffff", "#d55e00"), cmap
+assert m["colour_bar"][0] == "#0080ff" and m["colour_bar"][-1] == "#d55e00"
+# other bound: one bar per row
+j = dict(m, bound=1.0)
+json.dump(j, open(d + "/other.json", "w"))
+fig = image_grid.main(["a=" + prefix, "b=" + d + "/other", "--out", d + "/g.png", "--no-legend"])
+assert len(bars(fig)) == 2, len(bars(fig))
+assert "+1 lx\n+57.1 %" in labels(fig), labels(fig)
+# no bound: no bar
+j.pop("bound")
+json.dump(j, open(d + "/other.json", "w"))
+fig = image_grid.main(["b=" + d + "/other", "--out", d + "/g.png", "--no-legend"])
+assert len(bars(fig)) == 0
+)"),
+              0);
     fs::remove_all(dir);
 }
 
