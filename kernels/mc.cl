@@ -308,18 +308,22 @@ LB_FN_INLINE real mc_ext(__global const float* lum, __global const real* st, con
 {
     mc_domain dm;
     mc_domain_at(vw, min_solid, &dm);
-    real sum = R(0), sum2 = R(0);
+    /* the variance from the samples' offsets to the first one: sums of e^2
+     * would cancel to their rounding (float: a relative spread ~ 1e-4) where
+     * the samples agree */
+    real sum = R(0), e0 = R(0), d1 = R(0), d2 = R(0);
     for (int i = 0; i < m; ++i) {
         real e = mc_sample(lum, st, px, vw, &dm, i, m);
         sum += e;
-        sum2 += e * e;
+        e0 = i == 0 ? e : e0;
+        d1 += e - e0;
+        d2 += (e - e0) * (e - e0);
 #ifndef LB_MC_NOBARRIER
         barrier(CLK_LOCAL_MEM_FENCE);
 #endif
     }
-    real mean = sum / (real)m;
-    *ev = m > 1 ? fmax(R(0), sum2 / (real)m - mean * mean) / (real)(m - 1) : R(0);
-    return mean;
+    *ev = m > 1 ? fmax(R(0), d2 - d1 * d1 / (real)m) / ((real)m * (real)(m - 1)) : R(0);
+    return sum / (real)m;
 }
 #endif
 
@@ -378,8 +382,12 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     real w = P[LB_P_W], l = P[LB_P_L];
 #ifdef LB_NO_BACK
     if (mc_tile_behind(P, row0)) {
-        if (inside)
+        if (inside) {
             out[row * res + col] = R(0);
+#ifdef LB_MC_VAR
+            var[row * res + col] = R(0); /* the a-trous edge stop reads it */
+#endif
+        }
         return;
     }
 #endif
