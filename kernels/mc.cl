@@ -56,177 +56,312 @@ LB_FN real mc_on(__global const real* P, int col, int row)
 #define LB_MC_SEQ 0
 #endif
 
+/* The pixel: where it is (for ZSobol's Morton index: lg = log2 N rounded
+ * up, digits its base-4 digits with the image's), its hash hp, the seed, and
+ * np, mis' projected share of the samples. */
+typedef struct {
+    int col, row, lg, digits, np;
+    lb_u32 hp, seed;
+} mc_pixel;
+
+LB_FN_INLINE void mc_pixel_at(int col, int row, int res, lb_u32 seed, int lg, int np, mc_pixel* px)
+{
+    px->hp = lb_mc_hash(lb_mc_hash(seed * 0x9e3779b9U + 0x632be5abU) ^ (lb_u32)(row * res + col));
+    int rb = 0;
+    while ((1 << rb) < res)
+        ++rb;
+    px->col = col, px->row = row, px->lg = lg, px->np = np, px->seed = seed;
+    px->digits = rb + (lg + 1) / 2;
+}
+
 /* Point j in [0,1)^2 of the pixel's sequence (LB_MC_SEQ: 0 shared, 1 random,
- * 2 sobol, 3 zsobol); hp the pixel's hash, salt one per sampling technique
- * (so that the two techniques of mis take independent points). */
-LB_FN void mc_point(__global const real* st, int j, int i, lb_u32 hp, lb_u32 salt, int col, int row, int lg,
-                    int digits, lb_u32 seed, real* u0, real* u1)
+ * 2 sobol, 3 zsobol); i the index into the shared set, salt one per sampling
+ * technique (so that the two techniques of mis take independent points). */
+LB_FN_INLINE void mc_point(__global const real* st, const mc_pixel* px, int j, int i, lb_u32 salt, real* u0,
+                           real* u1)
 {
 #if LB_MC_SEQ == 0
     real a = st[2 * i], b = st[2 * i + 1];
 #ifdef LB_MC_SHIFT
     /* Cranley-Patterson rotation of the shared set by the pixel's hash */
-    a += lb_mc_unit(lb_mc_hash(hp ^ 0x2545f491U));
-    b += lb_mc_unit(lb_mc_hash(hp ^ 0x9e3779b9U));
+    a += lb_mc_unit(lb_mc_hash(px->hp ^ 0x2545f491U));
+    b += lb_mc_unit(lb_mc_hash(px->hp ^ 0x9e3779b9U));
     a = a >= R(1) ? a - R(1) : a;
     b = b >= R(1) ? b - R(1) : b;
 #endif
     *u0 = a;
     *u1 = b;
 #elif LB_MC_SEQ == 1
-    lb_u32 h = lb_mc_hash(hp ^ salt);
+    lb_u32 h = lb_mc_hash(px->hp ^ salt);
     *u0 = lb_mc_unit(lb_mc_hash(h ^ lb_mc_hash(2U * (lb_u32)j)));
     *u1 = lb_mc_unit(lb_mc_hash(h ^ lb_mc_hash(2U * (lb_u32)j + 1U)));
 #elif LB_MC_SEQ == 2
-    lb_u32 h = lb_mc_hash(hp ^ salt);
+    lb_u32 h = lb_mc_hash(px->hp ^ salt);
     *u0 = lb_mc_unit(lb_mc_owen(lb_mc_sobol0((lb_u32)j), lb_mc_hash(h ^ 0xa511e9b3U)));
     *u1 = lb_mc_unit(lb_mc_owen(lb_mc_sobol1((lb_u32)j), lb_mc_hash(h ^ 0x63d83595U)));
 #else
-    lb_u32 sd = lb_mc_hash(seed ^ salt);
-    lb_u32 idx = lb_mc_zsobol_index(col, row, (lb_u32)j, lg, digits, sd);
+    lb_u32 sd = lb_mc_hash(px->seed ^ salt);
+    lb_u32 idx = lb_mc_zsobol_index(px->col, px->row, (lb_u32)j, px->lg, px->digits, sd);
     *u0 = lb_mc_unit(lb_mc_owen(lb_mc_sobol0(idx), lb_mc_hash(sd ^ 0xa511e9b3U)));
     *u1 = lb_mc_unit(lb_mc_owen(lb_mc_sobol1(idx), lb_mc_hash(sd ^ 0x63d83595U)));
 #endif
 }
 
-/* The pixel's estimate with m samples (domain LB_MC_DOMAIN: 0 area on the
- * whole light, 1 solid angle, 2 projected solid angle, 3 mis: np projected
- * and m - np area samples by the balance heuristic; 1-3 on the part of the
- * light above the receiver's horizon, clipped along v: LB_MC_CLIPV, the
- * receiver normal perpendicular to u). *ev: the variance of the estimate
- * (the sample variance / m). One barrier per sample, as the main loop. */
-LB_FN real mc_ext(__global const real* P, __global const float* lum, __global const real* st, int col, int row,
-                  int res, int m, real ou, real ov, real on, real au, real av, real an, lb_u32 seed, int np, int lg,
-                  real min_solid, real* ev)
+/* The pixel's view of the light, in the light's frame: the offset (ou, ov,
+ * on) of corner (-u, -v) from the pixel, the receiver normal (au, av, an),
+ * the light's size w x l, and the part above the receiver's horizon (all of
+ * it without LB_MC_CLIPV): t in [t0, t0 + tv] along v, i.e. v offsets y0 ..
+ * y0 + ey. */
+typedef struct {
+    real ou, ov, on, au, av, an, w, l, area;
+    real t0, tv, y0, ey, on2, an0;
+} mc_view;
+
+LB_FN_INLINE void mc_view_at(__global const real* P, real ou, real ov, real on, real au, real av, real an,
+                             mc_view* vw)
 {
     real w = P[LB_P_W], l = P[LB_P_L];
-    real area = w * l;
-    lb_u32 hp = lb_mc_hash(lb_mc_hash(seed * 0x9e3779b9U + 0x632be5abU) ^ (lb_u32)(row * res + col));
-    int rb = 0;
-    while ((1 << rb) < res)
-        ++rb;
-    int digits = rb + (lg + 1) / 2;
+    vw->ou = ou, vw->ov = ov, vw->on = on, vw->au = au, vw->av = av, vw->an = an;
+    vw->w = w, vw->l = l, vw->area = w * l;
     /* The part of the light above the horizon: n_x . p = av (ov + L t) + an on >= 0. */
     real t0 = R(0), t1 = R(1);
 #ifdef LB_MC_CLIPV
-    {
-        real num = -(av * ov + an * on), den = av * l;
-        if (den > R(0))
-            t0 = clamp(num / den, R(0), R(1));
-        else if (den < R(0))
-            t1 = clamp(num / den, R(0), R(1));
-        else if (num > R(0))
-            t1 = R(0);
-    }
+    real num = -(av * ov + an * on), den = av * l;
+    if (den > R(0))
+        t0 = clamp(num / den, R(0), R(1));
+    else if (den < R(0))
+        t1 = clamp(num / den, R(0), R(1));
+    else if (num > R(0))
+        t1 = R(0);
 #endif
-    real tv = fmax(t1 - t0, R(0));
-    real y0 = ov + l * t0, ey = l * tv;
-    real on2 = on * on, an0 = an * on;
+    vw->t0 = t0;
+    vw->tv = fmax(t1 - t0, R(0));
+    vw->y0 = ov + l * t0, vw->ey = l * vw->tv;
+    vw->on2 = on * on, vw->an0 = an * on;
+}
+
+/* The sampling domain's per-pixel set-up (LB_MC_DOMAIN: 0 area on the whole
+ * light, 1 solid angle, 2 projected solid angle, 3 mis: projected and area by
+ * the balance heuristic; 1-3 on the part above the horizon). */
 #if LB_MC_DOMAIN == 1
-    lb_mc_sphrect q = lb_mc_sphrect_setup(ou, y0, on, w, ey);
+typedef struct {
+    lb_mc_sphrect q;
+    real ksolid; /* the estimate's factor omega / (|on| area) for solid-angle samples */
+    bool use;    /* solid-angle sampling (else area sampling of the same rectangle) */
+#ifdef LB_MC_WARP
+    real w00, w10, w01, w11; /* the receiver cosines at the corners, the warp's weights */
+#endif
+} mc_domain;
+
+LB_FN_INLINE void mc_domain_at(const mc_view* vw, real min_solid, mc_domain* dm)
+{
+    real ou = vw->ou, y0 = vw->y0, on = vw->on, w = vw->w, ey = vw->ey;
+    dm->q = lb_mc_sphrect_setup(ou, y0, on, w, ey);
     real3 c0 = R3(ou, y0, on), c1 = R3(ou + w, y0, on), c2 = R3(ou + w, y0 + ey, on), c3 = R3(ou, y0 + ey, on);
     real omega = fabs(lb_tri_solid_angle(c0, c1, c2) + lb_tri_solid_angle(c0, c2, c3));
     /* solid-angle sampling where the solid angle is not tiny; else area
      * sampling of the same rectangle (exact pdf: 1 / its area) */
-    bool useSolid = omega >= min_solid && q.s > R(0) && fabs(on) > R(0);
-    real ksolid = useSolid ? omega / (fabs(on) * area) : R(0);
+    dm->use = omega >= min_solid && dm->q.s > R(0) && fabs(on) > R(0);
+    dm->ksolid = dm->use ? omega / (fabs(on) * vw->area) : R(0);
 #ifdef LB_MC_WARP
+    real au = vw->au, av = vw->av, an0 = vw->an0;
     real nl0 = R(1) / length(c0), nl1 = R(1) / length(c1), nl2 = R(1) / length(c2), nl3 = R(1) / length(c3);
-    real w00 = fmax(R(0.01), (au * c0.x + av * c0.y + an0) * nl0);
-    real w10 = fmax(R(0.01), (au * c1.x + av * c1.y + an0) * nl1);
-    real w11 = fmax(R(0.01), (au * c2.x + av * c2.y + an0) * nl2);
-    real w01 = fmax(R(0.01), (au * c3.x + av * c3.y + an0) * nl3);
+    dm->w00 = fmax(R(0.01), (au * c0.x + av * c0.y + an0) * nl0);
+    dm->w10 = fmax(R(0.01), (au * c1.x + av * c1.y + an0) * nl1);
+    dm->w11 = fmax(R(0.01), (au * c2.x + av * c2.y + an0) * nl2);
+    dm->w01 = fmax(R(0.01), (au * c3.x + av * c3.y + an0) * nl3);
 #endif
-#endif
-#if LB_MC_DOMAIN >= 2
+}
+#elif LB_MC_DOMAIN >= 2
+typedef struct {
+    lb_mc_proj pj;
+    real t1u, t1v, t1n, t2u, t2v, t2n; /* the receiver's tangent frame in the light's */
+    real kproj;                        /* projected solid angle / light area */
+    bool lit;                          /* some of the light above the horizon */
+} mc_domain;
+
+LB_FN_INLINE void mc_domain_at(const mc_view* vw, real min_solid, mc_domain* dm)
+{
+    real au = vw->au, av = vw->av, an = vw->an, on = vw->on;
     /* the receiver's tangent frame (T1, T2, n_x) in the light's frame */
     real t1u = R(1) - au * au, t1v = -au * av, t1n = -au * an;
     real tl = R(1) / sqrt(t1u * t1u + t1v * t1v + t1n * t1n);
     t1u *= tl, t1v *= tl, t1n *= tl;
     real t2u = av * t1n - an * t1v, t2v = an * t1u - au * t1n, t2n = au * t1v - av * t1u;
     real3 qv[4];
-    real cu[4] = {ou, ou + w, ou + w, ou}, cv[4] = {y0, y0, y0 + ey, y0 + ey};
+    real cu[4] = {vw->ou, vw->ou + vw->w, vw->ou + vw->w, vw->ou}, cv[4] = {vw->y0, vw->y0, vw->y0 + vw->ey,
+                                                                              vw->y0 + vw->ey};
     for (int k = 0; k < 4; ++k)
         qv[k] = R3(t1u * cu[k] + t1v * cv[k] + t1n * on, t2u * cu[k] + t2v * cv[k] + t2n * on,
-                   fmax(R(0), au * cu[k] + av * cv[k] + an0));
-    lb_mc_proj pj = lb_mc_proj_setup(qv);
-    bool lit = tv > R(0) && pj.area > R(0);
-    real kproj = lit ? pj.area / area : R(0);
-#endif
-    real sum = R(0), sum2 = R(0);
-    for (int i = 0; i < m; ++i) {
-        real u0, u1, e;
-#if LB_MC_DOMAIN == 3
-        bool proj = i < np;
-        mc_point(st, proj ? i : i - np, i, hp, proj ? 0x5bd1e995U : 0x27d4eb2fU, col, row, lg, digits, seed, &u0,
-                 &u1);
+                   fmax(R(0), au * cu[k] + av * cv[k] + vw->an0));
+    dm->pj = lb_mc_proj_setup(qv);
+    dm->lit = vw->tv > R(0) && dm->pj.area > R(0);
+    dm->kproj = dm->lit ? dm->pj.area / vw->area : R(0);
+    dm->t1u = t1u, dm->t1v = t1v, dm->t1n = t1n, dm->t2u = t2u, dm->t2v = t2v, dm->t2n = t2n;
+}
+
+/* A projected sample's direction (receiver frame) in the light's frame. */
+LB_FN_INLINE void mc_domain_dir(const mc_view* vw, const mc_domain* dm, real3 dr, real* wu, real* wv, real* wn)
+{
+    *wu = dr.x * dm->t1u + dr.y * dm->t2u + dr.z * vw->au;
+    *wv = dr.x * dm->t1v + dr.y * dm->t2v + dr.z * vw->av;
+    *wn = dr.x * dm->t1n + dr.y * dm->t2n + dr.z * vw->an;
+}
 #else
-        mc_point(st, i, i, hp, 0U, col, row, lg, digits, seed, &u0, &u1);
+typedef struct {
+    int none;
+} mc_domain;
+
+LB_FN_INLINE void mc_domain_at(const mc_view* vw, real min_solid, mc_domain* dm)
+{
+    dm->none = 0;
+}
 #endif
+
+/* The area form's numerator at the light point (pu, pv) (offsets from the
+ * pixel): I(d) max(0, n_x . w); *ri = 1 / r (0 at r = 0). */
+LB_FN_INLINE real mc_area_term(__global const float* lum, const mc_view* vw, real pu, real pv, real* ri)
+{
+    real r2 = pu * pu + pv * pv + vw->on2;
+    real cw = vw->au * pu + vw->av * pv + vw->an0;
+    cw = cw > R(0) ? cw : R(0);
+    *ri = r2 > R(0) ? R(1) / LB_MC_SQRT(r2) : R(0);
+    return LB_INTENSITY3(lum, -pu, -pv, -vw->on) * cw;
+}
+
+#if LB_MC_DOMAIN != 3
+/* One sample's estimate for the point (u0, u1) (domains 0-2). */
+LB_FN_INLINE real mc_eval(__global const float* lum, const mc_view* vw, const mc_domain* dm, real u0, real u1)
+{
 #if LB_MC_DOMAIN == 0
-        real pu = ou + w * u0, pv = ov + l * u1;
-        real r2 = pu * pu + pv * pv + on2;
-        real cw = au * pu + av * pv + an0;
-        cw = cw > R(0) ? cw : R(0);
-        real ri = r2 > R(0) ? R(1) / LB_MC_SQRT(r2) : R(0);
-        e = LB_INTENSITY3(lum, -pu, -pv, -on) * cw * (ri * ri * ri);
+    real ri;
+    real f = mc_area_term(lum, vw, vw->ou + vw->w * u0, vw->ov + vw->l * u1, &ri);
+    return f * (ri * ri * ri);
 #elif LB_MC_DOMAIN == 1
-        real wu0 = u0, wu1 = u1, bp = R(1);
+    real wu0 = u0, wu1 = u1, bp = R(1);
 #ifdef LB_MC_WARP
-        bp = lb_mc_bilinear(&wu0, &wu1, w00, w10, w01, w11);
+    bp = lb_mc_bilinear(&wu0, &wu1, dm->w00, dm->w10, dm->w01, dm->w11);
 #endif
-        real sx, sy;
-        lb_mc_sphrect_sample(&q, wu0, wu1, &sx, &sy);
-        real pu = useSolid ? sx : ou + w * u0;
-        real pv = useSolid ? sy : y0 + ey * u1;
-        real r2 = pu * pu + pv * pv + on2;
-        real cw = au * pu + av * pv + an0;
-        cw = cw > R(0) ? cw : R(0);
-        real ri = r2 > R(0) ? R(1) / LB_MC_SQRT(r2) : R(0);
-        real kw = useSolid ? ksolid / bp : tv * ri * ri * ri;
-        e = LB_INTENSITY3(lum, -pu, -pv, -on) * cw * kw;
+    real sx, sy, ri;
+    lb_mc_sphrect_sample(&dm->q, wu0, wu1, &sx, &sy);
+    real pu = dm->use ? sx : vw->ou + vw->w * u0;
+    real pv = dm->use ? sy : vw->y0 + vw->ey * u1;
+    real f = mc_area_term(lum, vw, pu, pv, &ri);
+    real kw = dm->use ? dm->ksolid / bp : vw->tv * ri * ri * ri;
+    return f * kw;
 #else
+    real wu, wv, wn;
+    mc_domain_dir(vw, dm, lb_mc_proj_sample(&dm->pj, u0, u1), &wu, &wv, &wn);
+    return dm->lit && wn != R(0) ? dm->kproj * LB_INTENSITY3(lum, -wu, -wv, -wn) / (wn < R(0) ? -wn : wn) : R(0);
+#endif
+}
+#else
+/* One mis sample's estimate, m samples of which np projected: a projected
+ * sample (proj) or an area sample for the point (u0, u1), weighted by the
+ * balance heuristic. */
+LB_FN_INLINE real mc_eval_mis(__global const float* lum, const mc_view* vw, const mc_domain* dm, int m, int np,
+                              bool proj, real u0, real u1)
+{
+    /* i is the same in every work-item: a uniform branch skips the
+     * projected sampler for the area samples */
+    real3 dr = R3(0, 0, 1);
+    if (proj)
+        dr = lb_mc_proj_sample(&dm->pj, u0, u1);
+    real wu, wv, wn;
+    mc_domain_dir(vw, dm, dr, &wu, &wv, &wn);
+    real on = vw->on;
+    /* the sample's point on the light: the direction's hit (projected
+     * samples) or the area point (area samples) */
+    real sc = wn != R(0) ? on / wn : R(0);
+    real pu = proj ? wu * sc : vw->ou + vw->w * u0;
+    real pv = proj ? wv * sc : vw->y0 + vw->ey * u1;
+    real r2 = pu * pu + pv * pv + vw->on2;
+    real cw = vw->au * pu + vw->av * pv + vw->an0;
+    cw = cw > R(0) ? cw : R(0);
+    real r = LB_MC_SQRT(r2);
+    /* f / (na p_area + np p_proj) in area measure, times r^4 A above and below */
+    real den = (real)(m - np) * r2 * r2 / vw->tv + (real)np * cw * (on < R(0) ? -on : on) * vw->area / dm->pj.area;
+    bool ok = dm->lit && den > R(0) && (!proj || sc > R(0));
+    return ok ? (real)m * LB_INTENSITY3(lum, -pu, -pv, -on) * cw * r / den : R(0);
+}
+#endif
+
+/* Sample i of the pixel's m (its point, its estimate). */
+LB_FN_INLINE real mc_sample(__global const float* lum, __global const real* st, const mc_pixel* px,
+                            const mc_view* vw, const mc_domain* dm, int i, int m)
+{
+    real u0, u1;
 #if LB_MC_DOMAIN == 3
-        /* i is the same in every work-item: a uniform branch skips the
-         * projected sampler for the area samples */
-        real3 dr = R3(0, 0, 1);
-        if (proj)
-            dr = lb_mc_proj_sample(&pj, u0, u1);
+    bool proj = i < px->np;
+    mc_point(st, px, proj ? i : i - px->np, i, proj ? 0x5bd1e995U : 0x27d4eb2fU, &u0, &u1);
+    return mc_eval_mis(lum, vw, dm, m, px->np, proj, u0, u1);
 #else
-        real3 dr = lb_mc_proj_sample(&pj, u0, u1);
+    mc_point(st, px, i, i, 0U, &u0, &u1);
+    return mc_eval(lum, vw, dm, u0, u1);
 #endif
-        real wu = dr.x * t1u + dr.y * t2u + dr.z * au;
-        real wv = dr.x * t1v + dr.y * t2v + dr.z * av;
-        real wn = dr.x * t1n + dr.y * t2n + dr.z * an;
-#if LB_MC_DOMAIN == 2
-        e = lit && wn != R(0) ? kproj * LB_INTENSITY3(lum, -wu, -wv, -wn) / (wn < R(0) ? -wn : wn) : R(0);
-#else
-        /* the sample's point on the light: the direction's hit (projected
-         * samples) or the area point (area samples) */
-        real sc = wn != R(0) ? on / wn : R(0);
-        real pu = proj ? wu * sc : ou + w * u0;
-        real pv = proj ? wv * sc : y0 + ey * u1;
-        real r2 = pu * pu + pv * pv + on2;
-        real cw = au * pu + av * pv + an0;
-        cw = cw > R(0) ? cw : R(0);
-        real r = LB_MC_SQRT(r2);
-        /* f / (na p_area + np p_proj) in area measure, times r^4 A above and below */
-        real den = (real)(m - np) * r2 * r2 / tv + (real)np * cw * (on < R(0) ? -on : on) * area / pj.area;
-        bool ok = lit && den > R(0) && (!proj || sc > R(0));
-        e = ok ? (real)m * LB_INTENSITY3(lum, -pu, -pv, -on) * cw * r / den : R(0);
-#endif
-#endif
+}
+
+/* The pixel's estimate with m samples; *ev: the variance of the estimate (the
+ * sample variance / m). One barrier per sample, as the main loop. */
+LB_FN_INLINE real mc_ext(__global const float* lum, __global const real* st, const mc_pixel* px,
+                         const mc_view* vw, int m, real min_solid, real* ev)
+{
+    mc_domain dm;
+    mc_domain_at(vw, min_solid, &dm);
+    /* the variance from the samples' offsets to the first one: sums of e^2
+     * would cancel to their rounding (float: a relative spread ~ 1e-4) where
+     * the samples agree */
+    real sum = R(0), e0 = R(0), d1 = R(0), d2 = R(0);
+    for (int i = 0; i < m; ++i) {
+        real e = mc_sample(lum, st, px, vw, &dm, i, m);
         sum += e;
-        sum2 += e * e;
+        e0 = i == 0 ? e : e0;
+        d1 += e - e0;
+        d2 += (e - e0) * (e - e0);
 #ifndef LB_MC_NOBARRIER
         barrier(CLK_LOCAL_MEM_FENCE);
 #endif
     }
-    real mean = sum / (real)m;
-    *ev = m > 1 ? fmax(R(0), sum2 / (real)m - mean * mean) / (real)(m - 1) : R(0);
-    return mean;
+    *ev = m > 1 ? fmax(R(0), d2 - d1 * d1 / (real)m) / ((real)m * (real)(m - 1)) : R(0);
+    return sum / (real)m;
 }
 #endif
+
+#ifdef LB_NO_BACK
+/* Every direction d = -w to a pixel with on >= 0 has d . n_L <= 0: no light.
+ * The barrier in the sample loop needs the whole work-group to take the same
+ * path, so the group skips only when its whole tile lies behind the light's
+ * plane: on is linear in the pixel position, so the tile's 4 corner pixels
+ * decide, computed from group-uniform values only (so every work-item gets
+ * the same bits). */
+LB_FN_INLINE bool mc_tile_behind(__global const real* P, int row0)
+{
+    int c0 = (int)(get_group_id(0) * get_local_size(0));
+    int r0 = row0 + (int)(get_group_id(1) * get_local_size(1));
+    int c1 = c0 + (int)get_local_size(0) - 1, r1 = r0 + (int)get_local_size(1) - 1;
+    real m = fmin(fmin(mc_on(P, c0, r0), mc_on(P, c1, r0)), fmin(mc_on(P, c0, r1), mc_on(P, c1, r1)));
+    return m >= R(0);
+}
+#endif
+
+/* The work-group's sample count: n, or n + 1 (the set stored after the n
+ * points, *st moved there) for the share `extra` of the tiles, spread evenly
+ * over the image. */
+LB_FN_INLINE int mc_tile_count(int n, float extra, int row0, int res, __global const real** st)
+{
+    if (extra > 0.0f) {
+        /* tile index, row-major over the whole image (launches come in bands
+         * of rows: row0 counts) */
+        int ls0 = (int)get_local_size(0), ls1 = (int)get_local_size(1);
+        int tile_row = (row0 + (int)(get_group_id(1) * get_local_size(1))) / ls1;
+        float g = (float)(tile_row * ((res + ls0 - 1) / ls0) + (int)get_group_id(0));
+        if (floor((g + 1.0f) * extra) > floor(g * extra)) {
+            *st += 2 * n;
+            return n + 1;
+        }
+    }
+    return n;
+}
 
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
                      __global const real* st, int n, float extra, int seed, int np, int lg, real min_solid,
@@ -246,42 +381,27 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     lb_corner_offset(P, (real)col, row, &ou, &ov, &on);
     real w = P[LB_P_W], l = P[LB_P_L];
 #ifdef LB_NO_BACK
-    /* Every direction d = -w to a pixel with on >= 0 has d . n_L <= 0: no
-     * light. The barrier below needs the whole work-group to take the same
-     * path, so the group skips only when its whole tile lies behind the
-     * light's plane: on is linear in the pixel position, so the tile's 4
-     * corner pixels decide, computed from group-uniform values only (so
-     * every work-item gets the same bits). */
-    {
-        int c0 = (int)(get_group_id(0) * get_local_size(0));
-        int r0 = row0 + (int)(get_group_id(1) * get_local_size(1));
-        int c1 = c0 + (int)get_local_size(0) - 1, r1 = r0 + (int)get_local_size(1) - 1;
-        real m = fmin(fmin(mc_on(P, c0, r0), mc_on(P, c1, r0)), fmin(mc_on(P, c0, r1), mc_on(P, c1, r1)));
-        if (m >= R(0)) {
-            if (inside)
-                out[row * res + col] = R(0);
-            return;
+    if (mc_tile_behind(P, row0)) {
+        if (inside) {
+            out[row * res + col] = R(0);
+#ifdef LB_MC_VAR
+            var[row * res + col] = R(0); /* the a-trous edge stop reads it */
+#endif
         }
+        return;
     }
 #endif
     /* Receiver cosine (unnormalised): n_x . w = au (ou + W s) + av (ov + L t) + an on. */
-    int m = n;
-    if (extra > 0.0f) {
-        /* tile index, row-major over the whole image (launches come in bands
-         * of rows: row0 counts) */
-        int ls0 = (int)get_local_size(0), ls1 = (int)get_local_size(1);
-        int tile_row = (row0 + (int)(get_group_id(1) * get_local_size(1))) / ls1;
-        float g = (float)(tile_row * ((res + ls0 - 1) / ls0) + (int)get_group_id(0));
-        if (floor((g + 1.0f) * extra) > floor(g * extra)) {
-            st += 2 * n;
-            m = n + 1;
-        }
-    }
+    int m = mc_tile_count(n, extra, row0, res, &st);
     real au, av, an;
     lb_receiver_normal_local(P, &au, &av, &an);
 #ifdef LB_MC_EXT
+    mc_pixel px;
+    mc_pixel_at(col, row, res, (lb_u32)seed, lg, np, &px);
+    mc_view vw;
+    mc_view_at(P, ou, ov, on, au, av, an, &vw);
     real ev;
-    real e = mc_ext(P, lum, st, col, row, res, m, ou, ov, on, au, av, an, (lb_u32)seed, np, lg, min_solid, &ev);
+    real e = mc_ext(lum, st, &px, &vw, m, min_solid, &ev);
     if (inside) {
         out[row * res + col] = e;
 #ifdef LB_MC_VAR

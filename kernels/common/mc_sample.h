@@ -280,7 +280,16 @@ LB_FN real lb_mc_bilinear(real* u0, real* u1, real w00, real w10, real w01, real
  * a bracketed Newton iteration (dA / dphi = (rho_out^2 - rho_in^2) / 2), and
  * rho^2 is then uniform between rho_in^2 and rho_out^2: a bijection of
  * [0,1)^2 onto the region that keeps the sequence's stratification. (Peters
- * 2021 samples the same density; this inversion is the suite's own.) */
+ * 2021 samples the same density; this inversion is the suite's own.)
+ *
+ * The inversion's cost: an edge whose azimuth range lies wholly below phi
+ * adds its whole term, one above adds nothing, so only the one or two arcs
+ * that cover phi take trigonometry (one sincos of phi for all, one atan2
+ * each); the start is the linear interpolation of A between the vertices'
+ * azimuths next to the target (A at each vertex is set up per pixel), which
+ * also brackets the root, and the iteration stops once |A - target| is
+ * within one ulp of the sum of A's terms (the rounding of A itself: a thin
+ * polygon near the horizon is a difference of arcs many times its area). */
 #define LB_MC_PV 4 /* edges of the sampled polygon (the rectangle the horizon leaves) */
 
 typedef struct {
@@ -289,9 +298,46 @@ typedef struct {
     real mx[LB_MC_PV], my[LB_MC_PV], mz[LB_MC_PV]; /* unit normal a x b */
     real lo[LB_MC_PV], hi[LB_MC_PV];              /* the edge's unwrapped azimuth range */
     real th[LB_MC_PV], w[LB_MC_PV];               /* arc angle; +-|m_z| / 2 (0 for no area) */
+    real vphi[LB_MC_PV], va[LB_MC_PV];            /* vertex k's unwrapped azimuth, A there */
     real pmin, pmax;                              /* the region's azimuth range */
     real area;                                    /* projected solid angle (sr) */
+    real mag;                                     /* sum of |w th|: the scale of A's rounding */
 } lb_mc_proj;
+
+/* A(phi) (a), its derivative (da), the squared radii of the inner / outer
+ * boundary at phi (rin2 = 0 where no inner arc covers phi), cos and sin of
+ * phi (c, s). */
+typedef struct {
+    real a, da, rin2, rout2, c, s;
+} lb_mc_proj_eval;
+
+/* The evaluation at azimuth phi (in pmin .. pmax). */
+LB_FN void lb_mc_proj_at(const lb_mc_proj* p, real phi, lb_mc_proj_eval* ev)
+{
+    real cf, sf = LB_MC_SINCOS(phi, &cf);
+    real a = R(0), da = R(0), ri = R(0), ro = R(0);
+    for (int k = 0; k < LB_MC_PV; ++k) {
+        bool cover = phi >= p->lo[k] && phi <= p->hi[k] && p->w[k] != R(0);
+        /* the arc's angle up to phi: all of it below phi, none above */
+        real t = phi > p->hi[k] ? p->th[k] : R(0), r2 = R(0);
+        if (cover) {
+            /* the great circle's point at azimuth phi: m x (-sin phi, cos
+             * phi, 0), signed to point along (cos phi, sin phi) */
+            real cx = -p->mz[k] * cf, cy = -p->mz[k] * sf, cz = p->mx[k] * cf + p->my[k] * sf;
+            real sg = cx * cf + cy * sf >= R(0) ? R(1) : R(-1);
+            cx *= sg, cy *= sg, cz *= sg;
+            t = atan2(cx * p->bx[k] + cy * p->by[k] + cz * p->bz[k], cx * p->ax[k] + cy * p->ay[k] + cz * p->az[k]);
+            t = clamp(t, R(0), p->th[k]);
+            real c2 = cx * cx + cy * cy + cz * cz;
+            r2 = c2 > R(0) ? (cx * cx + cy * cy) / c2 : R(0);
+        }
+        a += p->w[k] * t;
+        da += cover ? (p->w[k] > R(0) ? R(0.5) : R(-0.5)) * r2 : R(0);
+        ro = cover && p->w[k] > R(0) ? fmax(ro, r2) : ro;
+        ri = cover && p->w[k] < R(0) ? fmax(ri, r2) : ri;
+    }
+    ev->a = a, ev->da = da, ev->rin2 = ri, ev->rout2 = ro, ev->c = cf, ev->s = sf;
+}
 
 /* Set-up from the polygon's vertices q[0..4) in the receiver's frame (z along
  * the receiver normal), in order (either orientation), all with z >= 0. */
@@ -303,14 +349,15 @@ LB_FN lb_mc_proj lb_mc_proj_setup(const real3* q)
         d[k] = normalize(q[k]);
     real psi = atan2(d[0].y, d[0].x);
     real signedArea = R(0);
-    real dlt[LB_MC_PV];
+    p.mag = R(0);
     p.pmin = psi;
     p.pmax = psi;
     for (int k = 0; k < LB_MC_PV; ++k) {
         real3 s = d[k], e = d[(k + 1) % LB_MC_PV];
-        dlt[k] = atan2(s.x * e.y - s.y * e.x, s.x * e.x + s.y * e.y);
-        real next = psi + dlt[k];
-        bool up = dlt[k] >= R(0);
+        real dlt = atan2(s.x * e.y - s.y * e.x, s.x * e.x + s.y * e.y);
+        real next = psi + dlt;
+        bool up = dlt >= R(0);
+        p.vphi[k] = psi;
         p.lo[k] = up ? psi : next;
         p.hi[k] = up ? next : psi;
         real3 a = up ? s : e, f = up ? e : s;
@@ -325,68 +372,65 @@ LB_FN lb_mc_proj lb_mc_proj_setup(const real3* q)
         /* swept from a to f: counter-clockwise (dlt >= 0) when m_z >= 0 */
         p.w[k] = (up ? R(0.5) : R(-0.5)) * fabs(m.z);
         signedArea += p.w[k] * p.th[k];
+        p.mag += fabs(p.w[k] * p.th[k]);
         psi = next;
         p.pmin = fmin(p.pmin, psi);
         p.pmax = fmax(p.pmax, psi);
     }
     /* orientation: outer arcs count positive */
-    if (signedArea < R(0))
-        for (int k = 0; k < LB_MC_PV; ++k)
-            p.w[k] = -p.w[k];
+    for (int k = 0; k < LB_MC_PV; ++k)
+        p.w[k] = signedArea < R(0) ? -p.w[k] : p.w[k];
     p.area = fabs(signedArea);
+    for (int k = 0; k < LB_MC_PV; ++k) {
+        lb_mc_proj_eval ev;
+        lb_mc_proj_at(&p, p.vphi[k], &ev);
+        p.va[k] = ev.a;
+    }
     return p;
 }
 
-/* Area A(phi) of the region's part at azimuths pmin .. phi; *dA its
- * derivative, *rin2 / *rout2 the squared radii of the inner / outer boundary
- * at phi (rin2 = 0 where no inner arc covers phi). */
-LB_FN real lb_mc_proj_cdf(const lb_mc_proj* p, real phi, real* dA, real* rin2, real* rout2)
-{
-    real a = R(0), da = R(0), ri = R(0), ro = R(0);
-    for (int k = 0; k < LB_MC_PV; ++k) {
-        real f = clamp(phi, p->lo[k], p->hi[k]);
-        real cf, sf = LB_MC_SINCOS(f, &cf);
-        /* the great circle's point at azimuth f: m x (-sin f, cos f, 0), signed
-         * to point along (cos f, sin f) */
-        real cx = -p->mz[k] * cf, cy = -p->mz[k] * sf, cz = p->mx[k] * cf + p->my[k] * sf;
-        real sg = cx * cf + cy * sf >= R(0) ? R(1) : R(-1);
-        cx *= sg, cy *= sg, cz *= sg;
-        real t = atan2(cx * p->bx[k] + cy * p->by[k] + cz * p->bz[k], cx * p->ax[k] + cy * p->ay[k] + cz * p->az[k]);
-        t = clamp(t, R(0), p->th[k]);
-        a += p->w[k] * t;
-        real c2 = cx * cx + cy * cy + cz * cz;
-        real r2 = c2 > R(0) ? (cx * cx + cy * cy) / c2 : R(0);
-        bool cover = phi >= p->lo[k] && phi <= p->hi[k] && p->w[k] != R(0);
-        da += cover ? (p->w[k] > R(0) ? R(0.5) : R(-0.5)) * r2 : R(0);
-        ro = cover && p->w[k] > R(0) ? fmax(ro, r2) : ro;
-        ri = cover && p->w[k] < R(0) ? fmax(ri, r2) : ri;
-    }
-    *dA = da;
-    *rin2 = ri;
-    *rout2 = ro;
-    return a;
-}
+#define LB_MC_NEWTON 12 /* most evaluations of the azimuth inversion */
 
-#define LB_MC_NEWTON 12 /* iterations of the azimuth inversion (float converges in ~5) */
+/* The inversion's start phi for the target area: the vertices' azimuths next
+ * to it bracket the root (*lo, *hi), A is interpolated linearly between them. */
+LB_FN real lb_mc_proj_start(const lb_mc_proj* p, real target, real* lo, real* hi)
+{
+    real l = p->pmin, h = p->pmax, al = R(0), ah = p->area;
+    for (int k = 0; k < LB_MC_PV; ++k) {
+        real vp = p->vphi[k], va = p->va[k];
+        bool below = va <= target;
+        bool nl = below && vp > l, nh = !below && vp < h;
+        l = nl ? vp : l, al = nl ? va : al;
+        h = nh ? vp : h, ah = nh ? va : ah;
+    }
+    /* a vertex's A rounded across the target's: the whole range */
+    bool ok = l <= h;
+    l = ok ? l : p->pmin, al = ok ? al : R(0);
+    h = ok ? h : p->pmax, ah = ok ? ah : p->area;
+    *lo = l;
+    *hi = h;
+    return ah > al ? l + (h - l) * LB_MC_CLAMP((target - al) / (ah - al), R(0), R(1)) : R(0.5) * (l + h);
+}
 
 /* The direction (receiver frame, unit) for (u0, u1) in [0,1)^2, distributed
  * with density cos(theta) / p->area in solid angle over the polygon. */
 LB_FN real3 lb_mc_proj_sample(const lb_mc_proj* p, real u0, real u1)
 {
-    real target = u0 * p->area;
-    real lo = p->pmin, hi = p->pmax;
-    real phi = mix(lo, hi, u0);
-    real da, ri, ro;
-    for (int it = 0; it < LB_MC_NEWTON; ++it) {
-        real g = lb_mc_proj_cdf(p, phi, &da, &ri, &ro) - target;
+    real target = u0 * p->area, tol = lb_real_eps() * p->mag;
+    real lo, hi;
+    real phi = lb_mc_proj_start(p, target, &lo, &hi);
+    lb_mc_proj_eval ev;
+    for (int it = 1;; ++it) {
+        lb_mc_proj_at(p, phi, &ev);
+        real g = ev.a - target;
+        if (it == LB_MC_NEWTON || fabs(g) <= tol)
+            break;
         lo = g <= R(0) ? phi : lo;
         hi = g > R(0) ? phi : hi;
-        real next = da > R(0) ? phi - g / da : R(0.5) * (lo + hi);
+        real next = ev.da > R(0) ? phi - g / ev.da : R(0.5) * (lo + hi);
         phi = next >= lo && next <= hi ? next : R(0.5) * (lo + hi);
     }
-    lb_mc_proj_cdf(p, phi, &da, &ri, &ro);
-    real r2 = mix(ri, ro, u1);
+    real r2 = mix(ev.rin2, ev.rout2, u1);
     real rho = sqrt(r2);
-    real cp, sp = LB_MC_SINCOS(phi, &cp);
-    return R3(rho * cp, rho * sp, sqrt(fmax(R(0), R(1) - r2)));
+    return R3(rho * ev.c, rho * ev.s, sqrt(fmax(R(0), R(1) - r2)));
 }
