@@ -35,10 +35,11 @@ else
 fi
 
 # .venv: Debian's python3 with its site packages (matplotlib, numpy) plus the
-# pinned PyPI packages: eulumdat-py (the LDT reader's peer test) and
+# pinned PyPI packages: eulumdat-py (the LDT reader's peer test), pyradiance
+# (Radiance's ies2rad, oconv and rtrace: the reference's peer test) and
 # flip-evaluator (NVIDIA's FLIP, the `flip` metric: host/metrics/flip.h).
 # Without PyPI the peer and FLIP tests skip and say so, and flip is null.
-PYPI=(eulumdat-py==1.0.0 flip-evaluator==1.7)
+PYPI=(eulumdat-py==1.0.0 flip-evaluator==1.7 pyradiance==1.3.1)
 VENV=.venv
 if [ ! -x "$VENV/bin/python" ]; then
   /usr/bin/python3 -m venv --system-site-packages "$VENV"

@@ -193,7 +193,9 @@ TEST(McDomains, SharedPoissonSetIsUniformAndItsExpectedNmseFallsWithN)
         for (int seed = 0; seed < 16; ++seed)
             m += metrics::compare(ref, run(*rt, t, sc, fmt::format("mc:n={},seed={}", n, seed), p).image).nmse / 16;
         std::printf("mc:n=%d: mean NMSE over 16 seeds %.4f\n", n, m);
-        if (!mean.empty()) EXPECT_LT(m, mean.back()) << "n=" << n;  // falls at every doubling
+        if (!mean.empty()) {
+            EXPECT_LT(m, mean.back()) << "n=" << n;  // falls at every doubling
+        }
         mean.push_back(m);
     }
     // An unbiased MCI falls as 1 / N, a well-spread set faster (measured here:

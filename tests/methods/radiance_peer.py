@@ -1,0 +1,145 @@
+"""Irradiance of the normalized evaluation scene (docs/design.md section 2) computed by
+Radiance (PyPI `pyradiance`, which bundles ies2rad, oconv and rtrace), the
+lighting-simulation system the paper cites, as a peer of lumibench's `reference`.
+
+    radiance_peer.py LUMIBENCH LUMINAIRE W L HEIGHT ROTATION RES EXTENT
+
+prints RES x RES values of E in lux, row by row (row 0 at the top, docs/design.md
+section 2), one per line. Exit 3 when pyradiance is not installed.
+
+The light: the luminaire's unfolded table (`lumibench luminaire dump`) written as a
+full 0-360 IES table of absolute candela (ies2rad mirrors files whose horizontal
+angles run 90-270, so it is never given one), turned into Radiance's `brightdata`
+by ies2rad, on a W x L rectangle of our own: 16 x 16 polygons (Radiance splits one
+source into at most 64 parts, too few near the light), multiplier 1 / (W L) as
+ies2rad sets for its own opening. ies2rad's frame is ours at R = pi (gamma = 0
+along -z, C0 along +x, C90 along +y), so the scene is that light turned by pi - R
+about x and lifted to the centre (0, 0, h + L/2).
+
+The receiver: rtrace -I evaluates 1e-4 m along the normal, so the points are given
+1e-4 m below the floor. Radiance's light is in W/sr/m^2 of 179 lm/W (ies2rad
+divides candela by 179): E = 179 R for a white source.
+"""
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+SUB = 16  # polygons per side of the light
+WHITE_EFFICACY = 179.0
+
+
+def radiance_bin():
+    try:
+        import pyradiance
+    except ImportError:
+        return None
+    d = os.path.join(os.path.dirname(pyradiance.__file__), "bin")
+    return d if os.path.exists(os.path.join(d, "rtrace")) else None
+
+
+def write_ies(table, path, w, l):
+    """The unfolded table as an LM-63 file of absolute candela, every C plane, on a
+    flat W x L rectangle (length W along C0, width L along C90), so that ies2rad
+    writes the flat source's correction 1 / cos (a point would be a sphere)."""
+    c, g, cd = table["c"], table["gamma"], table["cd"]
+    nc, ng = len(c), len(g)
+    assert len(cd) == nc * ng, "luminaire dump: cd is C-major, |C| x |gamma|"
+    lines = ["IESNA:LM-63-2002", "[TEST] lumibench radiance peer", "TILT=NONE"]
+    # lamps, lumens (-1: absolute), multiplier, |gamma|, |C|, type C, units m, w l h
+    lines.append(f"1 -1 1 {ng} {nc} 1 2 {l!r} {w!r} 0")
+    lines.append("1 1 0")
+    lines.append(" ".join(repr(float(x)) for x in g))
+    lines.append(" ".join(repr(float(x)) for x in c))
+    for i in range(nc):
+        lines.append(" ".join(repr(float(x)) for x in cd[i * ng:(i + 1) * ng]))
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def light_scene(dist_rad, w, l):
+    """ies2rad's brightdata with our rectangle: SUB x SUB polygons facing -z."""
+    out = []
+    for line in dist_rad.splitlines():
+        if line.strip().startswith("'out_light' polygon") or line.strip().startswith("out_light polygon"):
+            break
+        out.append(line)
+    text = "\n".join(out)
+    # the brightdata's one real argument is ies2rad's 1 / area: ours instead
+    head, sep, rest = text.partition("\n1 ")
+    assert sep, "ies2rad output: expected the brightdata multiplier line '1 M'"
+    rest_lines = rest.split("\n", 1)
+    text = head + f"\n1 {1.0 / (w * l)!r}\n" + (rest_lines[1] if len(rest_lines) > 1 else "")
+    polys = []
+    for i in range(SUB):
+        for j in range(SUB):
+            x0, x1 = -w / 2 + w * i / SUB, -w / 2 + w * (i + 1) / SUB
+            y0, y1 = -l / 2 + l * j / SUB, -l / 2 + l * (j + 1) / SUB
+            # counter-clockwise seen from below: the normal is -z (gamma < 90); a
+            # Radiance polygon emits on its front side only, so a twin facing +z,
+            # 1e-6 m above, emits gamma > 90 (each hides the other's back)
+            v = [(x0, y0), (x0, y1), (x1, y1), (x1, y0)]
+            down = " ".join(f"{x!r} {y!r} 0" for x, y in v)
+            up = " ".join(f"{x!r} {y!r} 1e-6" for x, y in reversed(v))
+            polys.append(f"out_light polygon p{i}_{j}\n0\n0\n12 {down}")
+            polys.append(f"out_light polygon q{i}_{j}\n0\n0\n12 {up}")
+    return text + "\n" + "\n".join(polys) + "\n"
+
+
+def main(argv):
+    if len(argv) != 9:
+        sys.stderr.write(__doc__)
+        return 2
+    binary, lum = argv[1], argv[2]
+    w, l, h, rot = (float(x) for x in argv[3:7])
+    res, extent = int(argv[7]), float(argv[8])
+    rbin = radiance_bin()
+    if rbin is None:
+        sys.stderr.write("pyradiance is not installed\n")
+        return 3
+    env = dict(os.environ, PATH=rbin + os.pathsep + os.environ.get("PATH", ""))
+    env["RAYPATH"] = os.pathsep.join([".", os.path.join(os.path.dirname(rbin), "lib")])
+    table = json.loads(subprocess.run([binary, "luminaire", "dump", lum], check=True, capture_output=True,
+                                      text=True).stdout)
+    tmp = tempfile.mkdtemp(prefix="lb-radiance-")
+    try:
+        write_ies(table, os.path.join(tmp, "lum.ies"), w, l)
+        subprocess.run(["ies2rad", "-dm", "-c", "1", "1", "1", "-o", "out", "lum.ies"], cwd=tmp, env=env,
+                       check=True, capture_output=True)
+        with open(os.path.join(tmp, "out.rad")) as f:
+            scene = light_scene(f.read(), w, l)
+        with open(os.path.join(tmp, "light.rad"), "w") as f:
+            f.write(scene)
+        turn = math.degrees(math.pi - rot)
+        placed = subprocess.run(["xform", "-rx", repr(turn), "-t", "0", "0", repr(h + l / 2), "light.rad"],
+                                cwd=tmp, env=env, check=True, capture_output=True, text=True).stdout
+        with open(os.path.join(tmp, "scene.rad"), "w") as f:
+            f.write(placed)
+        with open(os.path.join(tmp, "scene.oct"), "wb") as f:
+            subprocess.run(["oconv", "scene.rad"], cwd=tmp, env=env, check=True, stdout=f)
+        pts = []
+        for r in range(res):
+            y = extent / 2 - (r + 0.5) * extent / res
+            for c in range(res):
+                x = -extent / 2 + (c + 0.5) * extent / res
+                pts.append(f"{x!r} {y!r} -1e-4 0 0 1")
+        # -ab 0: direct only; -dj 0: no jitter; -ds 0.01: split sources down to 1 % of the
+        # distance (up to Radiance's 64 parts); -dt 0 -dc 1: every source, fully tested
+        rt = subprocess.run(["rtrace", "-h", "-I", "-ab", "0", "-dj", "0", "-ds", "0.01", "-dt", "0", "-dc", "1",
+                             "-ov", "scene.oct"], cwd=tmp, env=env, check=True, capture_output=True, text=True,
+                            input="\n".join(pts) + "\n")
+        vals = [WHITE_EFFICACY * float(line.split()[0]) for line in rt.stdout.splitlines() if line.strip()]
+        if len(vals) != res * res:
+            sys.stderr.write(f"rtrace gave {len(vals)} values for {res * res} points\n")
+            return 1
+        sys.stdout.write("\n".join(repr(v) for v in vals) + "\n")
+        return 0
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
