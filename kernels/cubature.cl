@@ -32,6 +32,8 @@
  *   LB_LANES=8        with LB_CUB_RECT_FAN or _DEL and LB_LUT, float: eight pixels
  *                     per work-item in float8 (host/methods: lanes; CPUs by default)
  *   LB_LUT            trig-free intensity table (common/lut.h), `lum` is the LUT
+ *   LB_CUB_DISK       the disk light (common/disk.h): the fan around the closest point with
+ *                     exact sector form factors; with LB_CUB_AREA the polar Gauss rule
  *   LB_CUB_AREA=n     blend in the area form by the n x n Gauss-Legendre rule (n = 2, 3;
  *                     common/cubature/clip_blend.inc lb_area_gauss_rect), in every form
  * Continuous tunables (kernel arguments, common/cubature.h LB_CUB_TUNABLES, one
@@ -188,6 +190,36 @@ CUB_KERNEL
     LB_VFN(cub_store)(out, stats, want_stats, row * res + col0, res - col0, e, nt, nf);
 }
 #include "common/lanes_end.h"
+#elif defined(LB_CUB_DISK)
+/* The disk (LB_SHAPE_DISK): the fan of common/disk.h around the closest
+ * point, and with LB_CUB_AREA = n the polar Gauss rule of the area form
+ * blended in by lb_disk_area_weight. The rectangle's structural options and
+ * corner tunables have no meaning here (the host refuses them). */
+CUB_KERNEL
+{
+    CUB_PROLOGUE
+    (void)opt;
+    int px;
+    lb_light L;
+    real3 x, nx;
+    if (!lb_work_item_receiver(P, row0, &px, &L, &x, &nx))
+        return;
+    real e = R(0), ta = R(0);
+#ifdef LB_CUB_AREA
+    ta = lb_disk_area_weight(L, x, nx, tun.area_q, tun.area_sin);
+#endif
+    if (ta < R(1))
+        e = lb_disk_irradiance(lum, L, x, nx);
+#ifdef LB_CUB_AREA
+    if (ta > R(0))
+        e = (R(1) - ta) * e + ta * lb_disk_area_gauss(lum, L, x, nx, LB_CUB_AREA);
+#endif
+    out[px] = e;
+    if (want_stats) {
+        stats[2 * px] = ta < R(1) ? LB_DISK_FAN : 0;
+        stats[2 * px + 1] = 0;
+    }
+}
 #else
 CUB_KERNEL
 {

@@ -3,7 +3,11 @@
  *                   area form E = I(d) max(0, cos) / r^2;
  *   -DLB_DYN_CP / -DLB_DYN_NP / -DLB_DYN_MRP  one dynamic sample (paper 4.2,
  *                   thesis 4.2) on the horizon-clipped light, with the
- *                   structured estimator at N = 1: E = Omega_L L_e(d) cos.
+ *                   structured estimator at N = 1: E = Omega_L L_e(d) cos;
+ *                   on a disk (LB_SHAPE_DISK) E = L_e(d) Phi, Phi the
+ *                   disk's projected solid angle (common/disk.h), since the
+ *                   disk has no closed-form solid angle and Phi is exact for a
+ *                   constant radiance.
  * Straight-line forms (common/dynamic_lanes.inc; the host decides,
  * methods/straight.h): LB_DYN_RECT with LB_DYN_POINT (any scene) or
  * LB_DYN_CP, LB_DYN_NP, LB_DYN_MRP (nothing clipped), one pixel per
@@ -75,6 +79,24 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     e = lb_intensity_local(lum, lb_to_light_frame(L, -pc)) * cosx / r2;
 #else
     real3 p[LB_MAXV];
+    if (L.shape == LB_SHAPE_DISK) {
+        lb_disk_view w = lb_disk_visible_arc(L, x, nx);
+        if (w.vis) {
+            real3 s = lb_disk_cp(L, x, nx, w);
+#if defined(LB_DYN_NP) || defined(LB_DYN_MRP)
+            int m = lb_disk_hexagon(L, x, nx, p);
+            real3 np = m >= 3 ? lb_normal_point(p, m, L.n, nx, skew) : s;
+#ifdef LB_DYN_NP
+            s = np;
+#else
+            s = m >= 3 ? lb_mrp(p, m, L.n, s, np) : s;
+#endif
+#endif
+            e = lb_radiance_from(lum, L, s) * lb_disk_phi(L, x, nx, w);
+        }
+        out[px] = e;
+        return;
+    }
     int m = lb_clipped_light(L, x, nx, p);
     if (m >= 3) {
         int where = 0;

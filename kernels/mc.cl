@@ -26,6 +26,10 @@
  *   LB_NO_HORIZON  the light lies above every receiver's horizon: no max(0, cos)
  *   LB_NO_BACK     the luminaire emits nothing at gamma >= 90 deg: work-groups
  *                  whose tile lies behind the light's plane are 0 without a loop
+ *   LB_MC_DISK     (extended path, domain area) the disk light: each point
+ *                  (u0, u1) mapped onto the disk (lb_mc_concentric); the shared
+ *                  set's points the host maps alike, so the plain path needs
+ *                  no variant
  *
  * The extended path (-DLB_MC_EXT, mc_ext below; host/methods/mc_options.h
  * sets it for anything but today's MCI): per-pixel sequences (LB_MC_SEQ:
@@ -35,7 +39,7 @@
  * the math in common/mc_sample.h; LB_MC_VAR writes each pixel's variance
  * for the a-trous filter (common/denoise.h, whose kernels this program also
  * holds: the method's post-passes).
- * @variants: "" | "-DLB_LUT" | "-DLB_LUT -DLB_LUT_1D -DLB_NO_HORIZON -DLB_NO_BACK" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_MC_WARP" | "-DLB_MC_EXT -DLB_MC_DOMAIN=3 -DLB_MC_SEQ=3 -DLB_MC_CLIPV -DLB_MC_VAR -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=2 -DLB_MC_SEQ=1 -DLB_MC_SHIFT"
+ * @variants: "" | "-DLB_LUT" | "-DLB_LUT -DLB_LUT_1D -DLB_NO_HORIZON -DLB_NO_BACK" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_MC_WARP" | "-DLB_MC_EXT -DLB_MC_DOMAIN=3 -DLB_MC_SEQ=3 -DLB_MC_CLIPV -DLB_MC_VAR -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=2 -DLB_MC_SEQ=1 -DLB_MC_SHIFT" | "-DLB_MC_EXT -DLB_MC_SEQ=2 -DLB_MC_DISK"
  */
 #include "common/lbmath.h"
 
@@ -235,6 +239,9 @@ LB_FN_INLINE real mc_eval(__global const float* lum, const mc_view* vw, const mc
 {
 #if LB_MC_DOMAIN == 0
     real ri;
+#ifdef LB_MC_DISK
+    lb_mc_concentric(&u0, &u1); /* uniform on the disk inscribed in the W x L box */
+#endif
     real f = mc_area_term(lum, vw, vw->ou + vw->w * u0, vw->ov + vw->l * u1, &ri);
     return f * (ri * ri * ri);
 #elif LB_MC_DOMAIN == 1

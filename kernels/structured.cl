@@ -1,6 +1,8 @@
 /* structured.cl -- structured sampling (paper Eq. 4, thesis 4.1): the corners
  * of the horizon-clipped light plus its barycentre (area centroid), with
  * E = (Omega_L / N) sum_i L_e(d_i) cos_i, L_e(d) = I(d) / (A |n_L . d|).
+ * On a disk: the corners and barycentre of its inscribed hexagon, E = (Phi / N)
+ * sum_i L_e(d_i), Phi the disk's projected solid angle (common/disk.h).
  * Straight-line form (common/dynamic_lanes.inc lb_structured_rect;
  * the host uses it when nothing is clipped, methods/straight.h): LB_STRUCT_RECT,
  * one pixel per work-item, or with LB_LANES=8 and LB_LUT in float eight.
@@ -41,8 +43,22 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     if (!lb_work_item_receiver(P, row0, &px, &L, &x, &nx))
         return;
     real3 p[LB_MAXV];
-    int m = lb_clipped_light(L, x, nx, p);
     real e = R(0);
+    if (L.shape == LB_SHAPE_DISK) {
+        /* the inscribed hexagon's (clipped) corners and barycentre, each
+         * radiance weighted alike, times the disk's Phi */
+        lb_disk_view w = lb_disk_visible_arc(L, x, nx);
+        int m = lb_disk_hexagon(L, x, nx, p);
+        if (w.vis && m >= 3) {
+            real sum = lb_radiance_from(lum, L, lb_polygon_centroid(p, m));
+            for (int i = 0; i < m; ++i)
+                sum += lb_radiance_from(lum, L, p[i]);
+            e = lb_disk_phi(L, x, nx, w) * sum / (real)(m + 1);
+        }
+        out[px] = e;
+        return;
+    }
+    int m = lb_clipped_light(L, x, nx, p);
     if (m >= 3) {
         real3 b = lb_polygon_centroid(p, m);
         real sum = lb_radiance_from(lum, L, b) * fmax(R(0), dot(nx, normalize(b)));

@@ -23,6 +23,7 @@ nlohmann::json sceneJson(const Scene& scene)
                         {"rotation", scene.rotation},
                         {"width", scene.width},
                         {"length", scene.length},
+                        {"shape", lightShapeName(scene.shape)},
                         {"extent", scene.extent},
                         {"res", scene.res}};
     if (scene.kind == SceneKind::Specular) {
@@ -38,8 +39,10 @@ Scene sceneFromFlags(double height, const std::string& rotation, const std::stri
     Scene scene;
     scene.height = util::checkRange("--height", height, 0, kMaxSceneLength, "m");
     scene.rotation = util::parseAngle("--rotation", rotation);
+    if (size == "file") return scene;  // sizeFromFile, once the luminaire is read
     auto x = size.find_first_of("xX");
-    if (x == std::string::npos) throw InputError(fmt::format("--size: expected WxL in metres, got '{}'", size));
+    if (x == std::string::npos)
+        throw InputError(fmt::format("--size: expected WxL in metres or 'file', got '{}'", size));
     scene.width = util::checkRange("--size W", util::parseReal("--size W", size.substr(0, x)), 0, kMaxSceneLength, "m");
     scene.length =
         util::checkRange("--size L", util::parseReal("--size L", size.substr(x + 1)), 0, kMaxSceneLength, "m");
@@ -102,7 +105,7 @@ methods::Precision precisionFlag(const std::string& text)
 namespace {
 
 struct RenderOpts {
-    std::string luminaire, method, rotation, size = "1x1", precision = "float", out, scene = "diffuse", eye;
+    std::string luminaire, method, rotation, size = "1x1", precision = "float", out, scene = "diffuse", eye, shape;
     double height = 0, extent = 5, alpha = Scene{}.alpha, albedo = Scene{}.albedo;
     int res = 256, device = -1, reps = 5;
     bool json = false, noCache = false;
@@ -130,7 +133,13 @@ void addRenderOptions(CLI::App* cmd, RenderOpts& o)
                     "Rotation R in radians (0 .. 2pi; pi/2 .. pi in the papers), e.g. 2.356 "
                     "or 3pi/4")
         ->required();
-    cmd->add_option("--size", o.size, "Light size WxL in metres (each > 0, <= 1e4)")->capture_default_str();
+    cmd->add_option("--size", o.size,
+                    "Light size WxL in metres (each > 0, <= 1e4), or 'file': the luminous opening the file declares "
+                    "(W its length along C0-C180, L its width; a round one a disk)")
+        ->capture_default_str();
+    cmd->add_option("--shape", o.shape,
+                    "Light shape: rect, or disk (the ellipse inscribed in W x L: a disk of diameter D is --size DxD; "
+                    "diffuse scene). Default rect, or the file's with --size file");
     cmd->add_option("--res", o.res, "Image resolution N (N x N pixels, 1 .. 16384)")->capture_default_str();
     cmd->add_option("--extent", o.extent, "Side S of the imaged square (m, > 0, <= 1e4)")->capture_default_str();
     cmd->add_option("--precision", o.precision, "float or double")->capture_default_str();
@@ -203,6 +212,12 @@ void addRenderCommand(CLI::App& app)
         const int device = deviceFlag(*cmd, o->device);
 
         photometry::Table table = methods::loadLuminaire(o->luminaire);
+        if (o->size == "file") methods::sizeFromFile(table, scene, "--size file");
+        if (cmd->count("--shape")) try {
+                scene.shape = parseLightShape(o->shape);
+            } catch (const InputError&) {
+                throw InputError(fmt::format("--shape: expected rect or disk, got '{}'", o->shape));
+            }
         ocl::Runtime rt(device);
         methods::RenderOptions ropt;
         ropt.reps = o->reps;

@@ -1,6 +1,7 @@
 #include "experiments/experiment.h"
 
 #include "cl/runtime.h"
+#include "methods/analytic.h"
 #include "methods/spec.h"
 #include "util/check.h"
 #include "util/digest.h"
@@ -38,6 +39,7 @@ const std::vector<std::string> kKeys = {"name",
                                         "res",
                                         "precision",
                                         "size",
+                                        "shape",
                                         "extent",
                                         "reps",
                                         "equal_time_tolerance",
@@ -153,14 +155,21 @@ void readSettings(const Reader& r, const Overrides& ov, Experiment& e)
                 r.fail("precision", err.what());
             }
     }
-    if (r.has("size")) {
+    if (r.has("size") && r.at("size") == "file") {
+        e.sizeFromFile = true;
+    } else if (r.has("size")) {
         const json& s = r.at("size");
         if (!s.is_array() || s.size() != 2 || !s[0].is_number() || !s[1].is_number())
-            r.fail("size", fmt::format("expected [W, L] in metres, found {}", s.dump()));
+            r.fail("size", fmt::format("expected [W, L] in metres or \"file\", found {}", s.dump()));
         e.width = util::checkRange(r.name("size") + " W", s[0].get<double>(), 0, kMaxSceneLength, "m");
         e.length = util::checkRange(r.name("size") + " L", s[1].get<double>(), 0, kMaxSceneLength, "m");
         if (!(e.width > 0 && e.length > 0)) r.fail("size", fmt::format("expected W, L > 0, found {}", s.dump()));
     }
+    if (r.has("shape")) try {
+            e.shape = parseLightShape(r.string("shape"));
+        } catch (const InputError& err) {
+            r.fail("shape", err.what());
+        }
     if (r.has("extent")) e.extent = r.number("extent", 1e-6, kMaxSceneLength);  // 1 um: anything smaller is a typo
     // docs/design.md section 6: the median of at least 5 timed runs.
     if (r.has("reps")) e.reps = static_cast<int>(r.integer("reps", kMinExperimentReps, ocl::kMaxReps));
@@ -207,6 +216,7 @@ Scene SceneId::scene() const
     s.res = res;
     s.width = width;
     s.length = length;
+    s.shape = shape;
     s.extent = extent;
     return kindKeys.applied(s, alpha);
 }
@@ -248,7 +258,13 @@ std::string luminaireName(const Experiment& e, const std::string& path)
 std::vector<SceneId> scenes(const Experiment& e)
 {
     std::vector<SceneId> out;
-    for (const auto& lum : e.luminaires)
+    for (const auto& lum : e.luminaires) {
+        Scene light;  // W, L and the shape of this luminaire's scenes
+        light.width = e.width;
+        light.length = e.length;
+        if (e.sizeFromFile)
+            methods::sizeFromFile(methods::loadLuminaire(lum), light, fmt::format("{}: key \"size\"", e.path));
+        if (e.shape) light.shape = *e.shape;
         for (double h : e.heights)
             for (size_t ri = 0; ri < e.rotations.size(); ++ri)
                 for (double a : e.sceneKeys.alphas)
@@ -261,14 +277,16 @@ std::vector<SceneId> scenes(const Experiment& e)
                         s.rotationText = e.rotationText[ri];
                         s.precision = p;
                         s.res = e.res;
-                        s.width = e.width;
-                        s.length = e.length;
+                        s.width = light.width;
+                        s.length = light.length;
+                        s.shape = light.shape;
                         s.extent = e.extent;
                         s.kindKeys = e.sceneKeys;
                         s.alpha = a;
                         s.index = out.size();
                         out.push_back(s);
                     }
+    }
     return out;
 }
 

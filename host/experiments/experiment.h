@@ -10,7 +10,8 @@
 //    "mc": "mc",                             // the MC SPEC used for the curve and equal time
 //    "equal_time_fit": [8, 32, 128],         // N to fit t(N) on when mci_curve is empty
 //    "reference": "reference",               // the reference SPEC
-//    "res": 64, "precision": ["float"], "size": [1, 1], "extent": 5,
+//    "res": 64, "precision": ["float"], "size": [1, 1], "extent": 5,   // size: [W, L] m or "file"
+//    "shape": "disk",                        // rect | disk; default rect, the file's with size "file"
 //    "reps": 5, "equal_time_tolerance": 0.10, "save_images": true,   // reps: 5 .. 1000
 //    "seeds": 8,                             // seed-dependent methods (mc) rendered with seeds
 //                                            // seed, seed + 1, ...: metrics are means with 95 % intervals
@@ -53,6 +54,8 @@ struct Experiment {
     int res = 64;
     std::vector<std::string> precisions{"float"};
     double width = 1, length = 1, extent = 5;
+    bool sizeFromFile = false;  // "size": "file": each luminaire's declared opening (methods::sizeFromFile)
+    std::optional<LightShape> shape;  // "shape": rect | disk; unset: rect, or the file's with sizeFromFile
     int reps = 5;
     int timeRes = 512;  // methods are timed at time_res^2 pixels (docs/design.md section 6); 0 = at the image's res
     double equalTimeTolerance = 0.10;
@@ -112,6 +115,7 @@ struct SceneId {
     std::string precision;
     int res = 0;
     double width = 1, length = 1, extent = 5;
+    LightShape shape = LightShape::Rect;
     SceneKindKeys kindKeys;  // the experiment's scene kind and its values
     double alpha = 0.25;  // specular: this scene's alpha (one of kindKeys.alphas)
     size_t index = 0;  // position in the enumeration (shard assignment)

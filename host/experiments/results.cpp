@@ -82,7 +82,7 @@ const char* const kLegacyEqualTime[] = {"equal_time_n",     "equal_time_candidat
                                         "equal_time_label", "equal_time_target_ms",  "equal_time_ratio",
                                         "equal_time_ok",    "equal_time_bracketed",  "equal_time_fit"};
 // The scene-kind keys (scene/scene_keys.h), collected into Record::sceneKeys.
-const std::set<std::string> kSceneKeys = {"scene_kind", "alpha", "eye", "albedo"};
+const std::set<std::string> kSceneKeys = {"scene_kind", "alpha", "eye", "albedo", "shape", "size"};
 
 // Standard output of git with white space around it trimmed, "" on failure.
 std::string gitOutput(const std::vector<std::string>& args)

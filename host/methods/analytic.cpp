@@ -3,6 +3,8 @@
 #include "photometry/load.h"
 #include "util/error.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <cstdlib>
 
@@ -45,6 +47,20 @@ photometry::Table loadLuminaire(const std::string& s)
     auto t = cosineTable(static_cast<int>(n), 1000.0, two);
     t.source = s;
     return t;
+}
+
+void sizeFromFile(const photometry::Table& t, Scene& scene, const std::string& what)
+{
+    using photometry::OpeningShape;
+    photometry::Opening face;
+    if (!t.opening.flatFace(face) || face.shape == OpeningShape::Point || !(face.lengthM > 0 && face.widthM > 0))
+        throw InputError(fmt::format("{}: '{}' declares no flat luminous opening to size the light by (its opening: "
+                                     "{} {} x {} x {} m); give --size WxL (experiment key size: [W, L])",
+                                     what, t.source, photometry::shapeName(t.opening.shape), t.opening.lengthM,
+                                     t.opening.widthM, t.opening.heightM));
+    scene.width = face.lengthM;
+    scene.length = face.widthM;
+    scene.shape = face.shape == OpeningShape::Rectangle ? LightShape::Rect : LightShape::Disk;
 }
 
 }  // namespace lb::methods

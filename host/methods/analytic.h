@@ -8,6 +8,7 @@
 #pragma once
 
 #include "photometry/table.h"
+#include "scene/scene.h"
 
 #include <string>
 
@@ -18,7 +19,15 @@ photometry::Table cosineTable(int n, double i0 = 1000.0, bool twoSided = false, 
 // "analytic:cos<n>[:two]" (e.g. analytic:cos1 = Lambertian) -> the table; other
 // strings -> photometry::load(path), refused (photometry::requireNoTilt) when
 // the file's TILT=INCLUDE table would change the candela values. The table's
-// `opening` is what the file declares; the scene does not use it yet.
+// `opening` is what the file declares (sizeFromFile puts it in a scene).
 photometry::Table loadLuminaire(const std::string& pathOrAnalytic);
+
+// The scene's light as the table's file declares it (docs/luminaire-openings.md):
+// W the opening's length (along C0-C180, the scene's u), L its width, the
+// disk for a circle or an ellipse, the rectangle otherwise; a rectangle with
+// luminous sides or a short vertical cylinder by its flat bottom face.
+// InputError naming `what` when the file declares no flat opening (a point,
+// a sphere, a tall or horizontal cylinder).
+void sizeFromFile(const photometry::Table& t, Scene& scene, const std::string& what);
 
 }  // namespace lb::methods

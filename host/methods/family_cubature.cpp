@@ -34,6 +34,29 @@ int popcount(int m)
 
 namespace {
 
+// On a disk the cubature is the fan around the closest point (kernels/common/disk.h
+// lb_disk_fan): the rectangle's structural choices and corner tunables have no
+// meaning there, and one that differs from the default is refused.
+void checkDiskOptions(const MethodSpec& s, const CubatureOptions& o)
+{
+    std::vector<std::string> bad;
+    if (o.triangulation != 0) bad.push_back("triangulation");
+    if (o.weighting != 1) bad.push_back("weighting");
+    if (o.formfactor) bad.push_back("normalize");
+    if (o.dynamic != LB_CUB_CP) bad.push_back("dynamic");
+    if (o.staticSamples != 0) bad.push_back("static");
+    const MethodSpec d = parseSpec(s.name, s.kind);  // the family's defaults
+    for (const char* name : {"blend_dist", "plane_eps", "horizon_eps", "corner_inset", "dyn_weight"})
+        if (s.num(name) != d.num(name)) bad.push_back(name);
+    if (bad.empty()) return;
+    std::string names;
+    for (const auto& b : bad) names += (names.empty() ? "" : ", ") + b;
+    throw InputError(fmt::format("method {}: on a disk light (shape=disk) the cubature is the fan around the closest "
+                                 "point with average weighting (kernels/common/disk.h); {} cannot be set there "
+                                 "(spec {})",
+                                 s.name, names, s.canonical()));
+}
+
 // Triangles and Lawson flips per pixel, from the one untimed launch with
 // want_stats = 1 (the timed launches write only the image).
 void cubatureStats(LaunchContext& c)
@@ -64,6 +87,10 @@ Plan cubaturePlan(const MethodSpec& s, const Scene& scene, const photometry::Tab
     const Specialization sp = analyseCubature(scene, t, o);
     Plan plan;
     plan.defines = o.defines() + sp.defines();
+    if (scene.shape == LightShape::Disk) {
+        checkDiskOptions(s, o);
+        plan.defines += " -DLB_CUB_DISK";
+    }
     plan.lanes = cubatureLanes(sp, o, dev.type, p == Precision::Double);
     plan.lum = [lut = o.lut, &t] { return lut ? photometry::buildLut(t).packed : t.packed(); };
     // per pixel of the whole image: triangles and flips (cubatureStats)
@@ -83,6 +110,7 @@ Family cubatureFamily()
     f.name = "cubature";
     f.summary = "scattered sampling: horizon clip, dynamic points, fan or Delaunay spherical-triangle cubature";
     f.file = "cubature.cl";
+    f.shapes = {LightShape::Rect, LightShape::Disk};
     f.params = cubatureParams();
     f.validate = [](const MethodSpec& s) {
         CubatureOptions o = options(s);

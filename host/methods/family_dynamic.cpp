@@ -15,6 +15,7 @@ Family dynamicFamily(const std::string& name, const std::string& define, const s
     f.name = name;
     f.summary = summary;
     f.file = "dynamic.cl";
+    f.shapes = {LightShape::Rect, LightShape::Disk};
     if (skew)
         f.params.push_back(Param::real("skew", 0.1, 1e-3, 1.0, Scale::Log,
                                        "NP: receiver normal skewed to this component towards the light plane "

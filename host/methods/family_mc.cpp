@@ -66,6 +66,7 @@ void registerMcPoints(Registry& r, const Family& mc)
     f.name = "mcpoints";
     f.summary = "MCI-N at N tunable points (s_k, t_k) on the light, mc's kernel: tuned, a bound of fixed point sets";
     f.file = mc.file;
+    f.shapes = mc.shapes;
     f.params = {Param::integer("n", 8, 1, kMcPointsMax, Scale::Linear, "number of points on the light")};
     for (int k = 1; k <= kMcPointsMax; ++k) {
         f.params.push_back(Param::real(fmt::format("s{}", k), kR2[k - 1][0], 0, 1, Scale::Linear,
@@ -92,6 +93,7 @@ void registerMcPoints(Registry& r, const Family& mc)
             st.push_back(s.num(fmt::format("s{}", k)));
             st.push_back(s.num(fmt::format("t{}", k)));
         }
+        if (scene.shape == LightShape::Disk) mapToDisk(st);
         plan.args = mcArgs(st, n, 0, samplingArgs(McOptions{}, n, false, 0, scene.res));
         return plan;
     };
@@ -107,6 +109,7 @@ void registerMc(Registry& r)
     f.summary = "Monte Carlo with N samples: MCI-N (the same N points on the light for every pixel, area form) by "
                 "default; solid-angle, projected-solid-angle or MIS sampling with per-pixel sequences";
     f.file = "mc.cl";
+    f.shapes = {LightShape::Rect, LightShape::Disk};
     f.params = {
         Param::integer("n", 24, 1, 1 << 20, Scale::Log, "number of points on the light", true),
         Param::real("extra", 0, 0, 0.999, Scale::Linear,
@@ -163,6 +166,7 @@ void registerMc(Registry& r)
                 auto more = samplePoints(o.pattern, n + 1, seed);
                 st.insert(st.end(), more.begin(), more.end());
             }
+            if (scene.shape == LightShape::Disk) mapToDisk(st);
         }
         plan.args = mcArgs(st, n, extra, samplingArgs(o, n, extra > 0, seed, scene.res));
         plan.bind = [o](LaunchContext& c) { bindDenoise(c, o); };

@@ -50,6 +50,7 @@ void registerReference(Registry& r)
     f.name = "reference";
     f.summary = "converged area integral (adaptive 4x4 Gauss-Legendre cubature) with an error estimate";
     f.file = "reference.cl";
+    f.shapes = {LightShape::Rect, LightShape::Disk};
     f.params = {
         Param::real("tol", 1e-5, 1e-9, 1e-1, Scale::Log, "target relative error per pixel", false),
         Param::integer("max_splits", 128, 0, 128, Scale::Linear,

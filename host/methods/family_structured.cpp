@@ -11,6 +11,7 @@ void registerStructured(Registry& r)
     f.name = "structured";
     f.summary = "structured sampling: corners + barycentre of the clipped light (paper Eq. 4)";
     f.file = "structured.cl";
+    f.shapes = {LightShape::Rect, LightShape::Disk};
     // the straight-line form samples the whole rectangle: only where nothing is clipped
     const StraightLine straight = addStraightLineOptions(
         f, "-DLB_STRUCT_RECT", [](const Scene& scene, const MethodSpec&) { return lightAboveEveryHorizon(scene); });

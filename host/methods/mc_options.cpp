@@ -111,6 +111,15 @@ std::string mcSceneDefines(const McOptions& o, const Scene& scene, int n)
                                          "light's u axis (as in every normalized scene)",
                                          o.domain));
     }
+    if (scene.shape == LightShape::Disk) {
+        // The disk is sampled by area only (its solid-angle sampler, the
+        // spherical ellipse, and the projected polygon are the rectangle's).
+        if (o.domain != "area" || o.shift)
+            throw InputError(fmt::format("method mc: on a disk light (shape=disk) only domain=area without shift "
+                                         "samples it; got domain={}{}",
+                                         o.domain, o.shift ? ",shift=1" : ""));
+        if (o.sequence != "shared") d += " -DLB_MC_DISK";
+    }
     if (o.sequence == "zsobol") {
         const int bits = 2 * mcLog2(scene.res) + mcLog2(n + 1);
         if (bits > 30)

@@ -221,4 +221,15 @@ std::vector<double> LaunchContext::readReals(cl::Buffer& b, size_t n)
     return out;
 }
 
+void checkShape(const Family& f, const Scene& scene)
+{
+    if (std::find(f.shapes.begin(), f.shapes.end(), scene.shape) != f.shapes.end()) return;
+    std::string names;
+    for (const auto& g : registry().all())
+        if (renders(g, scene.kind) && std::find(g.shapes.begin(), g.shapes.end(), scene.shape) != g.shapes.end())
+            names += (names.empty() ? "" : ", ") + g.name;
+    throw InputError(fmt::format("method {}: renders a rectangular light only, not shape={}; methods for it: {}",
+                                 f.name, lightShapeName(scene.shape), names));
+}
+
 }  // namespace lb::methods

@@ -188,6 +188,9 @@ struct Family {
     // scene kind: e.g. a "reference" for the specular scene in its own family
     // file and kernel, beside the diffuse one.
     std::vector<SceneKind> scenes{SceneKind::Diffuse};
+    // The light shapes it renders (docs/design.md section 2); render refuses
+    // any other with an InputError naming the methods that do.
+    std::vector<LightShape> shapes{LightShape::Rect};
     std::string file;  // kernels/<file>
     std::string kernelName = "render";
     std::vector<Param> params;
@@ -268,6 +271,9 @@ const Registry& registry();
 // The family of `name` for scenes of `kind`; InputError listing the valid
 // names for that kind when unknown.
 const Family& family(const std::string& name, SceneKind kind = SceneKind::Diffuse);
+// InputError unless the family renders the scene's light shape (Family::shapes),
+// naming the methods that do.
+void checkShape(const Family& f, const Scene& scene);
 bool renders(const Family& f, SceneKind kind);
 
 }  // namespace lb::methods

@@ -153,6 +153,7 @@ Prepared::Prepared(ocl::Runtime& rt, const photometry::Table& table, const Scene
                                      spec.name, sceneKindName(spec.kind), sceneKindName(scene.kind)));
     util::checkRange("the scene's res (pixels per side)", scene_.res, 1, kMaxRes);
     scene_.validate();
+    checkShape(fam_, scene_);
     table.validate();
     const bool dbl = precision == Precision::Double;
     if (dbl && !rt.fp64())

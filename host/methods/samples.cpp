@@ -1,5 +1,6 @@
 #include "methods/samples.h"
 
+#include "math/kmath.h"
 #include "util/error.h"
 
 #include <algorithm>
@@ -156,6 +157,11 @@ std::vector<double> samplePoints(const std::string& pattern, int n, std::uint64_
         throw InputError("sample set: unknown pattern '" + pattern + "'; valid: poisson|halton|stratified|random");
     }
     return st;
+}
+
+void mapToDisk(std::vector<double>& st)
+{
+    for (size_t i = 0; i + 1 < st.size(); i += 2) f64::lb_mc_concentric(&st[i], &st[i + 1]);
 }
 
 }  // namespace lb::methods

@@ -16,6 +16,10 @@ namespace lb::methods {
 // floor(sqrt(n)) rows), "random" (independent uniform points).
 std::vector<double> samplePoints(const std::string& pattern, int n, std::uint64_t seed);
 
+// The points (s, t) mapped in place onto the disk inscribed in [0, 1]^2
+// (kernels/common/mc_sample.h lb_mc_concentric): a disk light's area samples.
+void mapToDisk(std::vector<double>& st);
+
 // The radical inverse of i in base b (Halton coordinate).
 double radicalInverse(std::uint64_t i, unsigned base);
 

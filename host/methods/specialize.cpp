@@ -219,6 +219,7 @@ Specialization analyseCubature(const Scene& scene, const photometry::Table& tabl
     s.set(Rule::Lut, o.lut);
     if (!o.specialize) return s;
     s.set(Rule::Lut1d, o.lut && photometry::isRotational(table));
+    if (scene.shape != LightShape::Rect) return s;  // the forms are the rectangle's
     const CubatureScene sc(scene, o);
     const bool clip = clipAlongU(o, sc);
     for (const auto& f : cubatureForms()) {
@@ -272,6 +273,11 @@ std::vector<std::string> cubatureVariants()
             add(e + sep + "area=gauss3", form, {Rule::Lut, Rule::RectClip}, true);
             add(e, form, {Rule::Lut, Rule::RectClip, Rule::Blend}, false);
         }
+    // the disk's fan (kernels/common/disk.h), alone and with robust's area rule
+    add("", "", {Rule::Lut}, false);
+    v.back() += " -DLB_CUB_DISK";
+    add("area=gauss3", "", {}, false);
+    v.back() += " -DLB_CUB_DISK";
     return v;
 }
 

@@ -46,7 +46,8 @@ StraightLine addStraightLineOptions(Family& f, const std::string& define, Straig
 
 bool StraightLine::uses(const MethodSpec& s, const Scene& scene) const
 {
-    return !define.empty() && s.str("specialize") == "auto" && applies(scene, s);
+    // the straight-line forms are written for the rectangle
+    return !define.empty() && s.str("specialize") == "auto" && scene.shape == LightShape::Rect && applies(scene, s);
 }
 
 Plan StraightLine::plan(const MethodSpec& s, const Scene& scene, const photometry::Table& t, const ocl::DeviceInfo& dev,

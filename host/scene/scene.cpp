@@ -33,6 +33,17 @@ SceneKind parseSceneKind(const std::string& s)
     throw InputError(fmt::format("scene: expected diffuse, specular or indirect, got '{}'", s));
 }
 
+std::string lightShapeName(LightShape s) { return s == LightShape::Disk ? "disk" : "rect"; }
+
+LightShape parseLightShape(const std::string& s)
+{
+    for (LightShape k : {LightShape::Rect, LightShape::Disk})
+        if (s == lightShapeName(k)) return k;
+    throw InputError(fmt::format("shape: expected rect or disk, got '{}'", s));
+}
+
+double Scene::area() const { return shape == LightShape::Disk ? 0.25 * M_PI * width * length : width * length; }
+
 glm::dvec3 Scene::n() const { return {0.0, std::sin(rotation), std::cos(rotation)}; }
 glm::dvec3 Scene::u() const { return {1.0, 0.0, 0.0}; }
 glm::dvec3 Scene::v() const { return glm::cross(u(), n()); }
@@ -67,6 +78,7 @@ std::vector<double> Scene::params() const
     put3(LB_P_EYE, eye);
     P[LB_P_ALPHA] = alpha;
     P[LB_P_ALBEDO] = albedo;
+    P[LB_P_SHAPE] = shape == LightShape::Disk ? LB_SHAPE_DISK : LB_SHAPE_RECT;
     return P;
 }
 
@@ -79,6 +91,7 @@ glm::dvec3 Scene::pixel(int row, int col) const
 std::string Scene::describe() const
 {
     std::string d = fmt::format("h={} R={} size={}x{} extent={} res={}", height, rotation, width, length, extent, res);
+    if (shape == LightShape::Disk) d += " shape=disk";
     if (kind == SceneKind::Specular)
         d += fmt::format(" scene=specular alpha={} eye={},{},{}", alpha, eye.x, eye.y, eye.z);
     else if (kind == SceneKind::Indirect)
@@ -108,11 +121,22 @@ void Scene::validate() const
         throw InputError(fmt::format("scene {}: degenerate light {} x {}: a side below 1e-6 of the scene scale {} "
                                      "makes corners coincide or collinear in float",
                                      describe(), width, length, scale));
+    // The cubature merges points closer than ~1.2e-5 of the light's diagonal
+    // (kernels/common/cubature.h lb_cub_tol): in float a narrower rectangle
+    // collapses to nothing (1 m x 8 um rendered 0 lx against 35.4).
+    if (std::min(width, length) < kMinAspect * std::max(width, length))
+        throw InputError(fmt::format("scene {}: light {} x {} m narrower than 1:{:.0f}: its short side is below what "
+                                     "the kernels resolve against its long one",
+                                     describe(), width, length, 1 / kMinAspect));
     validateKind();
 }
 
 void Scene::validateKind() const
 {
+    if (shape != LightShape::Rect && kind != SceneKind::Diffuse)
+        throw InputError(fmt::format("scene {}: the {} scene's light is a rectangle (shape=rect); a disk lights the "
+                                     "diffuse scene only",
+                                     describe(), sceneKindName(kind)));
     switch (kind) {
     case SceneKind::Diffuse:
         return;

@@ -16,6 +16,9 @@ namespace lb {
 // a few millimetres cannot be told from a point and a metre-sized one loses
 // its shape to rounding; real scenes are < 1 km.
 constexpr double kMaxSceneLength = 1e4;
+// The narrowest light, short side over long side: float cubature merges
+// points within ~1.2e-5 of the light's diagonal (Scene::validate).
+constexpr double kMinAspect = 2e-5;
 // Pixels per side: 16384^2 doubles are 2 GiB, the largest buffer we ask of a device.
 constexpr int kMaxRes = 16384;
 
@@ -33,11 +36,19 @@ constexpr double kMinAlpha = 0.01, kMaxAlpha = 1.0;
 // The room of the indirect scene (docs/design.md section 9): [-half, half]^2 x [0, height] m.
 constexpr double kRoomHalf = 2.5, kRoomHeight = 3.0;
 
+// The light's outline (docs/design.md section 2): the rectangle W x L, or
+// the ellipse inscribed in it (a disk of diameter D when W = L = D), both
+// centred at center() in the frame (u, v, n_L).
+enum class LightShape { Rect, Disk };
+std::string lightShapeName(LightShape s);  // "rect" | "disk"
+LightShape parseLightShape(const std::string& s);  // InputError naming both otherwise
+
 struct Scene {
     double height = 1.0;  // h: lower edge at R = pi/2; centre at h + L/2
     double rotation = 3.14159265358979;  // R: angle between n_L and n_x, pi/2 .. pi
     double width = 1.0;  // W along u
     double length = 1.0;  // L along v
+    LightShape shape = LightShape::Rect;
     double extent = 5.0;  // S: side of the imaged square
     int res = 256;  // N x N pixels
 
@@ -50,7 +61,8 @@ struct Scene {
     glm::dvec3 u() const;
     glm::dvec3 v() const;  // cross(u, n_L)
     glm::dvec3 n() const;  // n_L = (0, sin R, cos R)
-    std::array<glm::dvec3, 4> corners() const;  // (-u,-v), (+u,-v), (+u,+v), (-u,+v)
+    std::array<glm::dvec3, 4> corners() const;  // (-u,-v), (+u,-v), (+u,+v), (-u,+v): of the W x L box
+    double area() const;  // W L, or pi W L / 4 for the disk
     glm::dvec3 pixel(int row, int col) const;  // receiver point at a pixel centre
 
     // The LB_SCENE_SIZE reals the kernels take (kernels/common/scene.h).
@@ -65,7 +77,9 @@ struct Scene {
     // the kernels (zero area, undefined L_e = I / (A cos)): a clear error, not
     // NaN or a silent zero image. The kind's own values too: alpha in
     // kMinAlpha .. kMaxAlpha, the eye finite and above the floor (z > 0), the
-    // albedo in 0 .. 1, and in the room the light's corners inside it.
+    // albedo in 0 .. 1, and in the room the light's corners inside it. The
+    // disk is a diffuse scene's light only (the specular and indirect
+    // kernels integrate rectangles).
     // render() calls it.
     void validate() const;
 

@@ -70,15 +70,22 @@ Scene SceneKindKeys::applied(Scene s, double alpha) const
 
 json SceneKindKeys::recordKeys(const Scene& s)
 {
+    json j = json::object();
+    if (s.shape != LightShape::Rect || s.width != 1 || s.length != 1) {
+        j["shape"] = lightShapeName(s.shape);
+        j["size"] = {s.width, s.length};
+    }
     switch (s.kind) {
     case SceneKind::Diffuse:
-        return json::object();
+        break;
     case SceneKind::Specular:
-        return {{"scene_kind", sceneKindName(s.kind)}, {"alpha", s.alpha}, {"eye", {s.eye.x, s.eye.y, s.eye.z}}};
+        j.update(json{{"scene_kind", sceneKindName(s.kind)}, {"alpha", s.alpha}, {"eye", {s.eye.x, s.eye.y, s.eye.z}}});
+        break;
     case SceneKind::Indirect:
-        return {{"scene_kind", sceneKindName(s.kind)}, {"albedo", s.albedo}};
+        j.update(json{{"scene_kind", sceneKindName(s.kind)}, {"albedo", s.albedo}});
+        break;
     }
-    return json::object();
+    return j;
 }
 
 }  // namespace lb

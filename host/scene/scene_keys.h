@@ -31,9 +31,10 @@ struct SceneKindKeys {
     static SceneKindKeys read(const nlohmann::json& j, const std::string& path);
     // s with this kind, its values and the given alpha (one of alphas).
     Scene applied(Scene s, double alpha) const;
-    // What a result record carries of a scene's kind, flat: {} for the diffuse
-    // scene (so its records keep their keys), else scene_kind plus alpha and
-    // eye, or albedo.
+    // What a result record carries of a scene's kind and light, flat: {} for
+    // the diffuse scene's 1 x 1 rectangle (so its records keep their keys);
+    // shape and size [W, L] for any other light; scene_kind plus alpha and
+    // eye, or albedo, for the other kinds.
     static nlohmann::json recordKeys(const Scene& s);
 };
 

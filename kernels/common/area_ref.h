@@ -1,7 +1,8 @@
 /* area_ref.h -- the converged area integral of docs/design.md section 1 at one
  * receiver point, by globally adaptive cubature:
  *   E(x) = (1/A) int_light I(d) max(0, n_x . w) / r^2 dA = int_[0,1]^2 f(s, t) ds dt
- * (dA = A ds dt). The one implementation behind the reference of the floor
+ * (dA = A ds dt on the rectangle; polar coordinates on the disk, lb_ref_f).
+ * The one implementation behind the reference of the floor
  * (kernels/reference.cl) and the direct light on the walls and ceiling of the
  * indirect scene (kernels/indirect_reference.cl, kernels/indirect.cl's RSM
  * with direct=reference). Kernel-only (private arrays of LB_REF_CELLS cells);
@@ -28,19 +29,31 @@
 #define LB_REF_CELLS 388
 
 typedef struct {
-    real3 o, eu, ev, nx; /* light origin corner relative to x, edge vectors, receiver normal */
+    /* rectangle: the origin corner relative to x and the edge vectors; disk:
+     * the centre relative to x and the half-axes (W/2) u, (L/2) v */
+    real3 o, eu, ev, nx; /* ... and the receiver normal */
     lb_light L;
 } lb_ref_ctx;
 
-/* The integrand f(s, t) = I(d) max(0, n_x . w) / r^2. */
+/* The integrand f(s, t) = I(d) max(0, n_x . w) / r^2 (dA / A = ds dt). On
+ * the disk (s, t) are polar, radius s of the rim's and angle 2 pi t, and
+ * dA / A = 2 s ds dt. */
 LB_FN real lb_ref_f(__global const float* lum, const lb_ref_ctx* c, real s, real t)
 {
-    real3 w = c->o + c->eu * s + c->ev * t;
+    real3 w;
+    real jac = R(1);
+    if (c->L.shape == LB_SHAPE_DISK) {
+        real phi = LB_TWO_PI * t;
+        w = c->o + c->eu * (s * cos(phi)) + c->ev * (s * sin(phi));
+        jac = R(2) * s;
+    } else {
+        w = c->o + c->eu * s + c->ev * t;
+    }
     real r2 = dot(w, w);
     real cw = dot(c->nx, w);
     if (!(cw > R(0)) || !(r2 > R(0)))
         return R(0);
-    return lb_intensity_local(lum, lb_to_light_frame(c->L, -w)) * cw / (r2 * sqrt(r2));
+    return jac * lb_intensity_local(lum, lb_to_light_frame(c->L, -w)) * cw / (r2 * sqrt(r2));
 }
 
 /* Tensor 4x4 Gauss-Legendre rule on the cell [s0, s0+h] x [t0, t0+h]. */
@@ -78,9 +91,10 @@ LB_FN real lb_ref_irradiance(__global const float* lum, lb_light L, real3 x, rea
     lb_ref_ctx c;
     c.L = L;
     c.nx = nx;
-    c.o = c.L.c - c.L.u * (R(0.5) * c.L.w) - c.L.v * (R(0.5) * c.L.l) - x;
-    c.eu = c.L.u * c.L.w;
-    c.ev = c.L.v * c.L.l;
+    const int disk = L.shape == LB_SHAPE_DISK;
+    c.o = disk ? c.L.c - x : c.L.c - c.L.u * (R(0.5) * c.L.w) - c.L.v * (R(0.5) * c.L.l) - x;
+    c.eu = c.L.u * (disk ? R(0.5) * c.L.w : c.L.w);
+    c.ev = c.L.v * (disk ? R(0.5) * c.L.l : c.L.l);
 
     real cs[LB_REF_CELLS], ct[LB_REF_CELLS], ch[LB_REF_CELLS], cv[LB_REF_CELLS], ce[LB_REF_CELLS];
     lb_adapt a = lb_adapt_store(0, cs, ct, ch, ch, cv, ce, LB_REF_CELLS);

@@ -57,7 +57,7 @@ LB_FN real lb_radiance_from(__global const float* lum, lb_light L, real3 p)
     if (c < R(1e-20)) /* I / (A c) < 1e25 / A: finite for every validated light */
 #endif
         return R(0);
-    return lb_intensity_local(lum, dl) / (L.w * L.l * c);
+    return lb_intensity_local(lum, dl) / (lb_light_area(L) * c);
 }
 
 /* Normal point (paper 4.2, thesis 4.2, Drobot 2014) of the receiver with

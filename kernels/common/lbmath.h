@@ -12,6 +12,7 @@
 #include "ggx.h"
 #include "ltc.h"
 #include "adaptive.h"
+#include "disk.h"
 #include "specref.h"
 #include "mc_sample.h"
 /* The point-sample baselines', the LTC's and the specular MC's straight-line

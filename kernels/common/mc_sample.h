@@ -66,6 +66,26 @@ LB_FN lb_u32 lb_mc_hash(lb_u32 x)
     return x;
 }
 
+/* (u0, u1) uniform in [0,1]^2 to a point uniform on the disk inscribed in
+ * [0,1]^2, in place: Shirley and Chiu's (1997) concentric map, continuous
+ * and area-preserving up to a constant (strata stay strata). The disk
+ * light's area samples (mc on LB_SHAPE_DISK: on the host for the shared
+ * set, in mc.cl's extended path per pixel). */
+LB_FN void lb_mc_concentric(real* u0, real* u1)
+{
+    real a = R(2) * *u0 - R(1), b = R(2) * *u1 - R(1);
+    real r = R(0), phi = R(0);
+    if (fabs(a) > fabs(b)) {
+        r = a;
+        phi = R(0.25) * LB_PI * (b / a);
+    } else if (b != R(0)) {
+        r = b;
+        phi = R(0.5) * LB_PI - R(0.25) * LB_PI * (a / b);
+    }
+    *u0 = R(0.5) + R(0.5) * r * cos(phi);
+    *u1 = R(0.5) + R(0.5) * r * sin(phi);
+}
+
 /* A 32-bit fraction as a real in [0, 1): 24 bits in float (so that it never
  * rounds up to 1), 32 in double. */
 LB_FN real lb_mc_unit(lb_u32 x)

@@ -19,7 +19,11 @@
 #define LB_P_EYE 20    /* specular: the eye point (3) */
 #define LB_P_ALPHA 23  /* specular: GGX roughness alpha */
 #define LB_P_ALBEDO 24 /* indirect: albedo of walls and ceiling */
+#define LB_P_SHAPE 25  /* the light's outline: LB_SHAPE_* below */
 #define LB_SCENE_SIZE 28
+
+#define LB_SHAPE_RECT 0 /* the rectangle W x L (docs/design.md section 2) */
+#define LB_SHAPE_DISK 1 /* the ellipse inscribed in it: a disk of diameter D when W = L = D */
 
 #define LB_KIND_DIFFUSE 0  /* direct irradiance on the floor (docs/design.md section 2) */
 #define LB_KIND_SPECULAR 1 /* luminance of a glossy floor towards the eye (docs/design.md section 8) */
@@ -32,8 +36,19 @@
 
 typedef struct {
     real3 c, u, v, n; /* centre and frame: n_L points where the light emits; v = cross(u, n) */
-    real w, l;        /* width along u, length along v */
+    real w, l;        /* width along u, length along v (a disk's diameters) */
+#ifdef __OPENCL_C_VERSION__
+    int shape; /* LB_SHAPE_* */
+#else
+    int shape = LB_SHAPE_RECT;
+#endif
 } lb_light;
+
+/* The light's area: W L, or pi W L / 4 for the disk. */
+LB_FN real lb_light_area(lb_light L)
+{
+    return L.shape == LB_SHAPE_DISK ? R(0.25) * LB_PI * L.w * L.l : L.w * L.l;
+}
 
 LB_FN real3 lb_p3(__global const real* P, int i)
 {
@@ -49,6 +64,7 @@ LB_FN lb_light lb_scene_light(__global const real* P)
     L.n = lb_p3(P, LB_P_N);
     L.w = P[LB_P_W];
     L.l = P[LB_P_L];
+    L.shape = (int)P[LB_P_SHAPE];
     return L;
 }
 

@@ -2,7 +2,7 @@
 Radiance (PyPI `pyradiance`, which bundles ies2rad, oconv and rtrace), the
 lighting-simulation system the paper cites, as a peer of lumibench's `reference`.
 
-    radiance_peer.py LUMIBENCH LUMINAIRE W L HEIGHT ROTATION RES EXTENT
+    radiance_peer.py LUMIBENCH LUMINAIRE W L HEIGHT ROTATION RES EXTENT [rect|disk]
 
 prints RES x RES values of E in lux, row by row (row 0 at the top, docs/design.md
 section 2), one per line. Exit 3 when pyradiance is not installed.
@@ -12,7 +12,13 @@ full 0-360 IES table of absolute candela (ies2rad mirrors files whose horizontal
 angles run 90-270, so it is never given one), turned into Radiance's `brightdata`
 by ies2rad, on a W x L rectangle of our own: 16 x 16 polygons (Radiance splits one
 source into at most 64 parts, too few near the light), multiplier 1 / (W L) as
-ies2rad sets for its own opening. ies2rad's frame is ours at R = pi (gamma = 0
+ies2rad sets for its own opening. A disk (the ellipse inscribed in W x L): 16
+equal-area rings of 128 sectors on the 128-gon scaled to the ellipse's area,
+multiplier 4 / (pi W L). Near a large disk that is coarse: 0.6 m under a 1 m disk
+of quadrant.ldt Radiance gives 768.3, 764.0, 762.9 lx with 8 x 64, 16 x 128 and
+32 x 256 pieces (the reference: 762.3); finer pieces fail on small disks (32 x
+256 on an 80 mm disk: 30 % off), so the test keeps to distances where 16 x 128
+converges. ies2rad's frame is ours at R = pi (gamma = 0
 along -z, C0 along +x, C90 along +y), so the scene is that light turned by pi - R
 about x and lifted to the centre (0, 0, h + L/2).
 
@@ -29,6 +35,7 @@ import sys
 import tempfile
 
 SUB = 16  # polygons per side of the light
+RINGS, SECTORS = 16, 128  # of a disk
 WHITE_EFFICACY = 179.0
 
 
@@ -60,8 +67,33 @@ def write_ies(table, path, w, l):
         f.write("\n".join(lines) + "\n")
 
 
-def light_scene(dist_rad, w, l):
-    """ies2rad's brightdata with our rectangle: SUB x SUB polygons facing -z."""
+def light_pieces(w, l, shape):
+    """The light's polygons in its plane z = 0, counter-clockwise seen from below, and its area."""
+    if shape == "rect":
+        pieces = []
+        for i in range(SUB):
+            for j in range(SUB):
+                x0, x1 = -w / 2 + w * i / SUB, -w / 2 + w * (i + 1) / SUB
+                y0, y1 = -l / 2 + l * j / SUB, -l / 2 + l * (j + 1) / SUB
+                pieces.append([(x0, y0), (x0, y1), (x1, y1), (x1, y0)])
+        return pieces, w * l
+    # the 128-gon with the ellipse's area: radius scaled by sqrt(2 pi / (K sin(2 pi / K)))
+    k = SECTORS
+    scale = math.sqrt(2 * math.pi / (k * math.sin(2 * math.pi / k)))
+    def at(r, a):
+        return (scale * r * w / 2 * math.cos(a), scale * r * l / 2 * math.sin(a))
+    pieces = []
+    for i in range(RINGS):
+        r0, r1 = math.sqrt(i / RINGS), math.sqrt((i + 1) / RINGS)  # equal-area rings
+        for j in range(k):
+            a0, a1 = 2 * math.pi * j / k, 2 * math.pi * (j + 1) / k
+            v = [at(r0, a0), at(r0, a1), at(r1, a1), at(r1, a0)] if i else [(0.0, 0.0), at(r1, a1), at(r1, a0)]
+            pieces.append(v)
+    return pieces, math.pi * w * l / 4
+
+
+def light_scene(dist_rad, w, l, shape="rect"):
+    """ies2rad's brightdata with our light: its polygons facing -z."""
     out = []
     for line in dist_rad.splitlines():
         if line.strip().startswith("'out_light' polygon") or line.strip().startswith("out_light polygon"):
@@ -72,28 +104,26 @@ def light_scene(dist_rad, w, l):
     head, sep, rest = text.partition("\n1 ")
     assert sep, "ies2rad output: expected the brightdata multiplier line '1 M'"
     rest_lines = rest.split("\n", 1)
-    text = head + f"\n1 {1.0 / (w * l)!r}\n" + (rest_lines[1] if len(rest_lines) > 1 else "")
+    pieces, area = light_pieces(w, l, shape)
+    text = head + f"\n1 {1.0 / area!r}\n" + (rest_lines[1] if len(rest_lines) > 1 else "")
     polys = []
-    for i in range(SUB):
-        for j in range(SUB):
-            x0, x1 = -w / 2 + w * i / SUB, -w / 2 + w * (i + 1) / SUB
-            y0, y1 = -l / 2 + l * j / SUB, -l / 2 + l * (j + 1) / SUB
-            # counter-clockwise seen from below: the normal is -z (gamma < 90); a
-            # Radiance polygon emits on its front side only, so a twin facing +z,
-            # 1e-6 m above, emits gamma > 90 (each hides the other's back)
-            v = [(x0, y0), (x0, y1), (x1, y1), (x1, y0)]
-            down = " ".join(f"{x!r} {y!r} 0" for x, y in v)
-            up = " ".join(f"{x!r} {y!r} 1e-6" for x, y in reversed(v))
-            polys.append(f"out_light polygon p{i}_{j}\n0\n0\n12 {down}")
-            polys.append(f"out_light polygon q{i}_{j}\n0\n0\n12 {up}")
+    for i, v in enumerate(pieces):
+        # counter-clockwise seen from below: the normal is -z (gamma < 90); a
+        # Radiance polygon emits on its front side only, so a twin facing +z,
+        # 1e-6 m above, emits gamma > 90 (each hides the other's back)
+        down = " ".join(f"{x!r} {y!r} 0" for x, y in v)
+        up = " ".join(f"{x!r} {y!r} 1e-6" for x, y in reversed(v))
+        polys.append(f"out_light polygon p{i}\n0\n0\n{3 * len(v)} {down}")
+        polys.append(f"out_light polygon q{i}\n0\n0\n{3 * len(v)} {up}")
     return text + "\n" + "\n".join(polys) + "\n"
 
 
 def main(argv):
-    if len(argv) != 9:
+    if len(argv) not in (9, 10) or (len(argv) == 10 and argv[9] not in ("rect", "disk")):
         sys.stderr.write(__doc__)
         return 2
     binary, lum = argv[1], argv[2]
+    shape = argv[9] if len(argv) == 10 else "rect"
     w, l, h, rot = (float(x) for x in argv[3:7])
     res, extent = int(argv[7]), float(argv[8])
     rbin = radiance_bin()
@@ -110,7 +140,7 @@ def main(argv):
         subprocess.run(["ies2rad", "-dm", "-c", "1", "1", "1", "-o", "out", "lum.ies"], cwd=tmp, env=env,
                        check=True, capture_output=True)
         with open(os.path.join(tmp, "out.rad")) as f:
-            scene = light_scene(f.read(), w, l)
+            scene = light_scene(f.read(), w, l, shape)
         with open(os.path.join(tmp, "light.rad"), "w") as f:
             f.write(scene)
         turn = math.degrees(math.pi - rot)
