@@ -17,6 +17,8 @@
 #include <limits>
 #include <sstream>
 
+#include "lb_build_config.h"
+
 namespace lb::stability {
 
 namespace fs = std::filesystem;
@@ -120,6 +122,38 @@ void addLuminaireCases(std::vector<Case>& v)
     add(v, "collinear_float", "corners collinear in float (1e-9 x 1)", 1, kPi, 1e-9, 1, "lambert", Expect::Rejected);
 }
 
+// Linear lights at their real aspect (docs/design.md section 2: W along u =
+// C0 is the file's length, L along v its width). Near the light the short
+// side is comparable to the distance: the closest point snaps onto a long
+// edge, the fan's triangles are slivers, Delaunay's in-circle test compares
+// lifts of points 1e-2 apart on a 1 m light. Far away the light is a line.
+void addLinearCases(std::vector<Case>& v)
+{
+    const char* slot = "shared:zumtobel/SLOTLIGHT_42184612.LDT";  // declares 2000 x 72 mm (aspect 28)
+    const char* linetik = "shared:zumtobel/LINETIK-S_42184482.LDT";  // declares 1000 x 13 mm (aspect 77)
+    add(v, "slotlight_declared", "SLOTLIGHT at its declared 2 m x 72 mm, h = 0.1, R = pi", 0.1, kPi, 2, 0.072, slot,
+        Expect::Finite, true);
+    add(v, "slotlight_vertical", "SLOTLIGHT 2 m x 72 mm vertical, h = 0.1, R = pi/2, a row in its plane", 0.1, kPi / 2,
+        2, 0.072, slot, Expect::Finite, false, true);
+    add(v, "linetik_declared", "LINETIK-S (direct/indirect) at its declared 1 m x 13 mm, h = 0.1, R = 3pi/4", 0.1,
+        3 * kPi / 4, 1, 0.013, linetik, Expect::Finite, true);
+    add(v, "linetik_vertical", "LINETIK-S 1 m x 13 mm vertical, h = 0.01, R = pi/2, a row in its plane", 0.01, kPi / 2,
+        1, 0.013, linetik, Expect::Finite, false, true);
+    // The synthetic 1:100 light (1 m x 10 mm, the near-Lambertian linear profile).
+    add(v, "aspect100_near_vertical", "1 m x 10 mm vertical 1 cm above the receiver, 0.25 m wide image", 0.01, kPi / 2,
+        1, 0.01, "linear", Expect::Finite, true, true);
+    v.back().extent = 0.25;
+    add(v, "aspect100_near_down", "1 m x 10 mm facing down at 1.5 cm, 0.25 m wide image", 0.01, kPi, 1, 0.01, "linear",
+        Expect::Finite, true);
+    v.back().extent = 0.25;
+    add(v, "aspect100_near_ends", "1 m x 10 mm facing down at 10.5 cm, the whole light and its ends", 0.1, kPi, 1, 0.01,
+        "linear");
+    v.back().extent = 1.25;
+    add(v, "aspect100_far_vertical", "1 m x 10 mm vertical at h = 3", 3, kPi / 2, 1, 0.01, "linear", Expect::Finite,
+        false, true);
+    add(v, "aspect100_far_down", "1 m x 10 mm facing down at h = 1", 1, kPi, 1, 0.01, "linear", Expect::Finite, true);
+}
+
 // The specular scene (docs/design.md section 8): the glossy receiver's extremes.
 void addSpecularCases(std::vector<Case>& v)
 {
@@ -170,11 +204,30 @@ const std::vector<Case>& catalogue()
         std::vector<Case> v;
         addGeometryCases(v);
         addLuminaireCases(v);
+        addLinearCases(v);
         addSpecularCases(v);
         addIndirectCases(v);
         return v;
     }();
     return cases;
+}
+
+namespace {
+
+// "shared:<path>" -> <source>/../shared/luminaires/<path>.
+std::string sharedLuminairePath(const std::string& name)
+{
+    return (fs::path(LB_SOURCE_DIR) / ".." / "shared" / "luminaires" / name.substr(7)).lexically_normal().string();
+}
+
+}  // namespace
+
+std::string missingLuminaire(const Case& c)
+{
+    if (c.luminaire.rfind("shared:", 0) != 0) return "";
+    std::error_code ec;
+    const std::string path = sharedLuminairePath(c.luminaire);
+    return fs::is_regular_file(path, ec) ? "" : fmt::format("luminaire file {} is absent", path);
 }
 
 photometry::Table luminaire(const std::string& name)
@@ -189,6 +242,8 @@ photometry::Table luminaire(const std::string& name)
         // in 0.05-degree steps; nothing beyond (docs/design.md section 3: 0 outside the range).
         t = photometry::tabulate([&](double, double g) { return 5000 * std::exp(-0.5 * (g / 0.5) * (g / 0.5)); }, 2,
                                  201, 0, 10);
+    } else if (name.rfind("shared:", 0) == 0) {
+        return methods::loadLuminaire(sharedLuminairePath(name));
     } else {
         return methods::loadLuminaire(name);
     }
@@ -419,6 +474,12 @@ std::vector<CaseResult> run(ocl::Runtime& rt, const Options& opt)
         cr.c = c;
         Scene s = sceneOf(c, opt.res);
         cr.res = s.res;
+        cr.skipped = missingLuminaire(c);
+        if (!cr.skipped.empty()) {
+            if (opt.progress) std::cerr << fmt::format("stability: {} skipped: {}\n", c.name, cr.skipped);
+            out.push_back(std::move(cr));
+            continue;
+        }
         if (opt.progress) std::cerr << fmt::format("stability: {} ({})\n", c.name, s.describe());
         photometry::Table table = luminaire(c.luminaire);
         CaseRun run{rt, c, s, table, precs, {}};
@@ -493,6 +554,7 @@ nlohmann::json toJson(const std::vector<CaseResult>& results, const ocl::Runtime
                          {"ok", cr.ok()},
                          {"failures", cr.failures},
                          {"rejected", cr.rejected},
+                         {"skipped", cr.skipped},
                          {"reference_max", num(cr.refMax)},
                          {"reference_err_est", num(cr.refErrEst)},
                          {"rows", rows}});
@@ -534,6 +596,10 @@ void writeReport(const std::string& dir, const std::vector<CaseResult>& results,
     auto g = [](double v) { return std::isfinite(v) ? fmt::format("{:.3g}", v) : std::string("nan"); };
     for (auto& cr : results) {
         const Case& c = cr.c;
+        if (!cr.skipped.empty()) {
+            md << fmt::format("## {}: skipped\n\n{}: {}.\n\n", c.name, c.what, cr.skipped);
+            continue;
+        }
         md << fmt::format("## {}: {}\n\n", c.name, cr.ok() ? "pass" : "FAIL");
         md << fmt::format("{}. h = {}, R = {:.6g}, {} x {} m, extent {}, res {}, luminaire `{}`, expectation: {}.\n\n",
                           c.what, c.height, c.rotation, c.width, c.length, c.extent, cr.res, c.luminaire,

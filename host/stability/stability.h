@@ -50,7 +50,9 @@ struct Case {
     std::string name;
     std::string what;  // one line: what the case stresses, the source
     double height = 1, rotation = 3.14159265358979323846, width = 1, length = 1, extent = 5;
-    std::string luminaire;  // methods::loadLuminaire name, or "stab:<kind>" (stability::luminaire)
+    // methods::loadLuminaire name, "stab:<kind>" or "shared:<path>" (a file of
+    // ../shared/luminaires; the case is skipped where it is absent): stability::luminaire.
+    std::string luminaire;
     Expect expect = Expect::Finite;
     bool oddRes = false;  // force an odd resolution (a pixel row exactly at y = 0)
     bool quick = false;  // part of the --quick subset (CI)
@@ -67,9 +69,13 @@ struct Case {
 const std::vector<Case>& catalogue();
 
 // Luminaires of the catalogue: "stab:upward" (emits only at gamma > 90),
-// "stab:pencil" (Gaussian beam sigma 0.5 deg, measured to gamma 10 deg), else
+// "stab:pencil" (Gaussian beam sigma 0.5 deg, measured to gamma 10 deg),
+// "shared:<path>" (../shared/luminaires/<path> beside the source tree), else
 // methods::loadLuminaire (files, short names, analytic:cos<n>).
 photometry::Table luminaire(const std::string& name);
+// "" when the case's luminaire can be loaded; else why not (a "shared:" file
+// that is absent: the data lie outside the repository, so run() skips the case).
+std::string missingLuminaire(const Case& c);
 
 // Metrics of one image A against the reference R (both res x res).
 struct Errors {
@@ -94,6 +100,7 @@ struct CaseResult {
     Case c;
     int res = 0;
     std::string rejected;  // Rejected cases: the InputError messages (first one)
+    std::string skipped;  // why the case did not run (missingLuminaire), "" when it ran
     double refMax = 0, refErrEst = 0;  // max of the double reference and its own error estimate
     Image reference;
     std::vector<Row> rows;
