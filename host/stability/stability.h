@@ -57,6 +57,11 @@ struct Case {
     bool oddRes = false;  // force an odd resolution (a pixel row exactly at y = 0)
     bool quick = false;  // part of the --quick subset (CI)
     double maxFd = 0.05;  // bound on fd_diff (float vs double of one method)
+    // Bounds on max_rel_err by family name, "*" for every family not named;
+    // none: unbounded (a method's inherent error is reported, not judged).
+    // Where set they hold each method to its measured error (docs/usage.md,
+    // "Numerical stability"), so that garbage or a regression fails.
+    std::vector<std::pair<std::string, double>> maxRel;
     // The scene's kind and its values (scene/scene.h); each case runs the
     // methods that render its kind (methods::renders).
     SceneKind kind = SceneKind::Diffuse;
@@ -67,6 +72,8 @@ struct Case {
 
 // The catalogue of extreme scenes (stability.cpp).
 const std::vector<Case>& catalogue();
+// The case's bound on max_rel_err of `method` (Case::maxRel; +inf when none).
+double relBound(const Case& c, const std::string& method);
 
 // Luminaires of the catalogue: "stab:upward" (emits only at gamma > 90),
 // "stab:pencil" (Gaussian beam sigma 0.5 deg, measured to gamma 10 deg),
@@ -80,6 +87,7 @@ std::string missingLuminaire(const Case& c);
 // Metrics of one image A against the reference R (both res x res).
 struct Errors {
     long nonfinite = 0;
+    long negative = 0;  // finite pixels below 0 (irradiance is never negative)
     double maxRelErr = 0, maxJump = 0, jumpExcess = 0;
 };
 Errors measure(const Image& ref, const Image& A);
@@ -123,7 +131,8 @@ Scene sceneOf(const Case& c, int res);
 // Far-field bound on max|A - P| / max(P), P the point light (derivation in stability.cpp).
 double pointBound(const Scene& s, bool dbl);
 // The checks of one row of case c on its scene s, failures appended to
-// row.failures: non-finite pixels; a Zero case not exactly 0 (row.maxAbs);
+// row.failures: non-finite pixels; negative pixels; max_rel_err over
+// relBound(c, row.method); a Zero case not exactly 0 (row.maxAbs);
 // float vs double (row.fdDiff, NaN included) over c.maxFd; a PointLimit case
 // farther than pointBound from `point` (the point light's image; sets
 // row.pointDiff). `dbl`: the row is the double one.
