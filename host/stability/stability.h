@@ -7,6 +7,7 @@
 // (default parameters) in both precisions, and measures per method and
 // precision:
 //   nonfinite    pixels that are NaN or infinite (must be 0 everywhere);
+//   negative     finite pixels below 0 (must be 0 everywhere);
 //   max_rel_err  max_i |A_i - R_i| / max(R_i, floor), R the double reference,
 //                floor = 1e-2 max(R): pixels where the reference is (near)
 //                zero are judged relative to 1 % of the image maximum, so
