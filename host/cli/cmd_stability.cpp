@@ -46,7 +46,10 @@ void addStabilityCommand(CLI::App& app)
             std::cout << j.dump() << std::endl;
         } else {
             for (auto& cr : results) {
-                std::cout << fmt::format("{:<18} {}\n", cr.c.name, cr.ok() ? "ok" : "FAIL");
+                std::cout << fmt::format("{:<18} {}\n", cr.c.name,
+                                         !cr.skipped.empty() ? "skipped: " + cr.skipped
+                                             : cr.ok()       ? "ok"
+                                                             : "FAIL");
                 for (auto& f : cr.failures) std::cout << "    " << f << '\n';
                 for (auto& r : cr.rows)
                     for (auto& f : r.failures) std::cout << fmt::format("    {} {}: {}\n", r.method, r.precision, f);

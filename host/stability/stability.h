@@ -7,6 +7,7 @@
 // (default parameters) in both precisions, and measures per method and
 // precision:
 //   nonfinite    pixels that are NaN or infinite (must be 0 everywhere);
+//   negative     finite pixels below 0 (must be 0 everywhere);
 //   max_rel_err  max_i |A_i - R_i| / max(R_i, floor), R the double reference,
 //                floor = 1e-2 max(R): pixels where the reference is (near)
 //                zero are judged relative to 1 % of the image maximum, so
@@ -50,11 +51,18 @@ struct Case {
     std::string name;
     std::string what;  // one line: what the case stresses, the source
     double height = 1, rotation = 3.14159265358979323846, width = 1, length = 1, extent = 5;
-    std::string luminaire;  // methods::loadLuminaire name, or "stab:<kind>" (stability::luminaire)
+    // methods::loadLuminaire name, "stab:<kind>" or "shared:<path>" (a file of
+    // ../shared/luminaires; the case is skipped where it is absent): stability::luminaire.
+    std::string luminaire;
     Expect expect = Expect::Finite;
     bool oddRes = false;  // force an odd resolution (a pixel row exactly at y = 0)
     bool quick = false;  // part of the --quick subset (CI)
     double maxFd = 0.05;  // bound on fd_diff (float vs double of one method)
+    // Bounds on max_rel_err by family name, "*" for every family not named;
+    // none: unbounded (a method's inherent error is reported, not judged).
+    // Where set they hold each method to its measured error (docs/usage.md,
+    // "Numerical stability"), so that garbage or a regression fails.
+    std::vector<std::pair<std::string, double>> maxRel;
     // The scene's kind and its values (scene/scene.h); each case runs the
     // methods that render its kind (methods::renders).
     SceneKind kind = SceneKind::Diffuse;
@@ -65,15 +73,22 @@ struct Case {
 
 // The catalogue of extreme scenes (stability.cpp).
 const std::vector<Case>& catalogue();
+// The case's bound on max_rel_err of `method` (Case::maxRel; +inf when none).
+double relBound(const Case& c, const std::string& method);
 
 // Luminaires of the catalogue: "stab:upward" (emits only at gamma > 90),
-// "stab:pencil" (Gaussian beam sigma 0.5 deg, measured to gamma 10 deg), else
+// "stab:pencil" (Gaussian beam sigma 0.5 deg, measured to gamma 10 deg),
+// "shared:<path>" (../shared/luminaires/<path> beside the source tree), else
 // methods::loadLuminaire (files, short names, analytic:cos<n>).
 photometry::Table luminaire(const std::string& name);
+// "" when the case's luminaire can be loaded; else why not (a "shared:" file
+// that is absent: the data lie outside the repository, so run() skips the case).
+std::string missingLuminaire(const Case& c);
 
 // Metrics of one image A against the reference R (both res x res).
 struct Errors {
     long nonfinite = 0;
+    long negative = 0;  // finite pixels below 0 (irradiance is never negative)
     double maxRelErr = 0, maxJump = 0, jumpExcess = 0;
 };
 Errors measure(const Image& ref, const Image& A);
@@ -94,6 +109,7 @@ struct CaseResult {
     Case c;
     int res = 0;
     std::string rejected;  // Rejected cases: the InputError messages (first one)
+    std::string skipped;  // why the case did not run (missingLuminaire), "" when it ran
     double refMax = 0, refErrEst = 0;  // max of the double reference and its own error estimate
     Image reference;
     std::vector<Row> rows;
@@ -116,7 +132,8 @@ Scene sceneOf(const Case& c, int res);
 // Far-field bound on max|A - P| / max(P), P the point light (derivation in stability.cpp).
 double pointBound(const Scene& s, bool dbl);
 // The checks of one row of case c on its scene s, failures appended to
-// row.failures: non-finite pixels; a Zero case not exactly 0 (row.maxAbs);
+// row.failures: non-finite pixels; negative pixels; max_rel_err over
+// relBound(c, row.method); a Zero case not exactly 0 (row.maxAbs);
 // float vs double (row.fdDiff, NaN included) over c.maxFd; a PointLimit case
 // farther than pointBound from `point` (the point light's image; sets
 // row.pointDiff). `dbl`: the row is the double one.

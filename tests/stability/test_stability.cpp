@@ -106,11 +106,13 @@ TEST(Stability, CatalogueCoversTheIssue)
             s.length = c.length;
             s.extent = c.extent;
             EXPECT_NO_THROW(s.validate()) << c.name;
-            EXPECT_NO_THROW(stability::luminaire(c.luminaire).validate()) << c.name;
+            if (stability::missingLuminaire(c).empty())  // a ../shared file may be absent: run() skips the case
+                EXPECT_NO_THROW(stability::luminaire(c.luminaire).validate()) << c.name;
         }
     }
     for (auto* n : {"touching", "grazing", "plane_diffuse", "far", "tiny", "thin", "huge_ceiling", "zero_upward",
-                    "pencil", "coincident", "collinear"})
+                    "pencil", "coincident", "collinear", "slotlight_declared", "linetik_declared",
+                    "aspect100_near_vertical", "aspect100_near_down", "aspect100_far_vertical", "aspect100_far_down"})
         EXPECT_TRUE(names.count(n)) << n;
     EXPECT_GT(quick, 5);
 }
