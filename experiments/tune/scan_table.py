@@ -8,14 +8,17 @@ its geometric mean NMSE over the luminaire's scenes beats robust's (better, equa
 geometric mean over the 19 luminaires other than the pencil of that ratio, the worst
 ratio, and the luminaires where it loses. A luminaire's scenes are those where robust's
 NMSE is defined (a black reference leaves it undefined); a spec's undefined or
-non-finite NMSE on one of them counts as a loss.
+non-finite NMSE on one of them counts as a loss. The pencil's dust scenes count here as
+any other (so area_q / area_sin can "beat" robust on them); --cover ties them.
 
 --cover: what the whole scanned set can reach: the most luminaires one spec beats, the
 specs that reach it, per luminaire how many specs beat robust there and the most
 luminaires any of those beats, and leave-one-luminaire-out over the scan: each fold picks
 a spec on the other 19 luminaires by each rule of RULES (the tuner's `geomean` objective
 searched exhaustively over the scan; the most luminaires beaten, ties broken two ways) and
-scores it on the 20th.
+scores it on the 20th. The pencil's references are float dust (its NMSE 1e9-1e30 measures
+no method, and area_q / area_sin move it by orders of magnitude): it is a tie for every
+spec and left out of the picks (--dust '' keeps it).
 
 --make dense|fine|joint: write the experiment file of a scan (the 20 luminaires and the
 scenes of experiments/tune-plane-scan.json, resp. tune-area-scan.json): dense is
@@ -65,16 +68,24 @@ def defined(v):
     return math.isfinite(v) and v > 0
 
 
-def log_ratios(nm):
-    """{series: {luminaire: mean over its scenes of log(NMSE / robust's NMSE)}} (inf: a loss)."""
+DUST = ("pencil",)
+
+
+def log_ratios(nm, dust=DUST):
+    """{series: {luminaire: mean over its scenes of log(NMSE / robust's NMSE)}} (inf: a loss),
+    and per luminaire its scenes. A luminaire whose name contains a word of `dust` is a tie
+    for every spec and has no scenes (its references are float dust: its NMSE measures no
+    method)."""
     rob = nm["robust"]
-    scenes = {lum: [s for s, v in d.items() if defined(v)] for lum, d in rob.items()}
+    scenes = {lum: [s for s, v in d.items() if defined(v) and not any(w in lum for w in dust)]
+              for lum, d in rob.items()}
     out = {}
     for series, d in nm.items():
         lr = {}
         for lum, ss in scenes.items():
             vals = [d[lum].get(s, float("nan")) for s in ss]
-            lr[lum] = (sum(math.log(v / rob[lum][s]) for v, s in zip(vals, ss)) / len(ss)
+            lr[lum] = (0.0 if not ss else
+                       sum(math.log(v / rob[lum][s]) for v, s in zip(vals, ss)) / len(ss)
                        if all(defined(v) for v in vals) else float("inf"))
         out[series] = lr
     return out, scenes
@@ -85,7 +96,7 @@ def short(lum):
 
 
 def table(path):
-    lr, _ = log_ratios(load(path))
+    lr, _ = log_ratios(load(path), dust=())
     out = []
     for s, d in lr.items():
         if s == "robust":
@@ -126,15 +137,17 @@ def fold_pick(nm, lr, scenes, specs, held, by):
     return min(specs, key=key)
 
 
-def cover(path):
+def cover(path, dust=DUST):
     nm = load(path)
-    lr, scenes = log_ratios(nm)
+    lr, scenes = log_ratios(nm, dust)
     specs = [s for s in lr if s != "robust"]
     lums = list(lr["robust"])
     beats = {s: {lum for lum in lums if lr[s][lum] < 0} for s in specs}
     best = max(len(b) for b in beats.values())
     print(f"\n{os.path.basename(path)}: {len(specs)} specs besides robust, {len(lums)} luminaires, "
-          f"{sum(len(v) for v in scenes.values())} scenes with robust's NMSE defined\n")
+          f"{sum(len(v) for v in scenes.values())} scenes with robust's NMSE defined"
+          + (f" (float dust, a tie for every spec, no scene counted: {', '.join(short(l) for l in lums if not scenes[l])})"
+             if any(not v for v in scenes.values()) else "") + "\n")
     hist = collections.Counter(len(b) for b in beats.values())
     print("luminaires beaten by one spec: count of specs: " +
           ", ".join(f"{k}: {hist[k]}" for k in sorted(hist, reverse=True)))
@@ -263,6 +276,9 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("results", nargs="*")
     ap.add_argument("--cover", action="store_true")
+    ap.add_argument("--dust", default=",".join(DUST),
+                    help="with --cover: comma-separated words naming luminaires whose references are float "
+                         "dust: a tie for every spec, left out of the picks (default pencil; '' keeps them)")
     ap.add_argument("--make", choices=("dense", "fine", "joint"))
     ap.add_argument("--points", type=int, default=256)
     ap.add_argument("--plot", metavar="PNG", help="with one dense-scan RESULTS: its map")
@@ -278,7 +294,10 @@ def main():
         plot(paths[0], a.plot)
         return
     for p in paths:
-        (cover if a.cover else table)(p)
+        if a.cover:
+            cover(p, tuple(w for w in a.dust.split(",") if w))
+        else:
+            table(p)
 
 
 if __name__ == "__main__":
