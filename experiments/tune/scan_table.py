@@ -20,10 +20,12 @@ scores it on the 20th. The pencil's references are float dust (its NMSE 1e9-1e30
 no method, and area_q / area_sin move it by orders of magnitude): it is a tie for every
 spec and left out of the picks (--dust '' keeps it).
 
---make dense|fine|joint: write the experiment file of a scan (the 20 luminaires and the
+--make dense|fine|joint|res32: write the experiment file of a scan (the 20 luminaires and the
 scenes of experiments/tune-plane-scan.json, resp. tune-area-scan.json): dense is
 corner_inset 0 .. 1 step 0.025 x dyn_weight 0 .. 4 step 0.2 on the plane-crossing scene,
-fine its best band (corner_inset 0.6 .. 1 step 0.0125 x dyn_weight 0.6 .. 1.2 step 0.025);
+fine its best band (corner_inset 0.6 .. 1 step 0.0125 x dyn_weight 0.6 .. 1.2 step 0.025),
+res32 corner_inset 0 .. 1 step 0.1 x dyn_weight 0 .. 2 step 0.1 at 32 x 32 on the four scenes
+that include those where they act at that resolution;
 joint is area_q, area_sin, corner_inset, dyn_weight at scrambled Sobol points (seed 1)
 over the tunables table's ranges and over a box around robust's defaults, on six scenes.
 
@@ -32,7 +34,7 @@ best points lose on is beaten).
 
 usage: experiments/tune/scan_table.py [--cover] [RESULTS.csv[.xz] ...]
        experiments/tune/scan_table.py --plot PNG DENSE-RESULTS.csv[.xz]
-       experiments/tune/scan_table.py --make dense|fine|joint [--points N] --out EXP.json"""
+       experiments/tune/scan_table.py --make dense|fine|joint|res32 [--points N] --out EXP.json"""
 import argparse
 import collections
 import csv
@@ -228,7 +230,7 @@ def fmt(x):
 
 
 def make(kind, points, out):
-    base = json.load(open(os.path.join(EXPERIMENTS, f"tune-{'area' if kind == 'joint' else 'plane'}-scan.json")))
+    base = json.load(open(os.path.join(EXPERIMENTS, f"tune-{'plane' if kind in ('dense', 'fine') else 'area'}-scan.json")))
     methods = ["robust", "tuned"]
     if kind == "fine":
         base["description"] = (
@@ -237,6 +239,15 @@ def make(kind, points, out):
             "of tune-all-cv-*.json, 16 x 16 error images. Written by experiments/tune/scan_table.py --make fine.")
         methods += [f"robust:corner_inset={fmt(0.6 + i / 80)},dyn_weight={fmt(0.6 + j / 40)}"
                     for i in range(33) for j in range(25)]
+    elif kind == "res32":
+        base["description"] = (
+            "docs/tuning.md: robust's corner_inset (0 .. 1 step 0.1) x dyn_weight (0 .. 2 step 0.1) at 32 x 32 "
+            "error images on the scenes of tune-all-cv-*.json where they act at that resolution (h 0.1, R pi/2 "
+            "and 3pi/4; h 1.1, R pi/2; h 1.1, R 3pi/4 as a check that it does not move), all 20 luminaires. "
+            "Written by experiments/tune/scan_table.py --make res32.")
+        base["heights"], base["rotations"] = [0.1, 1.1], ["pi/2", "3pi/4"]
+        base["res"] = base["time_res"] = 32
+        methods += [f"robust:corner_inset={fmt(i / 10)},dyn_weight={fmt(j / 10)}" for i in range(11) for j in range(21)]
     elif kind == "dense":
         base["description"] = (
             "docs/tuning.md: robust's corner_inset (0 .. 1 step 0.025) x dyn_weight (0 .. 4 step 0.2) on "
@@ -279,7 +290,7 @@ def main():
     ap.add_argument("--dust", default=",".join(DUST),
                     help="with --cover: comma-separated words naming luminaires whose references are float "
                          "dust: a tie for every spec, left out of the picks (default pencil; '' keeps them)")
-    ap.add_argument("--make", choices=("dense", "fine", "joint"))
+    ap.add_argument("--make", choices=("dense", "fine", "joint", "res32"))
     ap.add_argument("--points", type=int, default=256)
     ap.add_argument("--plot", metavar="PNG", help="with one dense-scan RESULTS: its map")
     ap.add_argument("--out")
