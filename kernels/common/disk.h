@@ -9,9 +9,14 @@
  *   Phi = 1/2 | oint  n_x . (r x dr) / |r|^2 |,   r = p - x
  * (Lambert's formula is that integral over straight edges, each giving
  * Theta_i n_x . (r_i x r_i+1) / |r_i x r_i+1|). An arc's part has no closed
- * form; it is integrated by Gauss-Legendre, 8 nodes per arc of the fan
- * (two 4-node panels), exact for the straight edges and to ~1e-6 relative
- * where x is farther from the arc than the arc is long (tests/math/test_disk).
+ * form; it is integrated by 4-node Gauss-Legendre per arc of the fan. With
+ * r(phi) = d + A cos + B sin (d = c - x, A = (W/2) u, B = (L/2) v, A . B = 0)
+ * its integrand is a ratio of trigonometric polynomials,
+ *   n_x . (r x r') / |r|^2 = (n.(A x B) - sin n.(d x A) + cos n.(d x B))
+ *                          / (d.d + 2 cos d.A + 2 sin d.B + cos^2 A.A + sin^2 B.B),
+ * whose coefficients are the pixel's (lb_disk_arcs); the nodes' cos and sin
+ * come from rotations, so a pixel costs six sincos whatever the fan's size
+ * (tests/methods/test_disk.cpp holds the rule's error).
  *
  * The horizon of the receiver (n_x . r > 0) leaves of the rim one arc; the
  * region it bounds with its chord is what every method integrates
@@ -63,20 +68,76 @@ LB_FN real lb_disk_edge(real3 a, real3 b, real3 nx)
     return atan2(lc, ab) * dot(nx, c) / lc;
 }
 
-/* Twice the arc phi0 -> phi1's part of Phi: int n_x . (r x r') / |r|^2 dphi
- * by two 4-node Gauss-Legendre panels. */
-LB_FN real lb_disk_arc(lb_light L, real3 x, real3 nx, real phi0, real phi1)
+/* The pixel's arc integrand (the coefficients above) and the rotations of
+ * the fan: sectors of dphi = span / LB_DISK_FAN, 4 Gauss nodes each. */
+typedef struct {
+    real k0, ks, kc;          /* numerator: k0 + ks sin + kc cos */
+    real d0, dc, ds, dcc, dss; /* denominator: d0 + dc cos + ds sin + dcc cos^2 + dss sin^2 */
+    real3 d, a, b;            /* the rim r(phi) = d + a cos + b sin, relative to x */
+    real c0, s0, cstep, sstep; /* cos, sin of the first angle and of dphi */
+    real cn0, cn1, sn0, sn1;  /* cos, sin of the nodes' offsets dphi x_j, j = 0, 1 (j = 3, 2 mirror them) */
+    real h;                   /* dphi */
+} lb_disk_arcs;
+
+LB_FN lb_disk_arcs lb_disk_arcs_at(lb_light L, real3 x, real3 nx, lb_disk_view w)
 {
-    real3 du = L.u * (R(0.5) * L.w), dv = L.v * (R(0.5) * L.l);
-    real h = R(0.5) * (phi1 - phi0), s = R(0);
-    for (int k = 0; k < 8; ++k) {
-        real phi = phi0 + h * ((real)(k >> 2) + lb_gl4_x(k & 3));
-        real cp = cos(phi), sp = sin(phi);
-        real3 r = L.c - x + du * cp + dv * sp;
-        real3 dr = dv * cp - du * sp;
-        s += lb_gl4_w(k & 3) * dot(nx, cross(r, dr)) / dot(r, r);
-    }
-    return s * h;
+    lb_disk_arcs q;
+    q.d = L.c - x;
+    q.a = L.u * (R(0.5) * L.w);
+    q.b = L.v * (R(0.5) * L.l);
+    q.k0 = dot(nx, cross(q.a, q.b));
+    q.ks = -dot(nx, cross(q.d, q.a));
+    q.kc = dot(nx, cross(q.d, q.b));
+    q.d0 = dot(q.d, q.d);
+    q.dc = R(2) * dot(q.d, q.a);
+    q.ds = R(2) * dot(q.d, q.b);
+    q.dcc = dot(q.a, q.a);
+    q.dss = dot(q.b, q.b);
+    q.h = w.span / (real)LB_DISK_FAN;
+    q.c0 = cos(w.phi0);
+    q.s0 = sin(w.phi0);
+    q.cstep = cos(q.h);
+    q.sstep = sin(q.h);
+    q.cn0 = cos(q.h * lb_gl4_x(0));
+    q.sn0 = sin(q.h * lb_gl4_x(0));
+    q.cn1 = cos(q.h * lb_gl4_x(1));
+    q.sn1 = sin(q.h * lb_gl4_x(1));
+    return q;
+}
+
+/* The integrand at the angle whose cos, sin are (cp, sp). */
+LB_FN real lb_disk_arc_f(const lb_disk_arcs* q, real cp, real sp)
+{
+    return (q->k0 + q->ks * sp + q->kc * cp) /
+           (q->d0 + q->dc * cp + q->ds * sp + q->dcc * cp * cp + q->dss * sp * sp);
+}
+
+/* Twice the part of Phi of the sector's arc starting at the angle whose
+ * cos, sin are (c, s): the 4-node Gauss rule on the integrand above. */
+LB_FN real lb_disk_arc(const lb_disk_arcs* q, real c, real s)
+{
+    /* nodes x_j and 1 - x_j: the sector's end (ce, se) turned back by the same offsets */
+    const real ce = c * q->cstep - s * q->sstep, se = s * q->cstep + c * q->sstep;
+    return (lb_disk_arc_f(q, c * q->cn0 - s * q->sn0, s * q->cn0 + c * q->sn0) +
+            lb_disk_arc_f(q, ce * q->cn0 + se * q->sn0, se * q->cn0 - ce * q->sn0)) *
+               (lb_gl4_w(0) * q->h) +
+           (lb_disk_arc_f(q, c * q->cn1 - s * q->sn1, s * q->cn1 + c * q->sn1) +
+            lb_disk_arc_f(q, ce * q->cn1 + se * q->sn1, se * q->cn1 - ce * q->sn1)) *
+               (lb_gl4_w(1) * q->h);
+}
+
+/* The rim point at (cos, sin) = (c, s), relative to x. */
+LB_FN real3 lb_disk_arcs_rim(const lb_disk_arcs* q, real c, real s)
+{
+    return q->d + q->a * c + q->b * s;
+}
+
+/* The next sector's first angle: (c, s) turned by dphi. */
+LB_FN void lb_disk_arcs_turn(const lb_disk_arcs* q, real* c, real* s)
+{
+    real cc = *c * q->cstep - *s * q->sstep;
+    *s = *s * q->cstep + *c * q->sstep;
+    *c = cc;
 }
 
 /* The closest point of the visible disk to x, relative to x: x projected
@@ -106,8 +167,11 @@ LB_FN real3 lb_disk_cp(lb_light L, real3 x, real3 nx, lb_disk_view w)
  * Returns its vertex count (LB_MAXV holds the 7 a clip can make). */
 LB_FN int lb_disk_hexagon(lb_light L, real3 x, real3 nx, real3* p)
 {
+    const real h = R(0.86602540378443865); /* sin(pi / 3) */
+    const real cs[6] = {R(1), R(0.5), R(-0.5), R(-1), R(-0.5), R(0.5)};
+    const real sn[6] = {R(0), h, h, R(0), -h, -h};
     for (int k = 0; k < 6; ++k)
-        p[k] = lb_disk_rim(L, x, LB_PI / R(3) * (real)k);
+        p[k] = L.c - x + L.u * (R(0.5) * L.w * cs[k]) + L.v * (R(0.5) * L.l * sn[k]);
     return lb_clip_polygon(p, 6, nx, R(0));
 }
 
@@ -115,12 +179,14 @@ LB_FN int lb_disk_hexagon(lb_light L, real3 x, real3 nx, real3* p)
  * when clipped, its chord. */
 LB_FN real lb_disk_phi(lb_light L, real3 x, real3 nx, lb_disk_view w)
 {
-    const real dphi = w.span / (real)LB_DISK_FAN;
-    real e = R(0);
-    for (int i = 0; i < LB_DISK_FAN; ++i)
-        e += lb_disk_arc(L, x, nx, w.phi0 + dphi * (real)i, w.phi0 + dphi * (real)(i + 1));
-    if (w.vis == 2)
-        e += lb_disk_edge(lb_disk_rim(L, x, w.phi0 + w.span), lb_disk_rim(L, x, w.phi0), nx);
+    lb_disk_arcs q = lb_disk_arcs_at(L, x, nx, w);
+    real c = q.c0, s = q.s0, e = R(0);
+    for (int i = 0; i < LB_DISK_FAN; ++i) {
+        e += lb_disk_arc(&q, c, s);
+        lb_disk_arcs_turn(&q, &c, &s);
+    }
+    if (w.vis == 2) /* the chord from the arc's end (c, s) back to its start */
+        e += lb_disk_edge(lb_disk_arcs_rim(&q, c, s), lb_disk_arcs_rim(&q, q.c0, q.s0), nx);
     return R(0.5) * fabs(e);
 }
 
@@ -128,30 +194,31 @@ LB_FN real lb_disk_phi(lb_light L, real3 x, real3 nx, lb_disk_view w)
  * cubature on a fan: LB_DISK_FAN sectors from the apex s (relative to x,
  * inside the visible region) over the visible arc, and, when clipped, the
  * triangle of the apex and the chord; each sector's Phi (exact up to the
- * arc's Gauss rule) times the mean radiance of its apex and its two rim
- * points (paper Eq. 10). */
+ * arc's Gauss rule: spokes edge(s, p_i) - edge(s, p_i+1) plus the arc) times
+ * the mean radiance of its apex and its two rim points (paper Eq. 10). */
 LB_FN real lb_disk_fan(__global const float* lum, lb_light L, real3 x, real3 nx, real3 s, lb_disk_view w)
 {
+    lb_disk_arcs q = lb_disk_arcs_at(L, x, nx, w);
     const real ls = lb_radiance_from(lum, L, s);
-    const real dphi = w.span / (real)LB_DISK_FAN;
     const int closed = w.vis == 1;
-    const real3 start = lb_disk_rim(L, x, w.phi0);
+    const real3 start = lb_disk_arcs_rim(&q, q.c0, q.s0);
     const real lstart = lb_radiance_from(lum, L, start);
+    const real spoke0 = lb_disk_edge(s, start, nx);
+    real c = q.c0, sn = q.s0, la = lstart, spoke = spoke0, e = R(0);
     real3 a = start;
-    real la = lstart, e = R(0);
     for (int i = 0; i < LB_DISK_FAN; ++i) {
         const int wrap = closed && i + 1 == LB_DISK_FAN;
-        real p1 = w.phi0 + dphi * (real)(i + 1);
-        real3 b = wrap ? start : lb_disk_rim(L, x, p1);
-        real lbv = wrap ? lstart : lb_radiance_from(lum, L, b);
-        real phi = lb_disk_edge(s, a, nx) + lb_disk_arc(L, x, nx, p1 - dphi, p1) + lb_disk_edge(b, s, nx);
-        e += phi * (ls + la + lbv);
-        a = b;
+        real arc = lb_disk_arc(&q, c, sn);
+        lb_disk_arcs_turn(&q, &c, &sn);
+        a = wrap ? start : lb_disk_arcs_rim(&q, c, sn);
+        real lbv = wrap ? lstart : lb_radiance_from(lum, L, a);
+        real next = wrap ? spoke0 : lb_disk_edge(s, a, nx);
+        e += (spoke + arc - next) * (ls + la + lbv);
         la = lbv;
+        spoke = next;
     }
     if (!closed) /* the triangle of the apex, the arc's end a and its start */
-        e += (lb_disk_edge(s, a, nx) + lb_disk_edge(a, start, nx) + lb_disk_edge(start, s, nx)) *
-             (ls + la + lstart);
+        e += (spoke + lb_disk_edge(a, start, nx) - spoke0) * (ls + la + lstart);
     return fabs(e) / R(6);
 }
 
@@ -180,8 +247,12 @@ LB_FN real lb_disk_area_gauss(__global const float* lum, lb_light L, real3 x, re
     for (int i = 0; i < n; ++i) {
         real r = sqrt(n == 3 ? g3x[i] : g2x[i]), gw = n == 3 ? g3w[i] : R(0.5);
         for (int j = 0; j < 2 * n; ++j) {
-            real phi = LB_PI * ((real)j + R(0.5)) / (real)n;
-            real3 p = L.c - x + hu * (r * cos(phi)) + hv * (r * sin(phi));
+            /* the angles pi (j + 1/2) / n: 30, 90, ... 330 deg (n = 3), 45, 135, ... (n = 2) */
+            const real h3 = R(0.86602540378443865), h2 = R(0.70710678118654752);
+            const real c3[6] = {h3, R(0), -h3, -h3, R(0), h3}, s3[6] = {R(0.5), R(1), R(0.5), R(-0.5), R(-1), R(-0.5)};
+            const real c2[4] = {h2, -h2, -h2, h2}, s2[4] = {h2, h2, -h2, -h2};
+            real cphi = n == 3 ? c3[j] : c2[j], sphi = n == 3 ? s3[j] : s2[j];
+            real3 p = L.c - x + hu * (r * cphi) + hv * (r * sphi);
             real r2 = dot(p, p);
             real cw = dot(nx, p);
             if (r2 > R(0) && cw > R(0))

@@ -38,7 +38,8 @@ double fineDiskPhi(const Scene& sc, glm::dvec3 x, int k = 4096)
     std::vector<glm::dvec3> p(k);
     for (int i = 0; i < k; ++i) {
         double phi = 2 * M_PI * i / k;
-        p[i] = sc.center() - x + scale * (0.5 * sc.width * std::cos(phi) * sc.u() + 0.5 * sc.length * std::sin(phi) * sc.v());
+        p[i] = sc.center() - x +
+            scale * (0.5 * sc.width * std::cos(phi) * sc.u() + 0.5 * sc.length * std::sin(phi) * sc.v());
     }
     return f64::lb_polygon_irradiance_lambert(p.data(), k, {0, 0, 1});
 }
@@ -54,9 +55,10 @@ Scene diskScene(double h, double R, double d, int res)
 TEST(DiskMath, PhiMatchesTheParallelDiskConfigurationFactor)
 {
     // The disk of diameter 1 facing down (R = pi) at heights 0.05 .. 5 m
-    // above receivers 0 .. 2 m off its axis. Measured worst 1.6e-9 (the
-    // arcs' 8-node Gauss rule; the integrand is smooth in phi even where the
-    // receiver is 0.05 m from 0.39 m long arcs); bound 1e-7.
+    // above receivers 0 .. 2 m off its axis. Measured worst 2.9e-6 (the
+    // arcs' 4-node Gauss rule, at h 0.05 where the receiver is 0.05 m from
+    // 0.39 m long arcs; 1.6e-9 with 8 nodes, at 1.6x the cost of Phi); bound
+    // 1e-5, far below any method's own error.
     double worst = 0;
     for (double h : {0.05, 0.2, 1.0, 5.0})
         for (double rho : {0.0, 0.25, 0.5, 0.75, 2.0}) {
@@ -70,7 +72,7 @@ TEST(DiskMath, PhiMatchesTheParallelDiskConfigurationFactor)
             double want = M_PI * parallelDiskF(L.c.z, rho, 0.5);
             double rel = std::fabs(phi / want - 1);
             worst = std::max(worst, rel);
-            EXPECT_LT(rel, 1e-7) << "h " << h << " rho " << rho;
+            EXPECT_LT(rel, 1e-5) << "h " << h << " rho " << rho;
         }
     std::printf("disk Phi against the configuration factor: worst relative error %.3g\n", worst);
 }
@@ -79,7 +81,7 @@ TEST(DiskMath, PhiOfATiltedOrClippedDiskMatchesAFinePolygon)
 {
     // Tilted disks (R = pi/2 .. 3pi/4) and an ellipse; with h < 0 the horizon
     // cuts the disk and the fine polygon is clipped alike. 1e-5: the
-    // polygon's own error is < 1e-12, the arcs' Gauss rule ~1e-9 at these
+    // polygon's own error is < 1e-12, the arcs' Gauss rule < 3e-6 at these
     // distances, the clip's chord exact.
     for (double R : {M_PI / 2, 5 * M_PI / 8, 3 * M_PI / 4})
         for (double h : {-0.3, 0.1, 1.0})
@@ -100,7 +102,8 @@ TEST(DiskMath, PhiOfATiltedOrClippedDiskMatchesAFinePolygon)
                     if (pa.z >= 0) p.push_back(pa);
                     if ((pa.z >= 0) != (pb.z >= 0)) p.push_back(pa + (pb - pa) * (pa.z / (pa.z - pb.z)));
                 }
-                double want = p.size() >= 3 ? f64::lb_polygon_irradiance_lambert(p.data(), int(p.size()), {0, 0, 1}) : 0;
+                double want =
+                    p.size() >= 3 ? f64::lb_polygon_irradiance_lambert(p.data(), int(p.size()), {0, 0, 1}) : 0;
                 // the polygon's chords miss (2 pi / k)^2 / 12 of each arc's sagitta area: ~2e-7 relative
                 EXPECT_NEAR(got, want, 1e-5 * want + 1e-12) << "R " << R << " h " << h << " w " << w;
             }
@@ -135,9 +138,9 @@ double lambertDisk(const Scene& sc, int row, int col, double i0 = 1000)
 {
     glm::dvec3 x = sc.pixel(row, col);
     if (glm::dot(x - sc.center(), sc.n()) <= 0) return 0;
-    double phi = sc.rotation == M_PI ? M_PI * parallelDiskF(sc.center().z, glm::length(glm::dvec2(x - sc.center())),
-                                                            0.5 * sc.width)
-                                     : fineDiskPhi(sc, x);
+    double phi = sc.rotation == M_PI
+        ? M_PI * parallelDiskF(sc.center().z, glm::length(glm::dvec2(x - sc.center())), 0.5 * sc.width)
+        : fineDiskPhi(sc, x);
     return i0 / sc.area() * phi;
 }
 
@@ -173,7 +176,7 @@ TEST(DiskMethods, ConstantRadianceIsExactForEverySampleRule)
     LB_REQUIRE_RUNTIME(rt);
     // A Lambertian disk has one radiance in every direction: cp, np, mrp,
     // structured and the cubature multiply it by the disk's Phi (disk.h),
-    // exact up to the arcs' Gauss rule (< 1e-8, DiskMath above) and the
+    // exact up to the arcs' Gauss rule (< 3e-6, DiskMath above) and the
     // tabulated cos1 (0.1 deg steps: relative (step)^2 / 8 (1 + tan^2 gamma)
     // in I, 2.5e-5 at the grazing 83 deg a receiver of the R = pi/2 scene
     // sees; measured worst 2.5e-5): 1e-4 in double, the reference's bound
@@ -271,7 +274,8 @@ TEST(DiskMethods, SizeFromFileTakesTheDeclaredOpening)
     EXPECT_DOUBLE_EQ(sc.width, 0.11);
     // luminous sides as tall as the opening is wide: no flat face to stand for it
     std::string m = inputError([&] {
-        methods::sizeFromFile(methods::loadLuminaire(dir + "/luminaires/zumtobel/INTRO_60714483.LDT"), sc, "--size file");
+        methods::sizeFromFile(methods::loadLuminaire(dir + "/luminaires/zumtobel/INTRO_60714483.LDT"), sc,
+                              "--size file");
     });
     EXPECT_NE(m.find("--size file"), std::string::npos) << m;
     EXPECT_NE(m.find("no flat luminous opening"), std::string::npos) << m;
