@@ -32,12 +32,12 @@
  * shared set, optionally shifted per pixel, LB_MC_SHIFT; hashed random;
  * Owen-scrambled Sobol; ZSobol) and sampling domains (LB_MC_DOMAIN: area,
  * solid angle with LB_MC_WARP the cosine warp, projected solid angle, MIS,
- * the luminaire's table, MIS of projected and table), the math in
+ * the luminaire's table, MIS of table and projected or solid angle), the math in
  * common/mc_sample.h and common/mc_table.h (the table sampler `tab`, built
  * by host/methods/mc_table.cpp); LB_MC_VAR writes each pixel's variance
  * for the a-trous filter (common/denoise.h, whose kernels this program also
  * holds: the method's post-passes).
- * @variants: "" | "-DLB_LUT" | "-DLB_LUT -DLB_LUT_1D -DLB_NO_HORIZON -DLB_NO_BACK" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_MC_WARP" | "-DLB_MC_EXT -DLB_MC_DOMAIN=3 -DLB_MC_SEQ=3 -DLB_MC_CLIPV -DLB_MC_VAR -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=2 -DLB_MC_SEQ=1 -DLB_MC_SHIFT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=4 -DLB_MC_SEQ=2 -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=5 -DLB_MC_SEQ=1 -DLB_MC_CLIPV"
+ * @variants: "" | "-DLB_LUT" | "-DLB_LUT -DLB_LUT_1D -DLB_NO_HORIZON -DLB_NO_BACK" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_MC_WARP" | "-DLB_MC_EXT -DLB_MC_DOMAIN=3 -DLB_MC_SEQ=3 -DLB_MC_CLIPV -DLB_MC_VAR -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=2 -DLB_MC_SEQ=1 -DLB_MC_SHIFT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=4 -DLB_MC_SEQ=2 -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=5 -DLB_MC_SEQ=1 -DLB_MC_CLIPV" | "-DLB_MC_EXT -DLB_MC_DOMAIN=6 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_LUT"
  */
 #include "common/lbmath.h"
 
@@ -146,10 +146,15 @@ LB_FN_INLINE void mc_view_at(__global const real* P, real ou, real ov, real on, 
 /* The sampling domain's per-pixel set-up (LB_MC_DOMAIN: 0 area on the whole
  * light, 1 solid angle, 2 projected solid angle, 3 mis: projected and area by
  * the balance heuristic, 4 table: by the luminaire's intensity table, 5
- * mis_table: projected and table by the balance heuristic; 1-5 on the part
- * above the horizon). */
-#if LB_MC_DOMAIN == 1
+ * mis_table: projected and table by the balance heuristic, 6 mis_table_solid:
+ * solid angle and table by the balance heuristic; 1-6 on the part above the
+ * horizon). */
+#if LB_MC_DOMAIN == 1 || LB_MC_DOMAIN == 6
 typedef struct {
+#if LB_MC_DOMAIN == 6
+    lb_mc_tabwin tw;
+    real omega;
+#endif
     lb_mc_sphrect q;
     real ksolid; /* the estimate's factor omega / (|on| area) for solid-angle samples */
     bool use;    /* solid-angle sampling (else area sampling of the same rectangle) */
@@ -168,6 +173,10 @@ LB_FN_INLINE void mc_domain_at(const mc_view* vw, real min_solid, mc_domain* dm)
      * sampling of the same rectangle (exact pdf: 1 / its area) */
     dm->use = omega >= min_solid && dm->q.s > R(0) && fabs(on) > R(0);
     dm->ksolid = dm->use ? omega / (fabs(on) * vw->area) : R(0);
+#if LB_MC_DOMAIN == 6
+    dm->omega = omega;
+    lb_mc_tabwin_setup(vw->tab, ou, y0, on, w, ey, &dm->tw);
+#endif
 #ifdef LB_MC_WARP
     real au = vw->au, av = vw->av, an0 = vw->an0;
     real nl0 = R(1) / length(c0), nl1 = R(1) / length(c1), nl2 = R(1) / length(c2), nl3 = R(1) / length(c3);
@@ -300,6 +309,33 @@ LB_FN_INLINE real mc_eval_tmis(__global const float* lum, const mc_view* vw, con
     real den = (real)(m - np) * pt + (real)np * cw / dm->pj.area;
     return dm->lit && f > R(0) && den > R(0) ? (real)m * f / den : R(0);
 }
+#elif LB_MC_DOMAIN == 6
+/* One mis_table_solid sample's estimate, m samples of which np by solid
+ * angle (or by area below min_solid): a solid-angle sample (sol) or a table
+ * sample for the point (u0, u1), weighted by the balance heuristic
+ * (densities in solid angle: 1 / omega, or on^2 / (area |d_z|^3) for area
+ * samples, and the table's). */
+LB_FN_INLINE real mc_eval_smis(__global const float* lum, const mc_view* vw, const mc_domain* dm, int m, int np,
+                               bool sol, real u0, real u1)
+{
+    real dx, dy, dz, pt, cw;
+    /* i is the same in every work-item: a uniform branch */
+    if (sol) {
+        real sx, sy;
+        lb_mc_sphrect_sample(&dm->q, u0, u1, &sx, &sy);
+        real pu = dm->use ? sx : vw->ou + vw->w * u0, pv = dm->use ? sy : vw->y0 + vw->ey * u1;
+        real ri = R(1) / LB_MC_SQRT(pu * pu + pv * pv + vw->on2);
+        dx = -pu * ri, dy = -pv * ri, dz = -vw->on * ri;
+        pt = lb_mc_tab_pdf(&dm->tw, dx, dy, dz);
+    } else {
+        pt = lb_mc_tab_sample(&dm->tw, u0, u1, &dx, &dy, &dz);
+    }
+    real f = mc_dir_term(lum, vw, dx, dy, dz, &cw);
+    real az = dz < R(0) ? -dz : dz;
+    real ps = dm->use ? R(1) / dm->omega : vw->on2 / (vw->w * vw->ey * az * az * az);
+    real den = (real)(m - np) * pt + (real)np * ps;
+    return vw->tv > R(0) && f > R(0) && den > R(0) ? (real)m * f / den : R(0);
+}
 #elif LB_MC_DOMAIN != 3
 /* One sample's estimate for the point (u0, u1) (domains 0-2). */
 LB_FN_INLINE real mc_eval(__global const float* lum, const mc_view* vw, const mc_domain* dm, real u0, real u1)
@@ -362,13 +398,15 @@ LB_FN_INLINE real mc_sample(__global const float* lum, __global const real* st, 
                             const mc_view* vw, const mc_domain* dm, int i, int m)
 {
     real u0, u1;
-#if LB_MC_DOMAIN == 3 || LB_MC_DOMAIN == 5
+#if LB_MC_DOMAIN == 3 || LB_MC_DOMAIN == 5 || LB_MC_DOMAIN == 6
     bool proj = i < px->np;
     mc_point(st, px, proj ? i : i - px->np, i, proj ? 0x5bd1e995U : 0x27d4eb2fU, &u0, &u1);
 #if LB_MC_DOMAIN == 3
     return mc_eval_mis(lum, vw, dm, m, px->np, proj, u0, u1);
-#else
+#elif LB_MC_DOMAIN == 5
     return mc_eval_tmis(lum, vw, dm, m, px->np, proj, u0, u1);
+#else
+    return mc_eval_smis(lum, vw, dm, m, px->np, proj, u0, u1);
 #endif
 #else
     mc_point(st, px, i, i, 0U, &u0, &u1);

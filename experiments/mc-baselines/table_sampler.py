@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The table sampler (mc domain=table, mis_table) against projected, mis and
+"""The table sampler (mc domain=table, mis_table, mis_table_solid) against projected, mis and
 solid angle (docs/mc-baselines.md): NMSE at equal N (Owen-scrambled Sobol per
 pixel) over seeds on 32^2 error images, the render time of the same spec at
 --time-res, and the equal-time figure NMSE x time (the NMSE a sampler would
@@ -30,6 +30,7 @@ SAMPLERS = [
     ("solid", "mc:domain=solid,sequence=sobol"),
     ("table", "mc:domain=table,sequence=sobol"),
     ("mis_table (table + projected)", "mc:domain=mis_table,sequence=sobol"),
+    ("mis_table_solid (table + solid)", "mc:domain=mis_table_solid,sequence=sobol"),
 ]
 
 

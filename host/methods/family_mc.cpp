@@ -33,7 +33,7 @@ std::vector<PlanArg> samplingArgs(const McOptions& o, int n, bool extra, std::ui
                                   const photometry::Table* t = nullptr)
 {
     size_t npx = o.denoise == "atrous" ? static_cast<size_t>(res) * res : 1;
-    const bool byTable = t && (o.domain == "table" || o.domain == "mis_table");
+    const bool byTable = t && o.domain.rfind("table") != std::string::npos;
     return {PlanArg::integer("seed", static_cast<std::int32_t>(static_cast<std::uint32_t>(seed))),
             PlanArg::integer("np", o.projectedOf(n)),
             PlanArg::integer("lg", mcLog2(n + (extra ? 1 : 0))),
@@ -124,11 +124,12 @@ void registerMc(Registry& r)
                       "point set of sequence=shared"),
         Param::integer("seed", 0, 0, 4294967295L, Scale::Linear,
                        "seed of every randomised sequence and of the shared set (halton: 0 = unshifted)"),
-        Param::choice("domain", "area", {"area", "solid", "projected", "mis", "table", "mis_table"},
+        Param::choice("domain", "area", {"area", "solid", "projected", "mis", "table", "mis_table", "mis_table_solid"},
                       "sampling: uniform on the light's area; uniform in solid angle (spherical rectangle, Urena et "
                       "al. 2013); by the receiver's cosine (projected solid angle); area + projected by the balance "
                       "heuristic; by the luminaire's intensity table over the light's window of directions; "
-                      "projected + table by the balance heuristic. All but area sample the part above the horizon"),
+                      "table + projected, table + solid angle by the balance heuristic. All but area sample the part "
+                      "above the horizon"),
         Param::choice("sequence", "shared", {"shared", "random", "sobol", "zsobol"},
                       "points: one set for every pixel (pattern); hashed per pixel; Owen-scrambled Sobol per pixel "
                       "(Burley 2020); Morton-ordered digit-permuted Sobol (Ahmed and Wonka 2020, pbrt-v4 ZSobol)"),
@@ -136,9 +137,11 @@ void registerMc(Registry& r)
         Param::integer("cosine_warp", 0, 0, 1, Scale::Linear,
                        "domain=solid: warp by the receiver cosine at the corners (Hart et al. 2020)"),
         Param::real("min_solid", 1e-3, 0, 1, Scale::Log,
-                    "domain=solid: area sampling (exact pdf) below this solid angle (sr)", false),
+                    "domain=solid, mis_table_solid: area sampling (exact pdf) below this solid angle (sr)", false),
         Param::real("mis_split", 0.5, 0, 1, Scale::Linear,
-                    "domain=mis, mis_table: share of the N samples that are projected", false),
+                    "domain=mis, mis_table: share of the N samples that are projected (mis_table_solid: by solid "
+                    "angle)",
+                    false),
         Param::choice("denoise", "none", {"none", "gauss16", "atrous"},
                       "image filter after the render, timed with it: the paper's separable 2 x 16 Gaussian, or the "
                       "edge-avoiding a-trous wavelet filter on the per-pixel variance (Dammertz et al. 2010); "

@@ -20,6 +20,7 @@ int domainIndex(const std::string& d)
     if (d == "mis") return 3;
     if (d == "table") return 4;
     if (d == "mis_table") return 5;
+    if (d == "mis_table_solid") return 6;
     return 0;
 }
 
@@ -37,7 +38,7 @@ bool McOptions::extended() const { return domain != "area" || sequence != "share
 
 int McOptions::projectedOf(int n) const
 {
-    if (domain != "mis" && domain != "mis_table") return domain == "projected" ? n : 0;
+    if (domain != "mis" && domain != "mis_table" && domain != "mis_table_solid") return domain == "projected" ? n : 0;
     return std::clamp(static_cast<int>(std::lround(misSplit * n)), 0, n);
 }
 
@@ -108,7 +109,7 @@ std::string mcSceneDefines(const McOptions& o, const Scene& scene, int n)
         // (max(0, cos)); projected, mis and mis_table need the clipped polygon.
         if (horizonAlongU(scene))
             d += " -DLB_MC_CLIPV";
-        else if (o.domain != "solid" && o.domain != "table")
+        else if (o.domain != "solid" && o.domain != "table" && o.domain != "mis_table_solid")
             throw InputError(fmt::format("method mc: domain={} needs the receiver normal perpendicular to the "
                                          "light's u axis (as in every normalized scene)",
                                          o.domain));

@@ -65,8 +65,8 @@ std::vector<float> mcTableSampler(const photometry::Table& t)
     const std::vector<double> w = cellWeights(t, c1, v);
     const size_t nc1 = c1.size() - 1, nv = v.size() - 1;
     if (2 * nc1 * nv > (size_t{1} << 22))
-        throw Error(fmt::format("table sampler: {} x {} cells, more than its 2^21 (a coarser table is needed)", nc1,
-                                nv));
+        throw Error(
+            fmt::format("table sampler: {} x {} cells, more than its 2^21 (a coarser table is needed)", nc1, nv));
     // integer weights >= 1, the doubled table's total <= 2^24 (exact in float)
     double sum = 0;
     for (double x : w) sum += x;
