@@ -50,17 +50,33 @@ std::vector<double> cellWeights(const photometry::Table& t, const std::vector<fl
     return w;
 }
 
+// Ascending angles (degrees) with every step longer than kMcTableStep split
+// evenly.
+std::vector<double> refine(const std::vector<double>& x)
+{
+    std::vector<double> r = {x.front()};
+    for (size_t i = 1; i < x.size(); ++i) {
+        const int k = std::max(1, static_cast<int>(std::ceil((x[i] - x[i - 1]) / kMcTableStep - 1e-9)));
+        for (int j = 1; j <= k; ++j) r.push_back(j == k ? x[i] : x[i - 1] + (x[i] - x[i - 1]) * j / k);
+    }
+    return r;
+}
+
 }  // namespace
 
 std::vector<float> mcTableSampler(const photometry::Table& t)
 {
     // C nodes over [0, 2 pi] (the 360 plane as 2 pi), v = 1 - cos(gamma)
-    // nodes with 0 and 180 degrees added
-    std::vector<double> cr, vr = {0.0};
-    for (double c : t.c) cr.push_back(c * M_PI / 180);
-    for (double g : t.gamma)
-        if (g > 0 && g < 180) vr.push_back(2 * std::pow(std::sin(g * M_PI / 360), 2));
-    vr.push_back(2.0);
+    // nodes with 0 and 180 degrees added; the table's steps subdivided to
+    // at most kMcTableStep (a rotationally symmetric table has one C step of
+    // 360 degrees: its window would be every azimuth)
+    std::vector<double> cr, vr;
+    for (double c : refine(t.c)) cr.push_back(c * M_PI / 180);
+    std::vector<double> g = {0.0};
+    for (double x : t.gamma)
+        if (x > 0 && x < 180) g.push_back(x);
+    g.push_back(180.0);
+    for (double x : refine(g)) vr.push_back(2 * std::pow(std::sin(x * M_PI / 360), 2));
     const std::vector<float> c1 = floatNodes(cr), v = floatNodes(vr);
     const std::vector<double> w = cellWeights(t, c1, v);
     const size_t nc1 = c1.size() - 1, nv = v.size() - 1;

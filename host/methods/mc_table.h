@@ -13,6 +13,9 @@ namespace lb::methods {
 // (so the sampler's density is positive in every direction: where the
 // profile is dark it samples by solid angle).
 inline constexpr double kMcTableFloor = 1e-5;
+// The largest cell side in degrees (in C and in gamma): the table's steps are
+// split to it, so that a window covers the light's directions closely.
+inline constexpr double kMcTableStep = 2.5;
 
 // The float buffer `tab` of kernels/mc.cl for table t (layout:
 // kernels/common/mc_table.h). Throws Error where the table has more cells than

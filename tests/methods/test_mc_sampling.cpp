@@ -211,12 +211,13 @@ TEST(McSampling, TableSamplerDensityCoversTheRectangle)
         EXPECT_LE(worst, 1e-9) << r.x0;
         // the midpoint rule over 1000^2 points of a piecewise smooth
         // integrand with the rectangle's edges as discontinuities: the grid
-        // points along the edges (~ sqrt(hits)) carry the error, relative
-        // ~ 1 / sqrt(hits) at most (measured 4.7e-6 .. 2.8e-4 with 1.1e5 -
-        // 9.8e5 hits, 1.8e-3 with the thin light's 3.8e3); a direction without
-        // density, or a density off by its cell's share, is an error of the
-        // order of a cell's share of the window (>= 1/360 here)
-        EXPECT_NEAR(est, omega, std::max(1e-3, 0.3 / std::sqrt(hits)) * omega) << r.x0;
+        // points along the edges carry the error, relative ~ 1 / sqrt(hits)
+        // for a compact hit region, more for a thin one (measured 1.1e-6 ..
+        // 2.0e-4 with 2.2e5 - 9.8e5 hits, 2.7e-3 with the thin light's 2.3e4
+        // in a thin strip); a direction without density, or a density off by
+        // its cell's share, is an error of the order of a cell's share of the
+        // window (1/2160 .. 1/2 here)
+        EXPECT_NEAR(est, omega, std::max(1e-3, 1 / std::sqrt(hits)) * omega) << r.x0;
     }
 }
 
