@@ -35,11 +35,13 @@
  * sets it for anything but today's MCI): per-pixel sequences (LB_MC_SEQ:
  * shared set, optionally shifted per pixel, LB_MC_SHIFT; hashed random;
  * Owen-scrambled Sobol; ZSobol) and sampling domains (LB_MC_DOMAIN: area,
- * solid angle with LB_MC_WARP the cosine warp, projected solid angle, MIS),
- * the math in common/mc_sample.h; LB_MC_VAR writes each pixel's variance
+ * solid angle with LB_MC_WARP the cosine warp, projected solid angle, MIS,
+ * the luminaire's table, MIS of table and projected or solid angle), the math in
+ * common/mc_sample.h and common/mc_table.h (the table sampler `tab`, built
+ * by host/methods/mc_table.cpp); LB_MC_VAR writes each pixel's variance
  * for the a-trous filter (common/denoise.h, whose kernels this program also
  * holds: the method's post-passes).
- * @variants: "" | "-DLB_LUT" | "-DLB_LUT -DLB_LUT_1D -DLB_NO_HORIZON -DLB_NO_BACK" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_MC_WARP" | "-DLB_MC_EXT -DLB_MC_DOMAIN=3 -DLB_MC_SEQ=3 -DLB_MC_CLIPV -DLB_MC_VAR -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=2 -DLB_MC_SEQ=1 -DLB_MC_SHIFT" | "-DLB_MC_EXT -DLB_MC_SEQ=2 -DLB_MC_DISK"
+ * @variants: "" | "-DLB_LUT" | "-DLB_LUT -DLB_LUT_1D -DLB_NO_HORIZON -DLB_NO_BACK" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_MC_WARP" | "-DLB_MC_EXT -DLB_MC_DOMAIN=3 -DLB_MC_SEQ=3 -DLB_MC_CLIPV -DLB_MC_VAR -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=2 -DLB_MC_SEQ=1 -DLB_MC_SHIFT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=4 -DLB_MC_SEQ=2 -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=5 -DLB_MC_SEQ=1 -DLB_MC_CLIPV" | "-DLB_MC_EXT -DLB_MC_DOMAIN=6 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_SEQ=2 -DLB_MC_DISK"
  */
 #include "common/lbmath.h"
 
@@ -119,6 +121,7 @@ LB_FN_INLINE void mc_point(__global const real* st, const mc_pixel* px, int j, i
 typedef struct {
     real ou, ov, on, au, av, an, w, l, area;
     real t0, tv, y0, ey, on2, an0;
+    __global const float* tab; /* the table sampler (common/mc_table.h) */
 } mc_view;
 
 LB_FN_INLINE void mc_view_at(__global const real* P, real ou, real ov, real on, real au, real av, real an,
@@ -146,9 +149,16 @@ LB_FN_INLINE void mc_view_at(__global const real* P, real ou, real ov, real on, 
 
 /* The sampling domain's per-pixel set-up (LB_MC_DOMAIN: 0 area on the whole
  * light, 1 solid angle, 2 projected solid angle, 3 mis: projected and area by
- * the balance heuristic; 1-3 on the part above the horizon). */
-#if LB_MC_DOMAIN == 1
+ * the balance heuristic, 4 table: by the luminaire's intensity table, 5
+ * mis_table: projected and table by the balance heuristic, 6 mis_table_solid:
+ * solid angle and table by the balance heuristic; 1-6 on the part above the
+ * horizon). */
+#if LB_MC_DOMAIN == 1 || LB_MC_DOMAIN == 6
 typedef struct {
+#if LB_MC_DOMAIN == 6
+    lb_mc_tabwin tw;
+    real omega;
+#endif
     lb_mc_sphrect q;
     real ksolid; /* the estimate's factor omega / (|on| area) for solid-angle samples */
     bool use;    /* solid-angle sampling (else area sampling of the same rectangle) */
@@ -167,6 +177,10 @@ LB_FN_INLINE void mc_domain_at(const mc_view* vw, real min_solid, mc_domain* dm)
      * sampling of the same rectangle (exact pdf: 1 / its area) */
     dm->use = omega >= min_solid && dm->q.s > R(0) && fabs(on) > R(0);
     dm->ksolid = dm->use ? omega / (fabs(on) * vw->area) : R(0);
+#if LB_MC_DOMAIN == 6
+    dm->omega = omega;
+    lb_mc_tabwin_setup(vw->tab, ou, y0, on, w, ey, &dm->tw);
+#endif
 #ifdef LB_MC_WARP
     real au = vw->au, av = vw->av, an0 = vw->an0;
     real nl0 = R(1) / length(c0), nl1 = R(1) / length(c1), nl2 = R(1) / length(c2), nl3 = R(1) / length(c3);
@@ -176,8 +190,22 @@ LB_FN_INLINE void mc_domain_at(const mc_view* vw, real min_solid, mc_domain* dm)
     dm->w01 = fmax(R(0.01), (au * c3.x + av * c3.y + an0) * nl3);
 #endif
 }
+#elif LB_MC_DOMAIN == 4
+typedef struct {
+    lb_mc_tabwin tw;
+    bool lit; /* some of the light above the horizon */
+} mc_domain;
+
+LB_FN_INLINE void mc_domain_at(const mc_view* vw, real min_solid, mc_domain* dm)
+{
+    lb_mc_tabwin_setup(vw->tab, vw->ou, vw->y0, vw->on, vw->w, vw->ey, &dm->tw);
+    dm->lit = vw->tv > R(0);
+}
 #elif LB_MC_DOMAIN >= 2
 typedef struct {
+#if LB_MC_DOMAIN == 5
+    lb_mc_tabwin tw;
+#endif
     lb_mc_proj pj;
     real t1u, t1v, t1n, t2u, t2v, t2n; /* the receiver's tangent frame in the light's */
     real kproj;                        /* projected solid angle / light area */
@@ -202,6 +230,9 @@ LB_FN_INLINE void mc_domain_at(const mc_view* vw, real min_solid, mc_domain* dm)
     dm->lit = vw->tv > R(0) && dm->pj.area > R(0);
     dm->kproj = dm->lit ? dm->pj.area / vw->area : R(0);
     dm->t1u = t1u, dm->t1v = t1v, dm->t1n = t1n, dm->t2u = t2u, dm->t2v = t2v, dm->t2n = t2n;
+#if LB_MC_DOMAIN == 5
+    lb_mc_tabwin_setup(vw->tab, vw->ou, vw->y0, on, vw->w, vw->ey, &dm->tw);
+#endif
 }
 
 /* A projected sample's direction (receiver frame) in the light's frame. */
@@ -233,7 +264,83 @@ LB_FN_INLINE real mc_area_term(__global const float* lum, const mc_view* vw, rea
     return LB_INTENSITY3(lum, -pu, -pv, -vw->on) * cw;
 }
 
-#if LB_MC_DOMAIN != 3
+#if LB_MC_DOMAIN >= 4
+/* The solid-angle form's integrand at the unit emission direction (dx, dy,
+ * dz): I(d) cos_x / (area |d_z|) (luminance times the receiver cosine, over
+ * the light's area as the kernel's estimates), 0 where the direction misses
+ * the part of the light above the horizon. *cw: the receiver cosine. */
+LB_FN_INLINE real mc_dir_term(__global const float* lum, const mc_view* vw, real dx, real dy, real dz, real* cw)
+{
+    /* the light point -t d, t = -on / dz > 0 */
+    real sc = dz != R(0) ? vw->on / dz : R(0);
+    real pu = dx * sc, pv = dy * sc;
+    *cw = -(vw->au * dx + vw->av * dy + vw->an * dz);
+    bool hit = sc < R(0) && *cw > R(0) && pu >= vw->ou && pu <= vw->ou + vw->w && pv >= vw->y0 &&
+        pv <= vw->y0 + vw->ey;
+    real az = dz < R(0) ? -dz : dz;
+    return hit ? LB_INTENSITY3(lum, dx, dy, dz) * *cw / (vw->area * az) : R(0);
+}
+#endif
+
+#if LB_MC_DOMAIN == 4
+/* One table sample's estimate for the point (u0, u1). */
+LB_FN_INLINE real mc_eval(__global const float* lum, const mc_view* vw, const mc_domain* dm, real u0, real u1)
+{
+    real dx, dy, dz, cw;
+    real pt = lb_mc_tab_sample(&dm->tw, u0, u1, &dx, &dy, &dz);
+    real f = mc_dir_term(lum, vw, dx, dy, dz, &cw);
+    return dm->lit && pt > R(0) ? f / pt : R(0);
+}
+#elif LB_MC_DOMAIN == 5
+/* One mis_table sample's estimate, m samples of which np projected: a
+ * projected sample (proj) or a table sample for the point (u0, u1), weighted
+ * by the balance heuristic (densities in solid angle: cos_x / projected solid
+ * angle, and the table's). */
+LB_FN_INLINE real mc_eval_tmis(__global const float* lum, const mc_view* vw, const mc_domain* dm, int m, int np,
+                               bool proj, real u0, real u1)
+{
+    real dx, dy, dz, pt, cw;
+    /* i is the same in every work-item: a uniform branch */
+    if (proj) {
+        real wu, wv, wn;
+        mc_domain_dir(vw, dm, lb_mc_proj_sample(&dm->pj, u0, u1), &wu, &wv, &wn);
+        dx = -wu, dy = -wv, dz = -wn;
+        pt = lb_mc_tab_pdf(&dm->tw, dx, dy, dz);
+    } else {
+        pt = lb_mc_tab_sample(&dm->tw, u0, u1, &dx, &dy, &dz);
+    }
+    real f = mc_dir_term(lum, vw, dx, dy, dz, &cw);
+    real den = (real)(m - np) * pt + (real)np * cw / dm->pj.area;
+    return dm->lit && f > R(0) && den > R(0) ? (real)m * f / den : R(0);
+}
+#elif LB_MC_DOMAIN == 6
+/* One mis_table_solid sample's estimate, m samples of which np by solid
+ * angle (or by area below min_solid): a solid-angle sample (sol) or a table
+ * sample for the point (u0, u1), weighted by the balance heuristic
+ * (densities in solid angle: 1 / omega, or on^2 / (area |d_z|^3) for area
+ * samples, and the table's). */
+LB_FN_INLINE real mc_eval_smis(__global const float* lum, const mc_view* vw, const mc_domain* dm, int m, int np,
+                               bool sol, real u0, real u1)
+{
+    real dx, dy, dz, pt, cw;
+    /* i is the same in every work-item: a uniform branch */
+    if (sol) {
+        real sx, sy;
+        lb_mc_sphrect_sample(&dm->q, u0, u1, &sx, &sy);
+        real pu = dm->use ? sx : vw->ou + vw->w * u0, pv = dm->use ? sy : vw->y0 + vw->ey * u1;
+        real ri = R(1) / LB_MC_SQRT(pu * pu + pv * pv + vw->on2);
+        dx = -pu * ri, dy = -pv * ri, dz = -vw->on * ri;
+        pt = lb_mc_tab_pdf(&dm->tw, dx, dy, dz);
+    } else {
+        pt = lb_mc_tab_sample(&dm->tw, u0, u1, &dx, &dy, &dz);
+    }
+    real f = mc_dir_term(lum, vw, dx, dy, dz, &cw);
+    real az = dz < R(0) ? -dz : dz;
+    real ps = dm->use ? R(1) / dm->omega : vw->on2 / (vw->w * vw->ey * az * az * az);
+    real den = (real)(m - np) * pt + (real)np * ps;
+    return vw->tv > R(0) && f > R(0) && den > R(0) ? (real)m * f / den : R(0);
+}
+#elif LB_MC_DOMAIN != 3
 /* One sample's estimate for the point (u0, u1) (domains 0-2). */
 LB_FN_INLINE real mc_eval(__global const float* lum, const mc_view* vw, const mc_domain* dm, real u0, real u1)
 {
@@ -298,10 +405,16 @@ LB_FN_INLINE real mc_sample(__global const float* lum, __global const real* st, 
                             const mc_view* vw, const mc_domain* dm, int i, int m)
 {
     real u0, u1;
-#if LB_MC_DOMAIN == 3
+#if LB_MC_DOMAIN == 3 || LB_MC_DOMAIN == 5 || LB_MC_DOMAIN == 6
     bool proj = i < px->np;
     mc_point(st, px, proj ? i : i - px->np, i, proj ? 0x5bd1e995U : 0x27d4eb2fU, &u0, &u1);
+#if LB_MC_DOMAIN == 3
     return mc_eval_mis(lum, vw, dm, m, px->np, proj, u0, u1);
+#elif LB_MC_DOMAIN == 5
+    return mc_eval_tmis(lum, vw, dm, m, px->np, proj, u0, u1);
+#else
+    return mc_eval_smis(lum, vw, dm, m, px->np, proj, u0, u1);
+#endif
 #else
     mc_point(st, px, i, i, 0U, &u0, &u1);
     return mc_eval(lum, vw, dm, u0, u1);
@@ -372,7 +485,7 @@ LB_FN_INLINE int mc_tile_count(int n, float extra, int row0, int res, __global c
 
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
                      __global const real* st, int n, float extra, int seed, int np, int lg, real min_solid,
-                     __global real* var)
+                     __global real* var, __global const float* tab)
 {
     int col = get_global_id(0);
     int row = row0 + (int)get_global_id(1);
@@ -407,6 +520,7 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     mc_pixel_at(col, row, res, (lb_u32)seed, lg, np, &px);
     mc_view vw;
     mc_view_at(P, ou, ov, on, au, av, an, &vw);
+    vw.tab = tab;
     real ev;
     real e = mc_ext(lum, st, &px, &vw, m, min_solid, &ev);
     if (inside) {

@@ -366,7 +366,10 @@ nlohmann::json mcSamplers(Bench& b)
                                   Row{"paper=1", 0},
                                   Row{"domain=projected", 3},
                                   Row{"domain=projected,sequence=sobol", 0},
-                                  Row{"domain=mis,sequence=sobol", 0}};
+                                  Row{"domain=mis,sequence=sobol", 0},
+                                  Row{"domain=table,sequence=sobol", 0},
+                                  Row{"domain=mis_table,sequence=sobol", 0},
+                                  Row{"domain=mis_table_solid,sequence=sobol", 0}};
     for (const Row& r : b.opt.quick ? quick : all) {
         double t8 = 0;
         double c = perSample(r.spec, &t8);

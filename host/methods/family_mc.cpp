@@ -1,6 +1,7 @@
 // mc: one fixed point set for every pixel (kernels/mc.cl, host/methods/samples.h).
 #include "methods/mc_denoise.h"
 #include "methods/mc_options.h"
+#include "methods/mc_table.h"
 #include "methods/registry.h"
 #include "methods/samples.h"
 #include "methods/specialize.h"
@@ -23,16 +24,22 @@ namespace {
 constexpr int kMcPointsMax = 16;
 
 // mc.cl's arguments after P, lum, out, row0.
-const std::vector<std::string> kMcArgs = {"st", "n", "extra", "seed", "np", "lg", "min_solid", "var"};
+const std::vector<std::string> kMcArgs = {"st", "n", "extra", "seed", "np", "lg", "min_solid", "var", "tab"};
 
 // The sampling arguments of the extended path (kernels/mc.cl: mc_ext); `var`
-// gets the per-pixel variance where the a-trous filter needs it.
-std::vector<PlanArg> samplingArgs(const McOptions& o, int n, bool extra, std::uint64_t seed, int res)
+// gets the per-pixel variance where the a-trous filter needs it, `tab` the
+// table sampler where the domain samples by the table (else one float).
+std::vector<PlanArg> samplingArgs(const McOptions& o, int n, bool extra, std::uint64_t seed, int res,
+                                  const photometry::Table* t = nullptr)
 {
     size_t npx = o.denoise == "atrous" ? static_cast<size_t>(res) * res : 1;
+    const bool byTable = t && o.domain.rfind("table") != std::string::npos;
     return {PlanArg::integer("seed", static_cast<std::int32_t>(static_cast<std::uint32_t>(seed))),
-            PlanArg::integer("np", o.projectedOf(n)), PlanArg::integer("lg", mcLog2(n + (extra ? 1 : 0))),
-            PlanArg::real("min_solid", o.minSolid), PlanArg::outputReals("var", npx)};
+            PlanArg::integer("np", o.projectedOf(n)),
+            PlanArg::integer("lg", mcLog2(n + (extra ? 1 : 0))),
+            PlanArg::real("min_solid", o.minSolid),
+            PlanArg::outputReals("var", npx),
+            PlanArg::floatBuffer("tab", byTable ? mcTableSampler(*t) : std::vector<float>{0.0f})};
 }
 
 // mc.cl's point-set arguments, then the sampling arguments.
@@ -120,10 +127,12 @@ void registerMc(Registry& r)
                       "point set of sequence=shared"),
         Param::integer("seed", 0, 0, 4294967295L, Scale::Linear,
                        "seed of every randomised sequence and of the shared set (halton: 0 = unshifted)"),
-        Param::choice("domain", "area", {"area", "solid", "projected", "mis"},
+        Param::choice("domain", "area", {"area", "solid", "projected", "mis", "table", "mis_table", "mis_table_solid"},
                       "sampling: uniform on the light's area; uniform in solid angle (spherical rectangle, Urena et "
                       "al. 2013); by the receiver's cosine (projected solid angle); area + projected by the balance "
-                      "heuristic. All but area sample the part above the horizon"),
+                      "heuristic; by the luminaire's intensity table over the light's window of directions; "
+                      "table + projected, table + solid angle by the balance heuristic. All but area sample the part "
+                      "above the horizon"),
         Param::choice("sequence", "shared", {"shared", "random", "sobol", "zsobol"},
                       "points: one set for every pixel (pattern); hashed per pixel; Owen-scrambled Sobol per pixel "
                       "(Burley 2020); Morton-ordered digit-permuted Sobol (Ahmed and Wonka 2020, pbrt-v4 ZSobol)"),
@@ -131,8 +140,10 @@ void registerMc(Registry& r)
         Param::integer("cosine_warp", 0, 0, 1, Scale::Linear,
                        "domain=solid: warp by the receiver cosine at the corners (Hart et al. 2020)"),
         Param::real("min_solid", 1e-3, 0, 1, Scale::Log,
-                    "domain=solid: area sampling (exact pdf) below this solid angle (sr)", false),
-        Param::real("mis_split", 0.5, 0, 1, Scale::Linear, "domain=mis: share of the N samples that are projected",
+                    "domain=solid, mis_table_solid: area sampling (exact pdf) below this solid angle (sr)", false),
+        Param::real("mis_split", 0.5, 0, 1, Scale::Linear,
+                    "domain=mis, mis_table: share of the N samples that are projected (mis_table_solid: by solid "
+                    "angle)",
                     false),
         Param::choice("denoise", "none", {"none", "gauss16", "atrous"},
                       "image filter after the render, timed with it: the paper's separable 2 x 16 Gaussian, or the "
@@ -168,7 +179,7 @@ void registerMc(Registry& r)
             }
             if (scene.shape == LightShape::Disk) mapToDisk(st);
         }
-        plan.args = mcArgs(st, n, extra, samplingArgs(o, n, extra > 0, seed, scene.res));
+        plan.args = mcArgs(st, n, extra, samplingArgs(o, n, extra > 0, seed, scene.res, &t));
         plan.bind = [o](LaunchContext& c) { bindDenoise(c, o); };
         return plan;
     };

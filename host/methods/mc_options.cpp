@@ -18,6 +18,9 @@ int domainIndex(const std::string& d)
     if (d == "solid") return 1;
     if (d == "projected") return 2;
     if (d == "mis") return 3;
+    if (d == "table") return 4;
+    if (d == "mis_table") return 5;
+    if (d == "mis_table_solid") return 6;
     return 0;
 }
 
@@ -35,7 +38,7 @@ bool McOptions::extended() const { return domain != "area" || sequence != "share
 
 int McOptions::projectedOf(int n) const
 {
-    if (domain != "mis") return domain == "projected" ? n : 0;
+    if (domain != "mis" && domain != "mis_table" && domain != "mis_table_solid") return domain == "projected" ? n : 0;
     return std::clamp(static_cast<int>(std::lround(misSplit * n)), 0, n);
 }
 
@@ -102,11 +105,11 @@ std::string mcSceneDefines(const McOptions& o, const Scene& scene, int n)
     if (o.domain != "area") {
         // The sampled domains take the part of the light above the horizon as
         // a rectangle: exact where the horizon cuts along u (every normalized
-        // scene). Solid angle also works on the whole light (max(0, cos));
-        // projected and mis need the clipped polygon.
+        // scene). Solid angle and table also work on the whole light
+        // (max(0, cos)); projected, mis and mis_table need the clipped polygon.
         if (horizonAlongU(scene))
             d += " -DLB_MC_CLIPV";
-        else if (o.domain != "solid")
+        else if (o.domain != "solid" && o.domain != "table" && o.domain != "mis_table_solid")
             throw InputError(fmt::format("method mc: domain={} needs the receiver normal perpendicular to the "
                                          "light's u axis (as in every normalized scene)",
                                          o.domain));

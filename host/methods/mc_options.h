@@ -12,17 +12,17 @@
 namespace lb::methods {
 
 struct McOptions {
-    std::string domain = "area";  // area | solid | projected | mis
+    std::string domain = "area";  // area | solid | projected | mis | table | mis_table | mis_table_solid
     std::string sequence = "shared";  // shared | random | sobol | zsobol
     std::string pattern = "poisson";  // the shared set (methods/samples.h)
     bool shift = false;  // shared set: per-pixel Cranley-Patterson rotation
     bool cosineWarp = false;  // solid: Hart et al.'s bilinear cosine warp
     double minSolid = 1e-3;  // solid: area sampling below this solid angle (sr)
-    double misSplit = 0.5;  // mis: share of the N samples that are projected
+    double misSplit = 0.5;  // mis, mis_table(_solid): share of the N samples that are projected (solid)
     std::string denoise = "none";  // none | gauss16 | atrous
     // Whether the kernel takes its extended path (anything but today's MCI).
     bool extended() const;
-    // The projected samples of mis out of n.
+    // The projected (mis_table_solid: solid-angle) samples of the mis domains out of n.
     int projectedOf(int n) const;
 };
 
