@@ -14,9 +14,9 @@ namespace lb::methods {
 
 // The defaults `robust` changes (docs/robust.md).
 const std::map<std::string, std::string> kRobustDefaults = {{"area", "gauss3"}};
-// `tuned`: robust with what `lumibench tune experiments/tune-all-cv-geomean.json` recommends (docs/tuning.md).
+// `tuned`: robust with what `lumibench tune experiments/tune-all-cv-geomean-res32.json` recommends (docs/tuning.md).
 const std::map<std::string, std::string> kTunedDefaults = {
-    {"area", "gauss3"}, {"corner_inset", "0.8625"}, {"dyn_weight", "0"}};
+    {"area", "gauss3"}, {"corner_inset", "0.58125"}, {"dyn_weight", "0"}};
 
 namespace {
 
