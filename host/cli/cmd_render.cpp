@@ -39,15 +39,17 @@ Scene sceneFromFlags(double height, const std::string& rotation, const std::stri
     Scene scene;
     scene.height = util::checkRange("--height", height, 0, kMaxSceneLength, "m");
     scene.rotation = util::parseAngle("--rotation", rotation);
-    if (size == "file") return scene;  // sizeFromFile, once the luminaire is read
-    auto x = size.find_first_of("xX");
-    if (x == std::string::npos)
-        throw InputError(fmt::format("--size: expected WxL in metres or 'file', got '{}'", size));
-    scene.width = util::checkRange("--size W", util::parseReal("--size W", size.substr(0, x)), 0, kMaxSceneLength, "m");
-    scene.length =
-        util::checkRange("--size L", util::parseReal("--size L", size.substr(x + 1)), 0, kMaxSceneLength, "m");
-    if (!(scene.width > 0 && scene.length > 0))
-        throw InputError(fmt::format("--size: expected W, L > 0, got '{}'", size));
+    if (size != "file") {  // "file": methods::sizeFromFile, once the luminaire is read
+        auto x = size.find_first_of("xX");
+        if (x == std::string::npos)
+            throw InputError(fmt::format("--size: expected WxL in metres or 'file', got '{}'", size));
+        scene.width =
+            util::checkRange("--size W", util::parseReal("--size W", size.substr(0, x)), 0, kMaxSceneLength, "m");
+        scene.length =
+            util::checkRange("--size L", util::parseReal("--size L", size.substr(x + 1)), 0, kMaxSceneLength, "m");
+        if (!(scene.width > 0 && scene.length > 0))
+            throw InputError(fmt::format("--size: expected W, L > 0, got '{}'", size));
+    }
     scene.extent = util::checkRange("--extent", extent, 0, kMaxSceneLength, "m");
     if (!(scene.extent > 0)) throw InputError(fmt::format("--extent: expected a number > 0, got {}", extent));
     scene.res = util::checkRange("--res", res, 1, kMaxRes);

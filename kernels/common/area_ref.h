@@ -1,7 +1,7 @@
 /* area_ref.h -- the converged area integral of docs/design.md section 1 at one
  * receiver point, by globally adaptive cubature:
  *   E(x) = (1/A) int_light I(d) max(0, n_x . w) / r^2 dA = int_[0,1]^2 f(s, t) ds dt
- * (dA = A ds dt on the rectangle; polar coordinates on the disk, lb_ref_f).
+ * (dA = A ds dt on the rectangle, and on the disk through the concentric map, lb_ref_f).
  * The one implementation behind the reference of the floor
  * (kernels/reference.cl) and the direct light on the walls and ceiling of the
  * indirect scene (kernels/indirect_reference.cl, kernels/indirect.cl's RSM
@@ -36,16 +36,20 @@ typedef struct {
 } lb_ref_ctx;
 
 /* The integrand f(s, t) = I(d) max(0, n_x . w) / r^2 (dA / A = ds dt). On
- * the disk (s, t) are polar, radius s of the rim's and angle 2 pi t, and
- * dA / A = 2 s ds dt. */
+ * the disk (s, t) go through Shirley and Chiu's concentric map, which keeps
+ * areas (dA / A = ds dt) and a compact peak compact: polar coordinates
+ * (dA / A = 2 s ds dt) smear a beam's peak near the centre over every
+ * angle, and square cells then need ~1/h times as many splits (a 150 mm
+ * downlight 0.1 m up spent the whole budget in most pixels). Its derivative
+ * jumps along the square's diagonals: a kink like the table's, refined
+ * the same way. */
 LB_FN real lb_ref_f(__global const float* lum, const lb_ref_ctx* c, real s, real t)
 {
     real3 w;
-    real jac = R(1);
     if (c->L.shape == LB_SHAPE_DISK) {
-        real phi = LB_TWO_PI * t;
-        w = c->o + c->eu * (s * cos(phi)) + c->ev * (s * sin(phi));
-        jac = R(2) * s;
+        real a = s, b = t;
+        lb_mc_concentric(&a, &b); /* area-preserving: dA / A = ds dt still */
+        w = c->o + c->eu * (R(2) * a - R(1)) + c->ev * (R(2) * b - R(1));
     } else {
         w = c->o + c->eu * s + c->ev * t;
     }
@@ -53,7 +57,7 @@ LB_FN real lb_ref_f(__global const float* lum, const lb_ref_ctx* c, real s, real
     real cw = dot(c->nx, w);
     if (!(cw > R(0)) || !(r2 > R(0)))
         return R(0);
-    return jac * lb_intensity_local(lum, lb_to_light_frame(c->L, -w)) * cw / (r2 * sqrt(r2));
+    return lb_intensity_local(lum, lb_to_light_frame(c->L, -w)) * cw / (r2 * sqrt(r2));
 }
 
 /* Tensor 4x4 Gauss-Legendre rule on the cell [s0, s0+h] x [t0, t0+h]. */
