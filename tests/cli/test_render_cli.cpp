@@ -77,5 +77,31 @@ TEST(RenderCli, BadInputExitsWithTwo)
     EXPECT_EQ(r.code, 2);
 }
 
+TEST(RenderCli, ShapeAndSizeFromTheFile)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    LB_REQUIRE_SHARED(shared);
+    const std::string lum = shared + "/luminaires/ieslibrary/007cfb11e343e2f42e3b476be4ab684e.ies";
+    const auto dir = test::freshDir("render-shape");
+    const std::string out = (dir / "d.exr").string();
+    Result r = run("render --luminaire '" + lum +
+                   "' --method cubature --height 0.1 --rotation pi --size file --res 5 "
+                   "--reps 1 --json --out '" +
+                   out + "'");
+    ASSERT_EQ(r.code, 0) << r.err;
+    auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["scene"]["shape"], "disk");  // an 80 mm circle
+    EXPECT_EQ(j["scene"]["width"], 0.08);
+    EXPECT_EQ(j["scene"]["res"], 5);  // --size file keeps the other flags
+    r = run("render --luminaire '" + lum + "' --method point --height 1 --rotation pi --shape oval --out '" + out +
+            "'");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("--shape: expected rect or disk, got 'oval'"), std::string::npos) << r.err;
+    r = run("render --luminaire '" + lum + "' --method voronoi --height 1 --rotation pi --size file --res 4 --out '" +
+            out + "'");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("not shape=disk"), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace lb

@@ -429,3 +429,41 @@ TEST(ReferenceCache, KeyFollowsTheKernelSources)
 
 }  // namespace
 }  // namespace lb
+
+namespace lb {
+namespace {
+
+TEST(ExperimentKeys, ShapeAndSizeFromTheFile)
+{
+    LB_REQUIRE_SHARED(shared);
+    fs::path d = tmpDir("shape");
+    fs::copy_file(shared + "/luminaires/ieslibrary/007cfb11e343e2f42e3b476be4ab684e.ies", d / "round.ies");
+    fs::copy_file(shared + "/luminaires/ieslibrary/02a7562c650498ebb301153dbbf59207.ies", d / "rect.ies");
+    fs::copy_file(shared + "/luminaires/zumtobel/INTRO_60714483.LDT", d / "intro.ldt");
+    json j = tiny(d);
+    j["luminaires"] = {"round.ies", "rect.ies"};
+    j["size"] = "file";
+    auto sc = experiments::scenes(experiments::loadExperiment(writeJson(d / "e.json", j)));
+    ASSERT_EQ(sc.size(), 2u);
+    EXPECT_EQ(sc[0].scene().shape, LightShape::Disk);  // a circle of 80 mm
+    EXPECT_DOUBLE_EQ(sc[0].scene().width, 0.08);
+    EXPECT_EQ(sc[1].scene().shape, LightShape::Rect);  // 0.27 along C0 (W) x 0.24
+    EXPECT_DOUBLE_EQ(sc[1].scene().width, 0.27);
+    EXPECT_DOUBLE_EQ(sc[1].scene().length, 0.24);
+    j["shape"] = "disk";  // wins over the file's
+    sc = experiments::scenes(experiments::loadExperiment(writeJson(d / "e.json", j)));
+    EXPECT_EQ(sc[1].scene().shape, LightShape::Disk);
+    EXPECT_DOUBLE_EQ(sc[1].scene().width, 0.27);
+    const std::string f = (d / "e.json").string();
+    j["shape"] = "oval";
+    EXPECT_EQ(inputErrorOf([&] { experiments::loadExperiment(writeJson(d / "e.json", j)); }),
+              f + ": key \"shape\": shape: expected rect or disk, got 'oval'");
+    j.erase("shape");
+    j["luminaires"] = {"intro.ldt"};  // luminous sides as tall as it is wide: no flat face
+    std::string m = inputErrorOf([&] { experiments::scenes(experiments::loadExperiment(writeJson(d / "e.json", j))); });
+    EXPECT_NE(m.find(f + ": key \"size\""), std::string::npos) << m;
+    EXPECT_NE(m.find("no flat luminous opening"), std::string::npos) << m;
+}
+
+}  // namespace
+}  // namespace lb
