@@ -20,14 +20,18 @@
  *
  * The horizon of the receiver (n_x . r > 0) leaves of the rim one arc; the
  * region it bounds with its chord is what every method integrates
- * (lb_disk_visible_arc). Include after adaptive.h (lb_gl4_*) and dynamic.h. */
+ * (lb_disk_visible_arc). Sines, cosines and atan2 are the polynomial ones
+ * (LB_MC_SINCOS, lb_atan2_poly): PoCL's library calls cost more than all
+ * the rest of a pixel (six sincos: cp 8.1 -> 1.1 ms at 128^2 without them).
+ * Include at the end of lbmath.h. */
 
 #define LB_DISK_FAN 8 /* sectors of the fan over the visible arc (lb_disk_fan) */
 
 /* The rim point at angle phi relative to x. */
 LB_FN real3 lb_disk_rim(lb_light L, real3 x, real phi)
 {
-    return L.c - x + L.u * (R(0.5) * L.w * cos(phi)) + L.v * (R(0.5) * L.l * sin(phi));
+    real c, s = LB_MC_SINCOS(phi, &c);
+    return L.c - x + L.u * (R(0.5) * L.w * c) + L.v * (R(0.5) * L.l * s);
 }
 
 /* The arc of the rim above the horizon of the receiver (x, nx):
@@ -49,8 +53,9 @@ LB_FN lb_disk_view lb_disk_visible_arc(lb_light L, real3 x, real3 nx)
     w.span = LB_TWO_PI;
     w.vis = g0 > rho ? 1 : (g0 <= -rho ? 0 : 2);
     if (w.vis == 2) {
-        real d = acos(clamp(-g0 / rho, R(-1), R(1)));
-        w.phi0 = atan2(b, a) - d;
+        real cd = clamp(-g0 / rho, R(-1), R(1));
+        real d = lb_atan2_poly(sqrt((R(1) - cd) * (R(1) + cd)), cd); /* acos(cd) */
+        w.phi0 = lb_atan2_poly(b, a) - d;
         w.span = R(2) * d;
     }
     return w;
@@ -65,7 +70,7 @@ LB_FN real lb_disk_edge(real3 a, real3 b, real3 nx)
     real ab = dot(a, b);
     if (!(lc > R(0)))
         return R(0);
-    return atan2(lc, ab) * dot(nx, c) / lc;
+    return lb_atan2_poly(lc, ab) * dot(nx, c) / lc;
 }
 
 /* The pixel's arc integrand (the coefficients above) and the rotations of
@@ -94,14 +99,10 @@ LB_FN lb_disk_arcs lb_disk_arcs_at(lb_light L, real3 x, real3 nx, lb_disk_view w
     q.dcc = dot(q.a, q.a);
     q.dss = dot(q.b, q.b);
     q.h = w.span / (real)LB_DISK_FAN;
-    q.c0 = cos(w.phi0);
-    q.s0 = sin(w.phi0);
-    q.cstep = cos(q.h);
-    q.sstep = sin(q.h);
-    q.cn0 = cos(q.h * lb_gl4_x(0));
-    q.sn0 = sin(q.h * lb_gl4_x(0));
-    q.cn1 = cos(q.h * lb_gl4_x(1));
-    q.sn1 = sin(q.h * lb_gl4_x(1));
+    q.s0 = LB_MC_SINCOS(w.phi0, &q.c0);
+    q.sstep = LB_MC_SINCOS(q.h, &q.cstep);
+    q.sn0 = LB_MC_SINCOS(q.h * lb_gl4_x(0), &q.cn0);
+    q.sn1 = LB_MC_SINCOS(q.h * lb_gl4_x(1), &q.cn1);
     return q;
 }
 

@@ -12,7 +12,6 @@
 #include "ggx.h"
 #include "ltc.h"
 #include "adaptive.h"
-#include "disk.h"
 #include "specref.h"
 #include "mc_sample.h"
 #include "mc_table.h"
@@ -23,3 +22,5 @@
 #include "ltc_lanes.inc"
 #include "smc_lanes.inc"
 #include "lanes_end.h"
+/* The disk light: uses the polynomial sin / cos / atan2 above. */
+#include "disk.h"

@@ -82,8 +82,9 @@ LB_FN void lb_mc_concentric(real* u0, real* u1)
         r = b;
         phi = R(0.5) * LB_PI - R(0.25) * LB_PI * (a / b);
     }
-    *u0 = R(0.5) + R(0.5) * r * cos(phi);
-    *u1 = R(0.5) + R(0.5) * r * sin(phi);
+    real c, s = LB_MC_SINCOS(phi, &c);
+    *u0 = R(0.5) + R(0.5) * r * c;
+    *u1 = R(0.5) + R(0.5) * r * s;
 }
 
 /* A 32-bit fraction as a real in [0, 1): 24 bits in float (so that it never
