@@ -41,7 +41,7 @@
  * by host/methods/mc_table.cpp); LB_MC_VAR writes each pixel's variance
  * for the a-trous filter (common/denoise.h, whose kernels this program also
  * holds: the method's post-passes).
- * @variants: "" | "-DLB_LUT" | "-DLB_LUT -DLB_LUT_1D -DLB_NO_HORIZON -DLB_NO_BACK" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_MC_WARP" | "-DLB_MC_EXT -DLB_MC_DOMAIN=3 -DLB_MC_SEQ=3 -DLB_MC_CLIPV -DLB_MC_VAR -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=2 -DLB_MC_SEQ=1 -DLB_MC_SHIFT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=4 -DLB_MC_SEQ=2 -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=5 -DLB_MC_SEQ=1 -DLB_MC_CLIPV" | "-DLB_MC_EXT -DLB_MC_DOMAIN=6 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_SEQ=2 -DLB_MC_DISK"
+ * @variants: "" | "-DLB_LUT" | "-DLB_LUT -DLB_LUT_1D -DLB_NO_HORIZON -DLB_NO_BACK" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_MC_WARP" | "-DLB_MC_EXT -DLB_MC_DOMAIN=3 -DLB_MC_SEQ=3 -DLB_MC_CLIPV -DLB_MC_VAR -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=2 -DLB_MC_SEQ=1 -DLB_MC_SHIFT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=4 -DLB_MC_SEQ=2 -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=5 -DLB_MC_SEQ=1 -DLB_MC_CLIPV" | "-DLB_MC_EXT -DLB_MC_DOMAIN=6 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_SEQ=2 -DLB_MC_DISK" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_MC_VAR -DLB_LUT -DLB_MC_STRAIGHT -DLB_LANES=8" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=0 -DLB_MC_SHIFT -DLB_LUT -DLB_NO_BACK -DLB_MC_STRAIGHT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=0 -DLB_MC_SEQ=1 -DLB_LUT -DLB_MC_STRAIGHT -DLB_LANES=8"
  */
 #include "common/lbmath.h"
 
@@ -171,11 +171,10 @@ LB_FN_INLINE void mc_domain_at(const mc_view* vw, real min_solid, mc_domain* dm)
 {
     real ou = vw->ou, y0 = vw->y0, on = vw->on, w = vw->w, ey = vw->ey;
     dm->q = lb_mc_sphrect_setup(ou, y0, on, w, ey);
-    real3 c0 = R3(ou, y0, on), c1 = R3(ou + w, y0, on), c2 = R3(ou + w, y0 + ey, on), c3 = R3(ou, y0 + ey, on);
-    real omega = fabs(lb_tri_solid_angle(c0, c1, c2) + lb_tri_solid_angle(c0, c2, c3));
+    real omega = dm->q.s; /* the spherical excess, accurate for small ones too */
     /* solid-angle sampling where the solid angle is not tiny; else area
      * sampling of the same rectangle (exact pdf: 1 / its area) */
-    dm->use = omega >= min_solid && dm->q.s > R(0) && fabs(on) > R(0);
+    dm->use = omega >= min_solid && omega > R(0) && fabs(on) > R(0);
     dm->ksolid = dm->use ? omega / (fabs(on) * vw->area) : R(0);
 #if LB_MC_DOMAIN == 6
     dm->omega = omega;
@@ -183,6 +182,7 @@ LB_FN_INLINE void mc_domain_at(const mc_view* vw, real min_solid, mc_domain* dm)
 #endif
 #ifdef LB_MC_WARP
     real au = vw->au, av = vw->av, an0 = vw->an0;
+    real3 c0 = R3(ou, y0, on), c1 = R3(ou + w, y0, on), c2 = R3(ou + w, y0 + ey, on), c3 = R3(ou, y0 + ey, on);
     real nl0 = R(1) / length(c0), nl1 = R(1) / length(c1), nl2 = R(1) / length(c2), nl3 = R(1) / length(c3);
     dm->w00 = fmax(R(0.01), (au * c0.x + av * c0.y + an0) * nl0);
     dm->w10 = fmax(R(0.01), (au * c1.x + av * c1.y + an0) * nl1);
@@ -467,12 +467,12 @@ LB_FN_INLINE bool mc_tile_behind(__global const real* P, int row0)
 /* The work-group's sample count: n, or n + 1 (the set stored after the n
  * points, *st moved there) for the share `extra` of the tiles, spread evenly
  * over the image. */
-LB_FN_INLINE int mc_tile_count(int n, float extra, int row0, int res, __global const real** st)
+LB_FN_INLINE int mc_tile_count(int n, float extra, int row0, int res, int lanes, __global const real** st)
 {
     if (extra > 0.0f) {
         /* tile index, row-major over the whole image (launches come in bands
-         * of rows: row0 counts) */
-        int ls0 = (int)get_local_size(0), ls1 = (int)get_local_size(1);
+         * of rows: row0 counts); a tile is `lanes` times the group's columns wide */
+        int ls0 = (int)get_local_size(0) * lanes, ls1 = (int)get_local_size(1);
         int tile_row = (row0 + (int)(get_group_id(1) * get_local_size(1))) / ls1;
         float g = (float)(tile_row * ((res + ls0 - 1) / ls0) + (int)get_group_id(0));
         if (floor((g + 1.0f) * extra) > floor(g * extra)) {
@@ -483,6 +483,188 @@ LB_FN_INLINE int mc_tile_count(int n, float extra, int row0, int res, __global c
     return n;
 }
 
+#ifdef LB_MC_STRAIGHT
+/* The straight-line form of the extended path (host/methods/family_mc.cpp
+ * picks it): domain area or solid angle (no warp), sequence shared (with
+ * LB_MC_SHIFT), random or sobol, the rectangle light, the trig-free table.
+ * No barrier, no loop but the samples', every branch uniform over the lanes:
+ * eight pixels of a row per work-item in float8 where the host asks for
+ * LB_LANES=8 (CPUs, float), else one. The same sequences, set-up and
+ * estimates as mc_ext (common/mc_lanes.inc holds the sampler for both;
+ * tests/methods/test_mc_straight.cpp holds the form to mc_ext). */
+#if defined(LB_LANES) && LB_LANES == 8 && !defined(LB_DOUBLE)
+#include "common/lanes8.h"
+#include "common/lanes_all.inc"
+#else
+#include "common/lanes1.h"
+#endif
+
+/* The pixels' view of the light, as mc_view, and the solid-angle sampler's
+ * set-up, as mc_domain (domain 1). */
+typedef struct {
+    LB_V ou, ov, on, y0, ey, tv, on2, an0;
+    real au, av, w, l, area;
+#if LB_MC_DOMAIN == 1
+    LB_VFN(lb_mc_sphrect) q;
+    LB_V ksolid;
+    LB_M use;
+#endif
+} LB_VFN(mcs_view);
+
+LB_FN void LB_VFN(mcs_view_at)(__global const real* P, LB_V ou, LB_V ov, LB_V on, real min_solid,
+                               LB_VFN(mcs_view) * vw)
+{
+    real w = P[LB_P_W], l = P[LB_P_L], an;
+    lb_receiver_normal_local(P, &vw->au, &vw->av, &an);
+    vw->ou = ou, vw->ov = ov, vw->on = on, vw->w = w, vw->l = l, vw->area = w * l;
+    LB_V t0 = R(0), t1 = R(1);
+#ifdef LB_MC_CLIPV
+    /* the part above the horizon, as mc_view_at */
+    LB_V num = -(vw->av * ov + an * on);
+    real den = vw->av * l;
+    if (den > R(0))
+        t0 = LB_MC_CLAMP(num / den, R(0), R(1));
+    else if (den < R(0))
+        t1 = LB_MC_CLAMP(num / den, R(0), R(1));
+    else
+        t1 = num > R(0) ? R(0) * t1 : t1;
+#endif
+    LB_V tv = t1 - t0;
+    vw->tv = tv > R(0) ? tv : R(0) * tv;
+    vw->y0 = ov + l * t0, vw->ey = l * vw->tv;
+    vw->on2 = on * on, vw->an0 = an * on;
+#if LB_MC_DOMAIN == 1
+    vw->q = LB_VFN(lb_mc_sphrect_setup)(ou, vw->y0, on, w, vw->ey);
+    LB_V omega = vw->q.s, aon = on < R(0) ? -on : on;
+    /* solid-angle sampling where the solid angle is not tiny; else area
+     * sampling of the same rectangle (exact pdf: 1 / its area), as mc_domain_at */
+    vw->use = omega >= min_solid && omega > R(0) && aon > R(0);
+    vw->ksolid = vw->use ? omega / (aon * vw->area) : R(0) * omega;
+#else
+    (void)min_solid;
+#endif
+}
+
+/* One sample's estimate for the point (u0, u1), as mc_eval (domains 0, 1). */
+LB_FN LB_V LB_VFN(mcs_eval)(__global const float* lum, const LB_VFN(mcs_view) * vw, LB_V u0, LB_V u1)
+{
+#if LB_MC_DOMAIN == 1
+    LB_V sx, sy;
+    LB_VFN(lb_mc_sphrect_sample)(&vw->q, u0, u1, &sx, &sy);
+    LB_V pu = vw->use ? sx : vw->ou + vw->w * u0;
+    LB_V pv = vw->use ? sy : vw->y0 + vw->ey * u1;
+#else
+    LB_V pu = vw->ou + vw->w * u0, pv = vw->ov + vw->l * u1;
+#endif
+    LB_V r2 = pu * pu + pv * pv + vw->on2;
+    LB_V cw = vw->au * pu + vw->av * pv + vw->an0;
+    cw = cw > R(0) ? cw : R(0) * cw;
+    LB_V ri = r2 > R(0) ? R(1) / LB_MC_SQRT(r2) : R(0) * r2;
+    LB_V f = LB_VINTENSITY3(lum, -pu, -pv, -vw->on) * cw;
+#if LB_MC_DOMAIN == 1
+    return f * (vw->use ? vw->ksolid : vw->tv * ri * ri * ri);
+#else
+    return f * (ri * ri * ri);
+#endif
+}
+
+/* The pixels' sequence state (mc_point's, per pixel): the Sobol scrambles,
+ * the random hash, or the shift of the shared set. */
+typedef struct {
+    LB_U k0, k1;
+    LB_V sa, sb;
+} LB_VFN(mcs_seq);
+
+LB_FN LB_VFN(mcs_seq) LB_VFN(mcs_seq_at)(LB_U hp)
+{
+    LB_VFN(mcs_seq) q;
+    LB_U h = LB_VFN(lb_mc_hash)(hp); /* hash(hp ^ salt), salt 0 */
+    q.k0 = h, q.k1 = h;
+#if LB_MC_SEQ == 2
+    q.k0 = LB_VFN(lb_mc_hash)(h ^ 0xa511e9b3U);
+    q.k1 = LB_VFN(lb_mc_hash)(h ^ 0x63d83595U);
+#endif
+    q.sa = R(0) * LB_U_TO_V(h), q.sb = q.sa;
+#if LB_MC_SEQ == 0 && defined(LB_MC_SHIFT)
+    q.sa = LB_VFN(lb_mc_unit)(LB_VFN(lb_mc_hash)(hp ^ 0x2545f491U));
+    q.sb = LB_VFN(lb_mc_unit)(LB_VFN(lb_mc_hash)(hp ^ 0x9e3779b9U));
+#endif
+    return q;
+}
+
+/* Point j of the pixels' sequences, as mc_point. */
+LB_FN void LB_VFN(mcs_point)(__global const real* st, const LB_VFN(mcs_seq) * q, int j, LB_V* u0, LB_V* u1)
+{
+#if LB_MC_SEQ == 0
+    LB_V a = st[2 * j] + q->sa, b = st[2 * j + 1] + q->sb;
+    *u0 = a >= R(1) ? a - R(1) : a;
+    *u1 = b >= R(1) ? b - R(1) : b;
+#elif LB_MC_SEQ == 1
+    lb_u32 hj0 = lb_mc_hash(2U * (lb_u32)j), hj1 = lb_mc_hash(2U * (lb_u32)j + 1U);
+    *u0 = LB_VFN(lb_mc_unit)(LB_VFN(lb_mc_hash)(q->k0 ^ hj0));
+    *u1 = LB_VFN(lb_mc_unit)(LB_VFN(lb_mc_hash)(q->k0 ^ hj1));
+#else
+    *u0 = LB_VFN(lb_mc_unit)(LB_VFN(lb_mc_owen)((LB_U)(lb_mc_sobol0((lb_u32)j)), q->k0));
+    *u1 = LB_VFN(lb_mc_unit)(LB_VFN(lb_mc_owen)((LB_U)(lb_mc_sobol1((lb_u32)j)), q->k1));
+#endif
+}
+
+LB_FN void LB_VFN(mcs_store)(__global real* out, int i, int left, LB_V e)
+{
+#if LB_NLANES == 8
+    lb_store_x8(out, i, left, e);
+#else
+    (void)left;
+    out[i] = e;
+#endif
+}
+
+__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
+                     __global const real* st, int n, float extra, int seed, int np, int lg, real min_solid,
+                     __global real* var, __global const float* tab)
+{
+    (void)np, (void)lg, (void)tab, (void)var;
+    int col0, row, res;
+    LB_V ou, ov, on;
+    real au, av, an;
+    if (!LB_VFN(lb_work_item_pixels)(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
+        return;
+    int m = mc_tile_count(n, extra, row0, res, LB_NLANES, &st);
+    LB_V sum = R(0) * ou, d1 = sum, d2 = sum;
+#ifdef LB_NO_BACK
+    /* every pixel on or behind the light's plane: no light (mc_tile_behind) */
+    if (LB_ANY(on < R(0))) {
+#else
+    {
+#endif
+        LB_VFN(mcs_view) vw;
+        LB_VFN(mcs_view_at)(P, ou, ov, on, min_solid, &vw);
+        LB_U col = LB_TO_U(LB_TO_I(LB_LANE_INDEX) + col0);
+        LB_U hp = LB_VFN(lb_mc_hash)(lb_mc_hash((lb_u32)seed * 0x9e3779b9U + 0x632be5abU) ^
+                                     ((lb_u32)(row * res) + col));
+        LB_VFN(mcs_seq) q = LB_VFN(mcs_seq_at)(hp);
+        /* the variance from the samples' offsets to the first one, as mc_ext */
+        LB_V e0 = sum;
+        for (int i = 0; i < m; ++i) {
+            LB_V u0, u1;
+            LB_VFN(mcs_point)(st, &q, i, &u0, &u1);
+            LB_V e = LB_VFN(mcs_eval)(lum, &vw, u0, u1);
+            sum += e;
+            e0 = i == 0 ? e : e0;
+            d1 += e - e0;
+            d2 += (e - e0) * (e - e0);
+        }
+    }
+    LB_VFN(mcs_store)(out, row * res + col0, res - col0, sum / (real)m);
+#ifdef LB_MC_VAR
+    LB_V ev = d2 - d1 * d1 / (real)m;
+    ev = ev > R(0) ? ev : R(0) * ev;
+    LB_VFN(mcs_store)(var, row * res + col0, res - col0, m > 1 ? ev / ((real)m * (real)(m - 1)) : R(0) * ev);
+#endif
+}
+#include "common/lanes_end.h"
+
+#else
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
                      __global const real* st, int n, float extra, int seed, int np, int lg, real min_solid,
                      __global real* var, __global const float* tab)
@@ -512,7 +694,7 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     }
 #endif
     /* Receiver cosine (unnormalised): n_x . w = au (ou + W s) + av (ov + L t) + an on. */
-    int m = mc_tile_count(n, extra, row0, res, &st);
+    int m = mc_tile_count(n, extra, row0, res, 1, &st);
     real au, av, an;
     lb_receiver_normal_local(P, &au, &av, &an);
 #ifdef LB_MC_EXT
@@ -556,5 +738,6 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     if (inside)
         out[row * res + col] = sum / (real)m;
 }
+#endif /* LB_MC_STRAIGHT */
 
 #include "common/denoise.h"

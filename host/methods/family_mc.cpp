@@ -159,16 +159,20 @@ void registerMc(Registry& r)
     };
     f.validate = validateMc;
     f.args = kMcArgs;
-    f.plan = [](const MethodSpec& s, const Scene& scene, const photometry::Table& t, const ocl::DeviceInfo&,
-                Precision) {
+    f.plan = [](const MethodSpec& s, const Scene& scene, const photometry::Table& t, const ocl::DeviceInfo& dev,
+                Precision p) {
         const McOptions o = mcOptions(s);
         const int n = static_cast<int>(s.integer("n"));
         const double extra = s.num("extra");
         const auto seed = static_cast<std::uint64_t>(s.integer("seed"));
+        const bool lut = s.str("lookup") == "lut", specialize = s.str("specialize") == "auto";
         Plan plan;
-        plan.defines = mcDefines(o) +
-            analyse(scene, t, s.str("lookup") == "lut", s.str("specialize") == "auto").defines() +
-            mcSceneDefines(o, scene, n);
+        plan.defines = mcDefines(o) + analyse(scene, t, lut, specialize).defines() + mcSceneDefines(o, scene, n);
+        if (mcStraight(o, scene, lut, specialize)) {
+            // the straight-line form: eight pixels per work-item in float on CPUs
+            plan.defines += " -DLB_MC_STRAIGHT";
+            plan.lanes = p == Precision::Double ? 1 : lanesFor("auto", dev.type);
+        }
         plan.lum = [s, &t] { return lookupBuffer(s, t); };
         std::vector<double> st;
         if (o.sequence == "shared") {

@@ -91,6 +91,12 @@ std::string mcDefines(const McOptions& o)
     return d;
 }
 
+bool mcStraight(const McOptions& o, const Scene& scene, bool lut, bool specialize)
+{
+    const bool domain = o.domain == "area" || (o.domain == "solid" && !o.cosineWarp);
+    return o.extended() && domain && o.sequence != "zsobol" && scene.shape == LightShape::Rect && lut && specialize;
+}
+
 int mcLog2(int samples)
 {
     int lg = 0;

@@ -38,6 +38,11 @@ std::string mcDefines(const McOptions& o);
 // needs it and the scene has no such clip, or zsobol's index would not fit.
 std::string mcSceneDefines(const McOptions& o, const Scene& scene, int n);
 
+// Whether the extended path runs in its straight-line form (kernels/mc.cl,
+// LB_MC_STRAIGHT): domain area or solid angle without the warp, a sequence
+// other than zsobol, the rectangle, the trig-free table, specialize=auto.
+bool mcStraight(const McOptions& o, const Scene& scene, bool lut, bool specialize);
+
 // log2 of the samples per pixel, rounded up (zsobol's digit count, sobol's bits).
 int mcLog2(int samples);
 

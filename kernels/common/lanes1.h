@@ -11,7 +11,8 @@
  *             packed into 2-wide vectors; explicit float8 does not depend on it.
  * Macros: LB_V value, LB_I integer, LB_M comparison result (bool / int8: both
  * work with ?:, && and ||), LB_VFN(name), LB_TO_I / LB_TO_V conversions
- * (float -> int truncates, as (int)), LB_GATHER(p, i) = p[i] per lane, and
+ * (float -> int truncates, as (int)), LB_U the unsigned 32-bit integer with
+ * LB_TO_U (from LB_I) and LB_U_TO_V (to the value type), LB_GATHER(p, i) = p[i] per lane, and
  * LB_VINTENSITY3(lum, x, y, z) the intensity lookup of the lane type,
  * LB_NLANES the pixels per call and LB_LANE_INDEX their column offsets,
  * LB_ANY(m) whether any lane's m holds (a branch uniform over the lanes).
@@ -22,6 +23,9 @@
 #define LB_VFN(name) name
 #define LB_TO_I(x) ((int)(x))
 #define LB_TO_V(x) ((real)(x))
+#define LB_U lb_u32
+#define LB_TO_U(x) ((lb_u32)(x))
+#define LB_U_TO_V(x) ((real)(x))
 #define LB_GATHER(p, i) ((real)(p)[(i)])
 #define LB_VINTENSITY3(lum, x, y, z) LB_INTENSITY3((lum), (x), (y), (z))
 #define LB_NLANES 1

@@ -7,6 +7,9 @@
 #define LB_VFN(name) name##_x8
 #define LB_TO_I(x) convert_int8(x)
 #define LB_TO_V(x) convert_float8(x)
+#define LB_U uint8
+#define LB_TO_U(x) as_uint8(x)
+#define LB_U_TO_V(x) convert_float8(x)
 #define LB_GATHER(p, i)                                                                                        \
     ((float8)((p)[(i).s0], (p)[(i).s1], (p)[(i).s2], (p)[(i).s3], (p)[(i).s4], (p)[(i).s5], (p)[(i).s6],    \
               (p)[(i).s7]))

@@ -5,6 +5,9 @@
 #undef LB_VFN
 #undef LB_TO_I
 #undef LB_TO_V
+#undef LB_U
+#undef LB_TO_U
+#undef LB_U_TO_V
 #undef LB_GATHER
 #undef LB_VINTENSITY3
 #undef LB_NLANES

@@ -18,33 +18,6 @@ typedef unsigned int lb_u32;
  * area sampling with them); a few ulp are far below the estimators' noise. */
 #define LB_MC_CLAMP(x, lo, hi) ((x) < (lo) ? (lo) : ((x) > (hi) ? (hi) : (x)))
 
-/* sin and cos of x (|x| < 2^20) in plain float arithmetic: x reduced by the
- * nearest multiple q of pi/2 (two-constant Cody-Waite), Cephes' minimax
- * polynomials of sinf / cosf on [-pi/4, pi/4], the quadrant q mod 4 by
- * selects. Within 2e-7 of the double-precision values (host test). Even
- * native_sin / native_cos are calls into PoCL's library, which stop the loop
- * vectoriser; these are not. */
-LB_FN real lb_mc_sincos_poly(real x, real* c)
-{
-    real qf = x * R(0.63661977236758134);
-    qf = qf >= R(0) ? qf + R(0.5) : qf - R(0.5);
-    int q = (int)qf;
-    real fq = (real)q;
-    real r = (x - fq * R(1.5703125)) - fq * R(4.837512969970703125e-4);
-    r -= fq * R(7.5497899548918821e-8);
-    real r2 = r * r;
-    real sp = r + r * r2 * (R(-1.6666654611e-1) + r2 * (R(8.3321608736e-3) + r2 * R(-1.9515295891e-4)));
-    real cp = R(1) - R(0.5) * r2 + r2 * r2 * (R(4.166664568298827e-2) + r2 * (R(-1.388731625493765e-3) +
-                                                                              r2 * R(2.443315711809948e-5)));
-    int j = q & 3;
-    real s = (j & 1) ? cp : sp;
-    real co = (j & 1) ? sp : cp;
-    s = (j & 2) ? -s : s;
-    co = ((j + 1) & 2) ? -co : co;
-    *c = co;
-    return s;
-}
-
 #if defined(__OPENCL_C_VERSION__) && !LB_REAL_IS_DOUBLE
 #define LB_MC_SQRT(x) native_sqrt(x)
 #define LB_MC_SINCOS(x, c) lb_mc_sincos_poly(x, c)
@@ -55,16 +28,9 @@ LB_FN real lb_mc_sincos_poly(real x, real* c)
 
 /* ---- integer hashing and sequences ---------------------------------------- */
 
-/* 32-bit integer hash (Wellons' "lowbias32": full avalanche, bijective). */
-LB_FN lb_u32 lb_mc_hash(lb_u32 x)
-{
-    x ^= x >> 16;
-    x *= 0x7feb352dU;
-    x ^= x >> 15;
-    x *= 0x846ca68bU;
-    x ^= x >> 16;
-    return x;
-}
+#include "lanes1.h" /* the lane-generic integer and trig helpers, one pixel */
+#include "mc_lanes.inc"
+#include "lanes_end.h"
 
 /* (u0, u1) uniform in [0,1]^2 to a point uniform on the disk inscribed in
  * [0,1]^2, in place: Shirley and Chiu's (1997) concentric map, continuous
@@ -85,40 +51,6 @@ LB_FN void lb_mc_concentric(real* u0, real* u1)
     real c, s = LB_MC_SINCOS(phi, &c);
     *u0 = R(0.5) + R(0.5) * r * c;
     *u1 = R(0.5) + R(0.5) * r * s;
-}
-
-/* A 32-bit fraction as a real in [0, 1): 24 bits in float (so that it never
- * rounds up to 1), 32 in double. */
-LB_FN real lb_mc_unit(lb_u32 x)
-{
-#if LB_REAL_IS_DOUBLE
-    return (real)x * R(2.3283064365386962890625e-10);
-#else
-    return (real)(x >> 8) * R(5.9604644775390625e-8);
-#endif
-}
-
-LB_FN lb_u32 lb_mc_reverse(lb_u32 x)
-{
-    x = ((x >> 1) & 0x55555555U) | ((x & 0x55555555U) << 1);
-    x = ((x >> 2) & 0x33333333U) | ((x & 0x33333333U) << 2);
-    x = ((x >> 4) & 0x0f0f0f0fU) | ((x & 0x0f0f0f0fU) << 4);
-    x = ((x >> 8) & 0x00ff00ffU) | ((x & 0x00ff00ffU) << 8);
-    return (x >> 16) | (x << 16);
-}
-
-/* Nested uniform (Owen) scramble of a 32-bit fraction x: Laine and Karras'
- * permutation on the reversed bits, with Burley's (2020) constants: bit k of
- * the result flips by a hash of the bits above it and of the seed. */
-LB_FN lb_u32 lb_mc_owen(lb_u32 x, lb_u32 seed)
-{
-    x = lb_mc_reverse(x);
-    x += seed;
-    x ^= x * 0x6c50b47cU;
-    x ^= x * 0xb82f1e52U;
-    x ^= x * 0xc7afe638U;
-    x ^= x * 0x8d22f6e6U;
-    return lb_mc_reverse(x);
 }
 
 /* Sobol's first two dimensions of index i as 32-bit fractions (natural
@@ -201,69 +133,7 @@ LB_FN lb_u32 lb_mc_zsobol_index(int col, int row, lb_u32 i, int lg, int digits, 
     return idx;
 }
 
-/* ---- solid angle: spherical rectangles (Urena, Fajardo and King 2013) ---- */
-
-/* The rectangle [x0, x0 + ex] x [y0, y0 + ey] at height z0 (light frame, the
- * receiver at the origin) seen as a spherical rectangle: the set-up of its
- * solid-angle sampler. Sign of z0 does not matter (the sampler works at
- * -|z0|, the caller keeps its own sign). */
-typedef struct {
-    real x0, x1, y0, y1, z0;
-    real b0, b1, k, s; /* s: the solid angle as the sampler sees it (g0 + g1 - k) */
-} lb_mc_sphrect;
-
-LB_FN real lb_mc_acos(real c)
-{
-    return acos(clamp(c, R(-1), R(1)));
-}
-
-LB_FN lb_mc_sphrect lb_mc_sphrect_setup(real x0, real y0, real z0, real ex, real ey)
-{
-    lb_mc_sphrect q;
-    real z = -fabs(z0);
-    q.x0 = x0;
-    q.x1 = x0 + ex;
-    q.y0 = y0;
-    q.y1 = y0 + ey;
-    q.z0 = z;
-    /* The edges' plane normals for this axis-aligned rectangle (the cross
-     * products of its corner directions, up to positive factors):
-     * n0 ~ (0, z, -y0), n1 ~ (-z, 0, x1), n2 ~ (0, -z, y1), n3 ~ (z, 0, -x0). */
-    real z2 = z * z;
-    real l0 = sqrt(z2 + q.y0 * q.y0), l1 = sqrt(z2 + q.x1 * q.x1);
-    real l2 = sqrt(z2 + q.y1 * q.y1), l3 = sqrt(z2 + q.x0 * q.x0);
-    /* interior angles g_i = angle(-n_i, n_{i+1}) */
-    real g0 = lb_mc_acos(q.y0 * q.x1 / (l0 * l1));
-    real g1 = lb_mc_acos(-q.x1 * q.y1 / (l1 * l2));
-    real g2 = lb_mc_acos(q.y1 * q.x0 / (l2 * l3));
-    real g3 = lb_mc_acos(-q.x0 * q.y0 / (l3 * l0));
-    q.b0 = -q.y0 / l0;
-    q.b1 = q.y1 / l2;
-    q.k = LB_TWO_PI - g2 - g3;
-    q.s = g0 + g1 - q.k;
-    return q;
-}
-
-/* The point (x, y) of the rectangle (at height z0) for (u0, u1) in [0,1)^2;
- * the directions to the points are uniform in solid angle. */
-LB_FN void lb_mc_sphrect_sample(const lb_mc_sphrect* q, real u0, real u1, real* x, real* y)
-{
-    real au = u0 * q->s + q->k;
-    real ca, sa = LB_MC_SINCOS(au, &ca);
-    real fu = (ca * q->b0 - q->b1) / sa;
-    real cu = (fu >= R(0) ? R(1) : R(-1)) / LB_MC_SQRT(fu * fu + q->b0 * q->b0);
-    cu = LB_MC_CLAMP(cu, R(-0.99999994), R(0.99999994));
-    real c2 = R(1) - cu * cu;
-    real xu = -(cu * q->z0) / LB_MC_SQRT(c2 > R(0) ? c2 : R(0));
-    xu = LB_MC_CLAMP(xu, q->x0, q->x1);
-    real d2 = xu * xu + q->z0 * q->z0;
-    real h0 = q->y0 / LB_MC_SQRT(d2 + q->y0 * q->y0);
-    real h1 = q->y1 / LB_MC_SQRT(d2 + q->y1 * q->y1);
-    real hv = h0 + u1 * (h1 - h0), hv2 = hv * hv;
-    real yv = hv2 < R(1) - R(1e-6) ? hv * LB_MC_SQRT(d2) / LB_MC_SQRT(R(1) - hv2) : q->y1;
-    *x = xu;
-    *y = LB_MC_CLAMP(yv, q->y0, q->y1);
-}
+/* ---- solid angle: spherical rectangles: common/mc_lanes.inc ---- */
 
 /* ---- the bilinear warp (Hart, Pharr, Mueller, Lopes, McGuire, Shirley 2020) */
 

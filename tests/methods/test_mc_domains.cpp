@@ -12,6 +12,7 @@
 #include "methods/render_helpers.h"
 #include "photometry/load.h"
 #include "photometry/table.h"
+#include "test_tables.h"
 #include "testutil.h"
 #include "util/error.h"
 
@@ -28,18 +29,7 @@ using methods::Precision;
 using test::run;
 using test::scene;
 
-// Emits into both hemispheres, with azimuthal structure and kinks on a
-// 10-degree grid (so no sampler is exact on it).
-photometry::Table lumpy()
-{
-    const double d = M_PI / 180;
-    return photometry::tabulate(
-        [&](double c, double g) {
-            double cg = std::cos(g * d);
-            return 300 * cg * cg * (g < 90 ? 1.0 : 0.2) + 200 * std::sin(g * d) * (1 + 0.5 * std::cos(c * d)) + 20;
-        },
-        37, 19);
-}
+using methods::test_tables::lumpy;
 
 struct SeedStats {
     double z2 = 0;  // mean over pixels of ((mean - ref) / (sd / sqrt(R)))^2

@@ -1,5 +1,5 @@
-// test_tables.h -- two synthetic luminaires the specialisation tests share,
-// and their scenes.
+// test_tables.h -- synthetic luminaires the specialisation and Monte Carlo
+// tests share, and their scenes.
 #pragma once
 
 #include "photometry/load.h"
@@ -20,6 +20,19 @@ inline photometry::Table asymmetric()
 {
     return photometry::tabulate(
         [](double c, double g) { return 100 + 80 * std::cos(c * M_PI / 180) * std::sin(g * M_PI / 180) + g; }, 25, 37);
+}
+
+// Emits into both hemispheres, with azimuthal structure and kinks on a
+// 10-degree grid (so no sampler is exact on it).
+inline photometry::Table lumpy()
+{
+    const double d = M_PI / 180;
+    return photometry::tabulate(
+        [&](double c, double g) {
+            double cg = std::cos(g * d);
+            return 300 * cg * cg * (g < 90 ? 1.0 : 0.2) + 200 * std::sin(g * d) * (1 + 0.5 * std::cos(c * d)) + 20;
+        },
+        37, 19);
 }
 
 // A scene of `kind` with the light at height h and rotation rot, res pixels per side.
