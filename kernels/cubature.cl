@@ -34,6 +34,8 @@
  *   LB_LUT            trig-free intensity table (common/lut.h), `lum` is the LUT
  *   LB_CUB_DISK       the disk light (common/disk.h): the fan around the closest point with
  *                     exact sector form factors; with LB_CUB_AREA the polar Gauss rule
+ *   LB_CUB_DISK_STRAIGHT with LB_CUB_DISK: the same in straight-line form
+ *                     (common/disk_lanes.inc), one pixel or with LB_LANES=8 eight
  *   LB_CUB_AREA=n     blend in the area form by the n x n Gauss-Legendre rule (n = 2, 3;
  *                     common/cubature/clip_blend.inc lb_area_gauss_rect), in every form
  * Continuous tunables (kernel arguments, common/cubature.h LB_CUB_TUNABLES, one
@@ -46,7 +48,8 @@
  *
  * @variants: registry (host/methods/specialize.h cubatureVariants: the general
  * kernel's structures, and each straight-line form of the host's form table with and
- * without the LUT, eight lanes, LB_CUB_BLEND, LB_CUB_RECT_CLIP and LB_CUB_AREA)
+ * without the LUT, eight lanes, LB_CUB_BLEND, LB_CUB_RECT_CLIP and LB_CUB_AREA; the disk's
+ * general kernel and its straight-line form in one and eight lanes, with LB_CUB_AREA)
  */
 #include "common/lbmath.h"
 
@@ -100,7 +103,7 @@
 #define CUB_CLIP() (void)0
 #endif
 
-#if defined(LB_CUB_FORM)
+#if defined(LB_CUB_FORM) || defined(LB_CUB_DISK_STRAIGHT)
 #if defined(LB_LANES) && LB_LANES == 8 && !defined(LB_DOUBLE)
 /* Eight pixels of a row per work-item in float8 (common/lanes8.h): the host
  * launches ceil(N / 8) work-items per row. Float only: a double build ignores
@@ -112,6 +115,9 @@
 /* One pixel per work-item (GPUs, double, the exact lookup). */
 #include "common/lanes1.h"
 #define CUB_FORM LB_CUB_FORM
+#endif
+#ifdef LB_CUB_DISK_STRAIGHT
+#include "common/disk_lanes.inc"
 #endif
 
 /* The pixels' results: e, and with want_stats the (triangles, flips) pairs. */
@@ -139,6 +145,37 @@ LB_FN void LB_VFN(cub_store)(__global real* out, __global int* stats, int want_s
 #endif
 }
 
+#ifdef LB_CUB_DISK_STRAIGHT
+/* The disk's straight-line form (common/disk_lanes.inc): the same method as
+ * the one-pixel disk kernel below, with fixed sectors and nodes for every
+ * lane; where every lane takes the area form alone the fan is not run. */
+CUB_KERNEL
+{
+    CUB_PROLOGUE
+    (void)opt;
+    int col0, row, res;
+    LB_V ou, ov, on;
+    real au, av, an;
+    if (!LB_VFN(lb_work_item_pixels)(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
+        return;
+    LB_VFN(lb_dsl_pixel) px = LB_VFN(lb_dsl_pixel_at)(P[LB_P_W], P[LB_P_L], ou, ov, on, au, av, an);
+    LB_V e = R(0), ta = R(0);
+#ifdef LB_CUB_AREA
+    ta = LB_VFN(lb_dsl_area_weight)(&px, tun.area_q, tun.area_sin);
+#endif
+    if (LB_ANY(ta < R(1)))
+        e = LB_VFN(lb_dsl_irradiance)(lum, &px);
+    e = ta < R(1) ? e : R(0);
+#ifdef LB_CUB_AREA
+    if (LB_ANY(ta > R(0))) {
+        LB_V g = LB_VFN(lb_dsl_area_gauss)(lum, &px, LB_CUB_AREA);
+        e = ta > R(0) ? (R(1) - ta) * e + ta * g : e;
+    }
+#endif
+    LB_I nt = ta < R(1) ? (LB_I)(LB_DISK_FAN) : (LB_I)(0);
+    LB_VFN(cub_store)(out, stats, want_stats, row * res + col0, res - col0, e, nt, (LB_I)(0));
+}
+#else
 /* The scene needs no clip (or, with LB_CUB_RECT_CLIP, one along the u
  * edges): without LB_CUB_RECT_CLIP horizon_eps is unused, the host chose
  * the form because it clips nothing. */
@@ -189,11 +226,12 @@ CUB_KERNEL
 #endif
     LB_VFN(cub_store)(out, stats, want_stats, row * res + col0, res - col0, e, nt, nf);
 }
+#endif
 #include "common/lanes_end.h"
 #elif defined(LB_CUB_DISK)
-/* The disk (LB_SHAPE_DISK): the fan of common/disk.h around the closest
- * point, and with LB_CUB_AREA = n the polar Gauss rule of the area form
- * blended in by lb_disk_area_weight. The rectangle's structural options and
+/* The disk (LB_SHAPE_DISK), the general kernel: the fan of common/disk.h
+ * around the closest point, and with LB_CUB_AREA = n the polar Gauss rule
+ * of the area form blended in by lb_disk_area_weight. The rectangle's structural options and
  * corner tunables have no meaning here (the host refuses them). */
 CUB_KERNEL
 {

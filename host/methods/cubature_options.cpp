@@ -69,7 +69,8 @@ const std::vector<Param>& cubatureParams()
             "already pure grid MC and the objective is flat"),
         lookupParam("lut", "intensity lookup: trig-free table (photometry/lut.h, as mc) or the exact bilinear one"),
         specializeParam("auto: smallest kernel for the scene (methods/specialize.h: the straight-line fan, or "
-                        "Delaunay over cp+barycentre, of an unclipped rectangle; 1D table); none: the general one"),
+                        "Delaunay over cp+barycentre, of an unclipped rectangle; the disk's straight-line fan; 1D "
+                        "table); none: the general one"),
         lanesParam("pixels per work-item of the straight-line forms (float, lut): 8 = float8 code, "
                    "auto = 8 on CPU devices (PoCL), 1 elsewhere"),
         Param::choice("area", "none", {"none", "gauss2", "gauss3"},

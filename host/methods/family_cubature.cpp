@@ -3,6 +3,7 @@
 #include "methods/cubature_options.h"
 #include "methods/registry.h"
 #include "methods/specialize.h"
+#include "methods/straight.h"
 #include "photometry/lut.h"
 #include "util/error.h"
 
@@ -87,11 +88,14 @@ Plan cubaturePlan(const MethodSpec& s, const Scene& scene, const photometry::Tab
     const Specialization sp = analyseCubature(scene, t, o);
     Plan plan;
     plan.defines = o.defines() + sp.defines();
+    plan.lanes = cubatureLanes(sp, o, dev.type, p == Precision::Double);
     if (scene.shape == LightShape::Disk) {
         checkDiskOptions(s, o);
         plan.defines += " -DLB_CUB_DISK";
+        // specialize=auto: the straight-line form, eight lanes as the rectangle's forms (float, LUT)
+        if (o.specialize) plan.defines += std::string(" ") + kDiskStraightDefine;
+        plan.lanes = o.specialize && o.lut && p != Precision::Double ? lanesFor(o.lanes, dev.type) : 1;
     }
-    plan.lanes = cubatureLanes(sp, o, dev.type, p == Precision::Double);
     plan.lum = [lut = o.lut, &t] { return lut ? photometry::buildLut(t).packed : t.packed(); };
     // per pixel of the whole image: triangles and flips (cubatureStats)
     PlanArg stats{"stats", PlanArg::Kind::OutputInts};

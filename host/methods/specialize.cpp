@@ -155,6 +155,7 @@ std::vector<std::string> cubatureFormDefines()
 {
     std::vector<std::string> d;
     for (const auto& f : cubatureForms()) d.push_back(f.name.define);
+    d.push_back(kDiskStraightDefine);
     return d;
 }
 
@@ -278,6 +279,14 @@ std::vector<std::string> cubatureVariants()
     v.back() += " -DLB_CUB_DISK";
     add("area=gauss3", "", {}, false);
     v.back() += " -DLB_CUB_DISK";
+    // and its straight-line form (kernels/common/disk_lanes.inc) in one and eight lanes
+    const std::string straight = std::string(" -DLB_CUB_DISK ") + kDiskStraightDefine;
+    add("", "", {}, false);
+    v.back() += straight;
+    add("area=gauss2", "", {Rule::Lut}, true);
+    v.back() += straight;
+    add("area=gauss3", "", {Rule::Lut}, true);
+    v.back() += straight;
     return v;
 }
 

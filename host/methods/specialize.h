@@ -88,7 +88,11 @@ struct CubatureForm {
 };
 const std::vector<CubatureForm>& cubatureForms();
 
-// The defines of the cubature's straight-line forms (Family::straightDefines).
+// The disk's straight-line form (kernels/common/disk_lanes.inc), with -DLB_CUB_DISK:
+// the cubature on a disk with fixed sectors and nodes, one or eight pixels per work-item.
+inline constexpr const char* kDiskStraightDefine = "-DLB_CUB_DISK_STRAIGHT";
+
+// The defines of the cubature's straight-line forms and the disk's (Family::straightDefines).
 std::vector<std::string> cubatureFormDefines();
 
 // The program options the cubature kernel must build with (the `@variants`
