@@ -8,9 +8,10 @@
  * lb_atrous: one level of the edge-avoiding a-trous wavelet filter (Dammertz,
  *   Sewtz, Hanika and Lensch 2010), as SVGF runs it: the 5 x 5 B3-spline
  *   kernel at taps `step` pixels apart, each tap weighted by
- *   exp(-|c_p - c_q| / (sigma_l sqrt(var_p) + eps)) with var_p the pixel's
- *   variance of its MC estimate (mc.cl, LB_MC_VAR); the variance is filtered
- *   with the squared weights for the next level. On the flat receiver there
+ *   exp(-|c_p - c_q| / (sigma_l sqrt(var_p) + eps)) with var_p the 3 x 3
+ *   Gaussian of the pixels' variances of their MC estimates (mc.cl,
+ *   LB_MC_VAR), as SVGF prefilters it; the variance is filtered with the
+ *   squared weights for the next level. On the flat receiver there
  *   are no normal or depth edges: the luminance weight is the only stop. */
 
 LB_FN int lb_dn_inside(int c, int r, int res)
@@ -43,7 +44,19 @@ __kernel void lb_atrous(__global const real* in, __global const real* var, __glo
         return;
     const real h[3] = {R(0.375), R(0.25), R(0.0625)};
     real cp = in[r * res + c];
-    real scale = sigma_l * sqrt(fmax(var[r * res + c], R(0))) + R(1e-10) * fabs(cp) + R(1e-30);
+    /* the edge stop's variance: SVGF's 3 x 3 Gaussian of the pixel's
+     * neighbourhood, so that two neighbours see about the same scale (a
+     * pixel's own 2-sample variance grows with its bright outliers) */
+    real vb = R(0), wb = R(0);
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+            int cc = c + dx, rr = r + dy;
+            real k = (dx == 0 ? R(0.5) : R(0.25)) * (dy == 0 ? R(0.5) : R(0.25));
+            bool in_ = lb_dn_inside(cc, rr, res);
+            vb += in_ ? k * var[in_ ? rr * res + cc : r * res + c] : R(0);
+            wb += in_ ? k : R(0);
+        }
+    real scale = sigma_l * sqrt(fmax(vb / wb, R(0))) + R(1e-10) * fabs(cp) + R(1e-30);
     real s = R(0), ws = R(0), vs = R(0);
     for (int dy = -2; dy <= 2; ++dy)
         for (int dx = -2; dx <= 2; ++dx) {
