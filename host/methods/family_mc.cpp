@@ -177,7 +177,9 @@ void registerMc(Registry& r)
                 auto more = samplePoints(o.pattern, n + 1, seed);
                 st.insert(st.end(), more.begin(), more.end());
             }
-            if (scene.shape == LightShape::Disk) mapToDisk(st);
+            // area samples of a disk: the set mapped onto it (solid angle maps
+            // the unit square itself, common/disk_sample.h)
+            if (scene.shape == LightShape::Disk && o.domain == "area") mapToDisk(st);
         }
         plan.args = mcArgs(st, n, extra, samplingArgs(o, n, extra > 0, seed, scene.res, &t));
         plan.bind = [o](LaunchContext& c) { bindDenoise(c, o); };

@@ -212,8 +212,9 @@ TEST(DiskMethods, WhatADiskCannotTakeIsRefusedClearly)
         EXPECT_NE(m.find(part), std::string::npos) << spec << ": " << m;
     };
     refused("voronoi", "not shape=disk");
-    refused("mc:domain=solid", "only domain=area");
-    refused("mc:shift=1", "only domain=area");
+    refused("mc:domain=projected", "domain=area (without shift) or domain=solid");
+    refused("mc:shift=1", "domain=area (without shift) or domain=solid");
+    refused("mc:domain=solid,cosine_warp=1", "without cosine_warp");
     refused("cubature:triangulation=delaunay,dynamic=cp+barycentre", "triangulation, dynamic");
     refused("robust:corner_inset=0.5", "corner_inset");
     Scene spec = sc;
