@@ -43,7 +43,7 @@ typedef struct {
 
 /* The ray at t (cos, sin = ct, st): its unit direction (ex, ey) in the
  * plane, w at its entry and exit (w1 <= w2); returns G(t). */
-LB_FN real lb_mc_sphdisk_ray(const lb_mc_sphdisk* q, real ct, real st, real* ex, real* ey, real* w1, real* w2)
+LB_FN_INLINE real lb_mc_sphdisk_ray(const lb_mc_sphdisk* q, real ct, real st, real* ex, real* ey, real* w1, real* w2)
 {
     real d = q->d, d2 = d * d;
     bool out = q->outside;
@@ -74,7 +74,7 @@ LB_FN real lb_mc_sphdisk_ray(const lb_mc_sphdisk* q, real ct, real st, real* ex,
 
 /* Set-up for the ellipse centred at (cx, cy) (relative to F) with semi-axes
  * a, b, the receiver at height h > 0. */
-LB_FN void lb_mc_sphdisk_setup(real cx, real cy, real h, real a, real b, lb_mc_sphdisk* q)
+LB_FN_INLINE void lb_mc_sphdisk_setup(real cx, real cy, real h, real a, real b, lb_mc_sphdisk* q)
 {
     real x = cx / a, y = cy / b;
     real d = LB_MC_SQRT(x * x + y * y);
@@ -89,6 +89,9 @@ LB_FN void lb_mc_sphdisk_setup(real cx, real cy, real h, real a, real b, lb_mc_s
      * matter: the table is any positive density the sampler then follows) */
     real ct = q->outside ? R(0) : R(-1), st = q->outside ? R(-1) : R(0);
     real acc = R(0), prev = R(0);
+#ifdef __OPENCL_C_VERSION__
+#pragma unroll
+#endif
     for (int k = 0; k <= LB_MC_DISK_K; ++k) {
         real ex, ey, w1, w2;
         real g = lb_mc_sphdisk_ray(q, ct, st, &ex, &ey, &w1, &w2);
@@ -110,7 +113,7 @@ LB_FN void lb_mc_sphdisk_setup(real cx, real cy, real h, real a, real b, lb_mc_s
  * directions to it uniform in solid angle up to the table's error. Returns
  * the sample's weight G(t) / p_t(t) = 1 / its density in solid angle (0 on
  * a sample of no density). */
-LB_FN real lb_mc_sphdisk_sample(const lb_mc_sphdisk* q, real u0, real u1, real* x, real* y)
+LB_FN_INLINE real lb_mc_sphdisk_sample(const lb_mc_sphdisk* q, real u0, real u1, real* x, real* y)
 {
     real target = u0 * q->total;
     /* the cell: the last node whose integral is <= target (a fixed scan) */
