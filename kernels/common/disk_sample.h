@@ -20,8 +20,8 @@
  *                       quadratically at the tangents, where phi's own
  *                       density has a square-root edge),
  * psi the ray's angle in the scaled frame. G is tabulated at LB_MC_DISK_K + 1
- * equidistant nodes per pixel and t drawn from the piecewise-linear density
- * through them; the sample's density in solid angle is p_t(t) / G(t) with
+ * nodes per pixel (equidistant inside, Chebyshev-spaced outside) and t drawn
+ * from the piecewise-linear density through them; the sample's density in solid angle is p_t(t) / G(t) with
  * G(t) evaluated at the sample, so the estimator f G / p_t is exact
  * (unbiased) whatever the table's error, and near-uniform where G is close
  * to linear between the nodes. Fixed loop trip counts, scalar reals and
@@ -34,7 +34,7 @@
 typedef struct {
     real a, b, h;                 /* semi-axes, the receiver's height */
     real d, cc, sc;               /* |C'| and the cosine, sine of its angle psi_c */
-    real t0, dt;                  /* the first node of t and the cells' width */
+    real tn[LB_MC_DISK_K + 1];    /* the nodes of t */
     real g[LB_MC_DISK_K + 1];     /* G at the nodes */
     real cum[LB_MC_DISK_K + 1];   /* the piecewise-linear G's integral up to node k */
     real total;                   /* its integral over t: ~ the solid angle (sr) */
@@ -82,29 +82,29 @@ LB_FN_INLINE void lb_mc_sphdisk_setup(real cx, real cy, real h, real a, real b, 
     q->cc = d > R(0) ? x / d : R(1);
     q->sc = d > R(0) ? y / d : R(0);
     q->outside = d >= R(1);
-    q->t0 = q->outside ? R(-0.5) * LB_PI : -LB_PI;
-    q->dt = (q->outside ? LB_PI : LB_TWO_PI) / (real)LB_MC_DISK_K;
-    real cs, sn = LB_MC_SINCOS(q->dt, &cs);
-    /* the nodes' cos, sin by rotation from t0 (their exact values do not
-     * matter: the table is any positive density the sampler then follows) */
-    real ct = q->outside ? R(0) : R(-1), st = q->outside ? R(-1) : R(0);
-    real acc = R(0), prev = R(0);
+    /* nodes of t: equidistant inside; outside at -(pi/2) cos(pi k / K),
+     * dense at the tangents, where G falls quadratically and a linear cell
+     * oversamples (the weight -> 0 there; the narrow end cells hold less of
+     * the mass) */
+    real acc = R(0), prev = R(0), tprev = R(0);
 #ifdef __OPENCL_C_VERSION__
 #pragma unroll
 #endif
     for (int k = 0; k <= LB_MC_DISK_K; ++k) {
+        real ck, sk = LB_MC_SINCOS(LB_PI * (real)k / (real)LB_MC_DISK_K, &ck);
+        real t = q->outside ? R(-0.5) * LB_PI * ck : -LB_PI + LB_TWO_PI * (real)k / (real)LB_MC_DISK_K;
+        real ct, st = LB_MC_SINCOS(t, &ct);
         real ex, ey, w1, w2;
         real g = lb_mc_sphdisk_ray(q, ct, st, &ex, &ey, &w1, &w2);
         /* outside, the tangents (the ends) hold G = 0 (0 / 0 there) */
         g = q->outside && (k == 0 || k == LB_MC_DISK_K) ? R(0) : g;
         g = g > R(0) ? g : R(0);
-        acc += k > 0 ? R(0.5) * q->dt * (prev + g) : R(0);
+        acc += k > 0 ? R(0.5) * (t - tprev) * (prev + g) : R(0);
+        q->tn[k] = t;
         q->g[k] = g;
         q->cum[k] = acc;
         prev = g;
-        real c2 = ct * cs - st * sn;
-        st = st * cs + ct * sn;
-        ct = c2;
+        tprev = t;
     }
     q->total = acc;
 }
@@ -117,7 +117,7 @@ LB_FN_INLINE real lb_mc_sphdisk_sample(const lb_mc_sphdisk* q, real u0, real u1,
 {
     real target = u0 * q->total;
     /* the cell: the last node whose integral is <= target (a fixed scan) */
-    real c0 = R(0), g0 = q->g[0], g1 = q->g[1], kc = R(0);
+    real c0 = R(0), g0 = q->g[0], g1 = q->g[1], ta = q->tn[0], tb = q->tn[1];
 #ifdef __OPENCL_C_VERSION__
 #pragma unroll
 #endif
@@ -126,14 +126,15 @@ LB_FN_INLINE real lb_mc_sphdisk_sample(const lb_mc_sphdisk* q, real u0, real u1,
         c0 = up ? q->cum[k] : c0;
         g0 = up ? q->g[k] : g0;
         g1 = up ? q->g[k + 1] : g1;
-        kc = up ? (real)k : kc;
+        ta = up ? q->tn[k] : ta;
+        tb = up ? q->tn[k + 1] : tb;
     }
-    real mass = R(0.5) * (g0 + g1) * q->dt;
+    real mass = R(0.5) * (g0 + g1) * (tb - ta);
     real uc = mass > R(0) ? (target - c0) / mass : R(0);
     uc = LB_MC_CLAMP(uc, R(0), R(1));
     real xc = g0 + g1 > R(0) ? lb_mc_linear(uc, g0, g1) : R(0.5);
     real glin = g0 + xc * (g1 - g0);
-    real ct, st = LB_MC_SINCOS(q->t0 + (kc + xc) * q->dt, &ct);
+    real ct, st = LB_MC_SINCOS(ta + xc * (tb - ta), &ct);
     real ex, ey, w1, w2;
     real gt = lb_mc_sphdisk_ray(q, ct, st, &ex, &ey, &w1, &w2);
     /* w uniform in [w1, w2]; rho = h tan(theta), cos(theta) = 1 - w */
