@@ -132,7 +132,8 @@ void registerMc(Registry& r)
                       "al. 2013); by the receiver's cosine (projected solid angle); area + projected by the balance "
                       "heuristic; by the luminaire's intensity table over the light's window of directions; "
                       "table + projected, table + solid angle by the balance heuristic. All but area sample the part "
-                      "above the horizon"),
+                      "above the horizon. A disk light takes area and solid (uniform in solid angle over the whole "
+                      "disk, common/disk_sample.h)"),
         Param::choice("sequence", "shared", {"shared", "random", "sobol", "zsobol"},
                       "points: one set for every pixel (pattern); hashed per pixel; Owen-scrambled Sobol per pixel "
                       "(Burley 2020); Morton-ordered digit-permuted Sobol (Ahmed and Wonka 2020, pbrt-v4 ZSobol)"),
