@@ -130,10 +130,9 @@ void registerMc(Registry& r)
         Param::choice("domain", "area", {"area", "solid", "projected", "mis", "table", "mis_table", "mis_table_solid"},
                       "sampling: uniform on the light's area; uniform in solid angle (spherical rectangle, Urena et "
                       "al. 2013); by the receiver's cosine (projected solid angle); area + projected by the balance "
-                      "heuristic; by the luminaire's intensity table over the light's window of directions; "
-                      "table + projected, table + solid angle by the balance heuristic. All but area sample the part "
-                      "above the horizon. A disk light takes area and solid (uniform in solid angle over the whole "
-                      "disk, common/disk_sample.h)"),
+                      "heuristic; by the luminaire's intensity table over the light's window of directions; table + "
+                      "projected, table + solid angle by the balance heuristic. All but area sample the part above the "
+                      "horizon. A disk takes area and solid (uniform in solid angle over the whole disk)"),
         Param::choice("sequence", "shared", {"shared", "random", "sobol", "zsobol"},
                       "points: one set for every pixel (pattern); hashed per pixel; Owen-scrambled Sobol per pixel "
                       "(Burley 2020); Morton-ordered digit-permuted Sobol (Ahmed and Wonka 2020, pbrt-v4 ZSobol)"),
