@@ -91,7 +91,8 @@ LB_FN_INLINE void lb_mc_sphdisk_setup(real cx, real cy, real h, real a, real b, 
 #pragma unroll
 #endif
     for (int k = 0; k <= LB_MC_DISK_K; ++k) {
-        real ck, sk = LB_MC_SINCOS(LB_PI * (real)k / (real)LB_MC_DISK_K, &ck);
+        real ck;
+        (void)LB_MC_SINCOS(LB_PI * (real)k / (real)LB_MC_DISK_K, &ck);
         real t = q->outside ? R(-0.5) * LB_PI * ck : -LB_PI + LB_TWO_PI * (real)k / (real)LB_MC_DISK_K;
         real ct, st = LB_MC_SINCOS(t, &ct);
         real ex, ey, w1, w2;
