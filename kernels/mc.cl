@@ -29,7 +29,9 @@
  *   LB_MC_DISK     (extended path, domain area) the disk light: each point
  *                  (u0, u1) mapped onto the disk (lb_mc_concentric); the shared
  *                  set's points the host maps alike, so the plain path needs
- *                  no variant
+ *                  no variant. With domain solid: directions uniform in solid
+ *                  angle over the whole disk (common/disk_sample.h), area
+ *                  sampling below min_solid
  *
  * The extended path (-DLB_MC_EXT, mc_ext below; host/methods/mc_options.h
  * sets it for anything but today's MCI): per-pixel sequences (LB_MC_SEQ:
@@ -41,7 +43,7 @@
  * by host/methods/mc_table.cpp); LB_MC_VAR writes each pixel's variance
  * for the a-trous filter (common/denoise.h, whose kernels this program also
  * holds: the method's post-passes).
- * @variants: "" | "-DLB_LUT" | "-DLB_LUT -DLB_LUT_1D -DLB_NO_HORIZON -DLB_NO_BACK" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_MC_WARP" | "-DLB_MC_EXT -DLB_MC_DOMAIN=3 -DLB_MC_SEQ=3 -DLB_MC_CLIPV -DLB_MC_VAR -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=2 -DLB_MC_SEQ=1 -DLB_MC_SHIFT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=4 -DLB_MC_SEQ=2 -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=5 -DLB_MC_SEQ=1 -DLB_MC_CLIPV" | "-DLB_MC_EXT -DLB_MC_DOMAIN=6 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_SEQ=2 -DLB_MC_DISK" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_MC_VAR -DLB_LUT -DLB_MC_STRAIGHT -DLB_LANES=8" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=0 -DLB_MC_SHIFT -DLB_LUT -DLB_NO_BACK -DLB_MC_STRAIGHT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=0 -DLB_MC_SEQ=1 -DLB_LUT -DLB_MC_STRAIGHT -DLB_LANES=8"
+ * @variants: "" | "-DLB_LUT" | "-DLB_LUT -DLB_LUT_1D -DLB_NO_HORIZON -DLB_NO_BACK" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_MC_WARP" | "-DLB_MC_EXT -DLB_MC_DOMAIN=3 -DLB_MC_SEQ=3 -DLB_MC_CLIPV -DLB_MC_VAR -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=2 -DLB_MC_SEQ=1 -DLB_MC_SHIFT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=4 -DLB_MC_SEQ=2 -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=5 -DLB_MC_SEQ=1 -DLB_MC_CLIPV" | "-DLB_MC_EXT -DLB_MC_DOMAIN=6 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_SEQ=2 -DLB_MC_DISK" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_MC_VAR -DLB_LUT -DLB_MC_STRAIGHT -DLB_LANES=8" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=0 -DLB_MC_SHIFT -DLB_LUT -DLB_NO_BACK -DLB_MC_STRAIGHT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=0 -DLB_MC_SEQ=1 -DLB_LUT -DLB_MC_STRAIGHT -DLB_LANES=8" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=0 -DLB_MC_SHIFT -DLB_MC_DISK" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=3 -DLB_MC_DISK -DLB_MC_VAR -DLB_LUT"
  */
 #include "common/lbmath.h"
 
@@ -153,7 +155,25 @@ LB_FN_INLINE void mc_view_at(__global const real* P, real ou, real ov, real on, 
  * mis_table: projected and table by the balance heuristic, 6 mis_table_solid:
  * solid angle and table by the balance heuristic; 1-6 on the part above the
  * horizon). */
-#if LB_MC_DOMAIN == 1 || LB_MC_DOMAIN == 6
+#if LB_MC_DOMAIN == 1 && defined(LB_MC_DISK)
+/* Solid angle on the disk (common/disk_sample.h): the whole disk, a sample
+ * below the receiver's horizon counts 0 (mc_area_term's max(0, cos)). */
+typedef struct {
+    lb_mc_sphdisk q;
+    real kdisk; /* the estimate's factor 1 / (the disk's area h) for solid-angle samples */
+    bool use;   /* solid-angle sampling (else area sampling of the disk) */
+} mc_domain;
+
+LB_FN_INLINE void mc_domain_at(const mc_view* vw, real min_solid, mc_domain* dm)
+{
+    real a = R(0.5) * vw->w, b = R(0.5) * vw->l, h = fabs(vw->on);
+    lb_mc_sphdisk_setup(vw->ou + a, vw->ov + b, h, a, b, &dm->q);
+    /* solid-angle sampling where the solid angle is not tiny; else area
+     * sampling (exact pdf: 1 / the disk's area) */
+    dm->use = dm->q.total >= min_solid && dm->q.total > R(0) && h > R(0);
+    dm->kdisk = dm->use ? R(1) / (LB_PI * a * b * h) : R(0);
+}
+#elif LB_MC_DOMAIN == 1 || LB_MC_DOMAIN == 6
 typedef struct {
 #if LB_MC_DOMAIN == 6
     lb_mc_tabwin tw;
@@ -264,6 +284,22 @@ LB_FN_INLINE real mc_area_term(__global const float* lum, const mc_view* vw, rea
     return LB_INTENSITY3(lum, -pu, -pv, -vw->on) * cw;
 }
 
+#if LB_MC_DOMAIN == 1 && defined(LB_MC_DISK)
+/* One sample's estimate for the point (u0, u1): I(d) cos_x / r^2 over the
+ * density's conversion, as the area samples'. */
+LB_FN_INLINE real mc_disk_eval(__global const float* lum, const mc_view* vw, const mc_domain* dm, real u0, real u1)
+{
+    real sx, sy, ri;
+    real wt = lb_mc_sphdisk_sample(&dm->q, u0, u1, &sx, &sy);
+    real cu = u0, cv = u1;
+    lb_mc_concentric(&cu, &cv);
+    real pu = dm->use ? sx : vw->ou + vw->w * cu;
+    real pv = dm->use ? sy : vw->ov + vw->l * cv;
+    real f = mc_area_term(lum, vw, pu, pv, &ri);
+    return f * (dm->use ? wt * dm->kdisk : ri * ri * ri);
+}
+#endif
+
 #if LB_MC_DOMAIN >= 4
 /* The solid-angle form's integrand at the unit emission direction (dx, dy,
  * dz): I(d) cos_x / (area |d_z|) (luminance times the receiver cosine, over
@@ -351,6 +387,8 @@ LB_FN_INLINE real mc_eval(__global const float* lum, const mc_view* vw, const mc
 #endif
     real f = mc_area_term(lum, vw, vw->ou + vw->w * u0, vw->ov + vw->l * u1, &ri);
     return f * (ri * ri * ri);
+#elif LB_MC_DOMAIN == 1 && defined(LB_MC_DISK)
+    return mc_disk_eval(lum, vw, dm, u0, u1);
 #elif LB_MC_DOMAIN == 1
     real wu0 = u0, wu1 = u1, bp = R(1);
 #ifdef LB_MC_WARP

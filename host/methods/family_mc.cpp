@@ -130,9 +130,9 @@ void registerMc(Registry& r)
         Param::choice("domain", "area", {"area", "solid", "projected", "mis", "table", "mis_table", "mis_table_solid"},
                       "sampling: uniform on the light's area; uniform in solid angle (spherical rectangle, Urena et "
                       "al. 2013); by the receiver's cosine (projected solid angle); area + projected by the balance "
-                      "heuristic; by the luminaire's intensity table over the light's window of directions; "
-                      "table + projected, table + solid angle by the balance heuristic. All but area sample the part "
-                      "above the horizon"),
+                      "heuristic; by the luminaire's intensity table over the light's window of directions; table + "
+                      "projected, table + solid angle by the balance heuristic. All but area sample the part above the "
+                      "horizon. A disk takes area and solid (uniform in solid angle over the whole disk)"),
         Param::choice("sequence", "shared", {"shared", "random", "sobol", "zsobol"},
                       "points: one set for every pixel (pattern); hashed per pixel; Owen-scrambled Sobol per pixel "
                       "(Burley 2020); Morton-ordered digit-permuted Sobol (Ahmed and Wonka 2020, pbrt-v4 ZSobol)"),
@@ -181,7 +181,9 @@ void registerMc(Registry& r)
                 auto more = samplePoints(o.pattern, n + 1, seed);
                 st.insert(st.end(), more.begin(), more.end());
             }
-            if (scene.shape == LightShape::Disk) mapToDisk(st);
+            // area samples of a disk: the set mapped onto it (solid angle maps
+            // the unit square itself, common/disk_sample.h)
+            if (scene.shape == LightShape::Disk && o.domain == "area") mapToDisk(st);
         }
         plan.args = mcArgs(st, n, extra, samplingArgs(o, n, extra > 0, seed, scene.res, &t));
         plan.bind = [o](LaunchContext& c) { bindDenoise(c, o); };

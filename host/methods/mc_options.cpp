@@ -32,6 +32,20 @@ int sequenceIndex(const std::string& s)
     return 0;
 }
 
+// The disk light's -D options: area sampling (the shared set mapped onto the
+// disk on the host, without a shift) or solid angle over the whole disk
+// (common/disk_sample.h; any sequence, the shared set unmapped); the other
+// domains and the cosine warp are the rectangle's.
+std::string mcDiskDefines(const McOptions& o)
+{
+    if ((o.domain != "area" && o.domain != "solid") || (o.domain == "area" && o.shift) ||
+        (o.domain == "solid" && o.cosineWarp))
+        throw InputError(fmt::format("method mc: on a disk light (shape=disk) mc samples domain=area (without "
+                                     "shift) or domain=solid (without cosine_warp); got domain={}{}{}",
+                                     o.domain, o.shift ? ",shift=1" : "", o.cosineWarp ? ",cosine_warp=1" : ""));
+    return o.domain == "solid" || o.sequence != "shared" ? " -DLB_MC_DISK" : "";
+}
+
 }  // namespace
 
 bool McOptions::extended() const { return domain != "area" || sequence != "shared" || shift || denoise != "none"; }
@@ -107,8 +121,8 @@ int mcLog2(int samples)
 std::string mcSceneDefines(const McOptions& o, const Scene& scene, int n)
 {
     if (!o.extended()) return "";
-    std::string d;
-    if (o.domain != "area") {
+    std::string d = scene.shape == LightShape::Disk ? mcDiskDefines(o) : "";
+    if (o.domain != "area" && scene.shape != LightShape::Disk) {
         // The sampled domains take the part of the light above the horizon as
         // a rectangle: exact where the horizon cuts along u (every normalized
         // scene). Solid angle and table also work on the whole light
@@ -119,15 +133,6 @@ std::string mcSceneDefines(const McOptions& o, const Scene& scene, int n)
             throw InputError(fmt::format("method mc: domain={} needs the receiver normal perpendicular to the "
                                          "light's u axis (as in every normalized scene)",
                                          o.domain));
-    }
-    if (scene.shape == LightShape::Disk) {
-        // The disk is sampled by area only (its solid-angle sampler, the
-        // spherical ellipse, and the projected polygon are the rectangle's).
-        if (o.domain != "area" || o.shift)
-            throw InputError(fmt::format("method mc: on a disk light (shape=disk) only domain=area without shift "
-                                         "samples it; got domain={}{}",
-                                         o.domain, o.shift ? ",shift=1" : ""));
-        if (o.sequence != "shared") d += " -DLB_MC_DISK";
     }
     if (o.sequence == "zsobol") {
         const int bits = 2 * mcLog2(scene.res) + mcLog2(n + 1);

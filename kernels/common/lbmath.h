@@ -24,3 +24,5 @@
 #include "lanes_end.h"
 /* The disk light: uses the polynomial sin / cos / atan2 above. */
 #include "disk.h"
+/* Solid-angle sampling of the disk light: uses mc_sample.h's sampler parts. */
+#include "disk_sample.h"

@@ -212,8 +212,9 @@ TEST(DiskMethods, WhatADiskCannotTakeIsRefusedClearly)
         EXPECT_NE(m.find(part), std::string::npos) << spec << ": " << m;
     };
     refused("voronoi", "not shape=disk");
-    refused("mc:domain=solid", "only domain=area");
-    refused("mc:shift=1", "only domain=area");
+    refused("mc:domain=projected", "domain=area (without shift) or domain=solid");
+    refused("mc:shift=1", "domain=area (without shift) or domain=solid");
+    refused("mc:domain=solid,cosine_warp=1", "without cosine_warp");
     refused("cubature:triangulation=delaunay,dynamic=cp+barycentre", "triangulation, dynamic");
     refused("robust:corner_inset=0.5", "corner_inset");
     Scene spec = sc;
@@ -227,17 +228,19 @@ TEST(DiskMethods, MonteCarloOnADiskIsUnbiased)
     if (!rt->fp64()) GTEST_SKIP() << "no fp64";
     // The image mean of mc (area samples mapped onto the disk) over 32
     // seeds against the Lambertian closed form, for the shared random set
-    // (mapped on the host) and per-pixel Sobol (mapped in the kernel). A
-    // biased estimator (a map that is not uniform: the plain polar map
-    // r = u0 puts 2x the density at half the radius and biases E by ~10 %)
-    // moves the mean by many standard errors: |t| < 4 (a false alarm at
-    // 6e-5 for 32 unbiased draws).
+    // (mapped on the host) and per-pixel Sobol (mapped in the kernel), and
+    // of solid-angle sampling (common/disk_sample.h; paper=1: the shifted
+    // shared Halton set, unmapped). A biased estimator (a map that is not
+    // uniform: the plain polar map r = u0 puts 2x the density at half the
+    // radius and biases E by ~10 %) moves the mean by many standard errors:
+    // |t| < 4 (a false alarm at 6e-5 for 32 unbiased draws).
     auto t = methods::loadLuminaire("analytic:cos1");
     const Scene sc = diskScene(0.5, 3 * M_PI / 4, 1.0, 8);
     double want = 0;
     for (int i = 0; i < sc.res; ++i)
         for (int j = 0; j < sc.res; ++j) want += lambertDisk(sc, i, j);
-    for (const char* base : {"mc:n=8,pattern=random", "mc:n=8,sequence=sobol"}) {
+    for (const char* base :
+         {"mc:n=8,pattern=random", "mc:n=8,sequence=sobol", "mc:n=8,domain=solid,sequence=sobol", "mc:n=8,paper=1"}) {
         std::vector<double> d;
         for (int seed = 1; seed <= 32; ++seed) {
             auto r = test::run(*rt, t, sc, fmt::format("{},seed={}", base, seed));
