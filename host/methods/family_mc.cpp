@@ -107,6 +107,40 @@ void registerMcPoints(Registry& r, const Family& mc)
     r.add(f);
 }
 
+// mc's render plan: the kernel's defines (the straight-line form where it
+// applies), the lookup, the point set (shared sequence) and the arguments.
+Plan mcPlan(const MethodSpec& s, const Scene& scene, const photometry::Table& t, const ocl::DeviceInfo& dev,
+            Precision p)
+{
+    const McOptions o = mcOptions(s);
+    const int n = static_cast<int>(s.integer("n"));
+    const double extra = s.num("extra");
+    const auto seed = static_cast<std::uint64_t>(s.integer("seed"));
+    const bool lut = s.str("lookup") == "lut", specialize = s.str("specialize") == "auto";
+    Plan plan;
+    plan.defines = mcDefines(o) + analyse(scene, t, lut, specialize).defines() + mcSceneDefines(o, scene, n);
+    if (mcStraight(o, scene, lut, specialize)) {
+        // the straight-line form: eight pixels per work-item in float on CPUs
+        plan.defines += " -DLB_MC_STRAIGHT";
+        plan.lanes = p == Precision::Double ? 1 : lanesFor("auto", dev.type);
+    }
+    plan.lum = [s, &t] { return lookupBuffer(s, t); };
+    std::vector<double> st;
+    if (o.sequence == "shared") {
+        st = samplePoints(o.pattern, n, seed);
+        if (extra > 0) {  // the N + 1 point set after the N points (kernels/mc.cl)
+            auto more = samplePoints(o.pattern, n + 1, seed);
+            st.insert(st.end(), more.begin(), more.end());
+        }
+        // area samples of a disk: the set mapped onto it (solid angle maps
+        // the unit square itself, common/disk_sample.h)
+        if (scene.shape == LightShape::Disk && o.domain == "area") mapToDisk(st);
+    }
+    plan.args = mcArgs(st, n, extra, samplingArgs(o, n, extra > 0, seed, scene.res, &t));
+    plan.bind = [o](LaunchContext& c) { bindDenoise(c, o); };
+    return plan;
+}
+
 }  // namespace
 
 void registerMc(Registry& r)
@@ -159,36 +193,7 @@ void registerMc(Registry& r)
     };
     f.validate = validateMc;
     f.args = kMcArgs;
-    f.plan = [](const MethodSpec& s, const Scene& scene, const photometry::Table& t, const ocl::DeviceInfo& dev,
-                Precision p) {
-        const McOptions o = mcOptions(s);
-        const int n = static_cast<int>(s.integer("n"));
-        const double extra = s.num("extra");
-        const auto seed = static_cast<std::uint64_t>(s.integer("seed"));
-        const bool lut = s.str("lookup") == "lut", specialize = s.str("specialize") == "auto";
-        Plan plan;
-        plan.defines = mcDefines(o) + analyse(scene, t, lut, specialize).defines() + mcSceneDefines(o, scene, n);
-        if (mcStraight(o, scene, lut, specialize)) {
-            // the straight-line form: eight pixels per work-item in float on CPUs
-            plan.defines += " -DLB_MC_STRAIGHT";
-            plan.lanes = p == Precision::Double ? 1 : lanesFor("auto", dev.type);
-        }
-        plan.lum = [s, &t] { return lookupBuffer(s, t); };
-        std::vector<double> st;
-        if (o.sequence == "shared") {
-            st = samplePoints(o.pattern, n, seed);
-            if (extra > 0) {  // the N + 1 point set after the N points (kernels/mc.cl)
-                auto more = samplePoints(o.pattern, n + 1, seed);
-                st.insert(st.end(), more.begin(), more.end());
-            }
-            // area samples of a disk: the set mapped onto it (solid angle maps
-            // the unit square itself, common/disk_sample.h)
-            if (scene.shape == LightShape::Disk && o.domain == "area") mapToDisk(st);
-        }
-        plan.args = mcArgs(st, n, extra, samplingArgs(o, n, extra > 0, seed, scene.res, &t));
-        plan.bind = [o](LaunchContext& c) { bindDenoise(c, o); };
-        return plan;
-    };
+    f.plan = mcPlan;
     f.postPasses = [](LaunchContext& c) { return denoisePasses(c, mcOptions(c.spec), c.spec.num("atrous_sigma")); };
     f.benchSpecs = {"mc:n=8", "mc:n=32", "mc:n=32,lookup=exact"};
     r.add(f);
