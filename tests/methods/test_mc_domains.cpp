@@ -63,6 +63,24 @@ SeedStats seedStats(ocl::Runtime& rt, const photometry::Table& t, const Scene& s
     return st;
 }
 
+// The seed tests' bounds per case (z^2 of the seed mean, MSE(4) / MSE(16):
+// their reasons at MeanOverSeedsConvergesToReference) and the geometric mean
+// of the ratios over the cases.
+struct RateTally {
+    double logRatio = 0;
+    int cases = 0;
+    void add(const SeedStats& st, const std::string& what)
+    {
+        const double ratio = st.mse4 / st.mse16;
+        EXPECT_LE(st.z2, 1.8) << what;
+        EXPECT_GE(ratio, 1.2) << what;
+        EXPECT_LE(ratio, 20) << what;
+        logRatio += std::log(ratio);
+        ++cases;
+    }
+    double geomean() const { return std::exp(logRatio / cases); }
+};
+
 // The mean over R seeds converges to the reference: the per-pixel z^2 of the
 // seed mean averages ~ E[t^2] = 15/13 for Student's t with 15 degrees of
 // freedom (pixels are near-independent); a bias of a tenth of the spread of
@@ -80,8 +98,7 @@ TEST(McDomains, MeanOverSeedsConvergesToReference)
     struct S {
         double h, rot;
     };
-    double logRatio = 0;
-    int cases = 0;
+    RateTally tally;
     for (S s : {S{1.1, 3 * M_PI / 4}, S{0.1, M_PI / 2}}) {
         Scene sc = scene(s.h, s.rot, 12);
         Image ref = run(*rt, t, sc, "reference:tol=1e-7").image;
@@ -96,14 +113,10 @@ TEST(McDomains, MeanOverSeedsConvergesToReference)
             // 144 pixels: the mean z^2 scatters by ~ sqrt(2 / 144) ~ 0.12
             // around 1.15 (more with the heavy tails near the light's
             // plane); 1.8 leaves room and still catches a third of a sigma
-            EXPECT_LE(st.z2, 1.8) << spec << " h " << s.h;
-            EXPECT_GE(ratio, 1.2) << spec << " h " << s.h;
-            EXPECT_LE(ratio, 20) << spec << " h " << s.h;
-            logRatio += std::log(ratio);
-            ++cases;
+            tally.add(st, fmt::format("{} h {}", spec, s.h));
         }
     }
-    const double gm = std::exp(logRatio / cases);
+    const double gm = tally.geomean();
     std::printf("geometric mean of MSE(4) / MSE(16): %.2f\n", gm);
     // 18 cases: the log of the mean scatters by ~ 0.5 / sqrt(18) ~ 0.12
     EXPECT_GE(gm, 3.0);
@@ -128,8 +141,7 @@ TEST(McDomains, TableSamplersConvergeToReference)
     LB_REQUIRE_RUNTIME(rt);
     if (!rt->fp64()) GTEST_SKIP() << "no fp64";
     auto t = lumpy();
-    double logRatio = 0;
-    int cases = 0;
+    RateTally tally;
     for (double h : {1.1, 0.1}) {
         Scene sc = scene(h, h > 1 ? 3 * M_PI / 4 : M_PI / 2, 12);
         Image ref = run(*rt, t, sc, "reference:tol=1e-7").image;
@@ -141,14 +153,10 @@ TEST(McDomains, TableSamplersConvergeToReference)
             SeedStats st = seedStats(*rt, t, sc, ref, spec, 64);
             double ratio = st.mse4 / st.mse16;
             std::printf("%-56s h %.1f: z^2 %.3f, MSE(4) / MSE(16) %.2f\n", spec, h, st.z2, ratio);
-            EXPECT_LE(st.z2, 1.8) << spec << " h " << h;
-            EXPECT_GE(ratio, 1.2) << spec << " h " << h;
-            EXPECT_LE(ratio, 20) << spec << " h " << h;
-            logRatio += std::log(ratio);
-            ++cases;
+            tally.add(st, fmt::format("{} h {}", spec, h));
         }
     }
-    const double gm = std::exp(logRatio / cases);
+    const double gm = tally.geomean();
     std::printf("geometric mean of MSE(4) / MSE(16): %.2f\n", gm);
     EXPECT_GE(gm, 2.5);
     EXPECT_LE(gm, 6.5);
@@ -185,8 +193,7 @@ TEST(McDomains, DiskSolidAngleConvergesToReference)
     LB_REQUIRE_RUNTIME(rt);
     if (!rt->fp64()) GTEST_SKIP() << "no fp64";
     auto t = lumpy();
-    double logRatio = 0;
-    int cases = 0;
+    RateTally tally;
     for (double h : {1.1, 0.1}) {
         Scene sc = diskScene(h, h > 1 ? 3 * M_PI / 4 : M_PI / 2, 12);
         Image ref = run(*rt, t, sc, "reference:tol=1e-7").image;
@@ -197,14 +204,10 @@ TEST(McDomains, DiskSolidAngleConvergesToReference)
             SeedStats st = seedStats(*rt, t, sc, ref, spec);
             double ratio = st.mse4 / st.mse16;
             std::printf("disk %-50s h %.1f: z^2 %.3f, MSE(4) / MSE(16) %.2f\n", spec, h, st.z2, ratio);
-            EXPECT_LE(st.z2, 1.8) << spec << " h " << h;
-            EXPECT_GE(ratio, 1.2) << spec << " h " << h;
-            EXPECT_LE(ratio, 20) << spec << " h " << h;
-            logRatio += std::log(ratio);
-            ++cases;
+            tally.add(st, fmt::format("{} h {}", spec, h));
         }
     }
-    const double gm = std::exp(logRatio / cases);
+    const double gm = tally.geomean();
     std::printf("disk: geometric mean of MSE(4) / MSE(16): %.2f\n", gm);
     EXPECT_GE(gm, 2.5);
     EXPECT_LE(gm, 6.5);
