@@ -78,7 +78,14 @@ struct RateTally {
         logRatio += std::log(ratio);
         ++cases;
     }
-    double geomean() const { return std::exp(logRatio / cases); }
+    // The geometric mean of the ratios, printed and held to [lo, hi].
+    void expectGeomean(const char* label, double lo, double hi) const
+    {
+        const double gm = std::exp(logRatio / cases);
+        std::printf("%sgeometric mean of MSE(4) / MSE(16): %.2f\n", label, gm);
+        EXPECT_GE(gm, lo);
+        EXPECT_LE(gm, hi);
+    }
 };
 
 // The mean over R seeds converges to the reference: the per-pixel z^2 of the
@@ -116,11 +123,8 @@ TEST(McDomains, MeanOverSeedsConvergesToReference)
             tally.add(st, fmt::format("{} h {}", spec, s.h));
         }
     }
-    const double gm = tally.geomean();
-    std::printf("geometric mean of MSE(4) / MSE(16): %.2f\n", gm);
     // 18 cases: the log of the mean scatters by ~ 0.5 / sqrt(18) ~ 0.12
-    EXPECT_GE(gm, 3.0);
-    EXPECT_LE(gm, 5.5);
+    tally.expectGeomean("", 3.0, 5.5);
 }
 
 // The table samplers (domain=table, mis_table: common/mc_table.h) are
@@ -156,10 +160,7 @@ TEST(McDomains, TableSamplersConvergeToReference)
             tally.add(st, fmt::format("{} h {}", spec, h));
         }
     }
-    const double gm = tally.geomean();
-    std::printf("geometric mean of MSE(4) / MSE(16): %.2f\n", gm);
-    EXPECT_GE(gm, 2.5);
-    EXPECT_LE(gm, 6.5);
+    tally.expectGeomean("", 2.5, 6.5);
 }
 
 double mseOverSeeds(ocl::Runtime& rt, const photometry::Table& t, const Scene& sc, const Image& ref,
@@ -207,10 +208,7 @@ TEST(McDomains, DiskSolidAngleConvergesToReference)
             tally.add(st, fmt::format("{} h {}", spec, h));
         }
     }
-    const double gm = tally.geomean();
-    std::printf("disk: geometric mean of MSE(4) / MSE(16): %.2f\n", gm);
-    EXPECT_GE(gm, 2.5);
-    EXPECT_LE(gm, 6.5);
+    tally.expectGeomean("disk: ", 2.5, 6.5);
 }
 
 // A Lambertian downlight disk (cos1, R pi): uniform in solid angle leaves
