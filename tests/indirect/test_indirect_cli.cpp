@@ -42,7 +42,9 @@ TEST(IndirectCli, SmokeExperimentRendersEveryMethodWithAnEqualTimePartner)
         // partner's N follows the measured times, and on a loaded machine a
         // small N gives more (measured 1.43 for the acrsm partner at updown
         // h 1.1 in one clean-clone run): it is held to finite only
-        if (!rec.equal_time_to.has_value()) EXPECT_LT(rec.error.nmse, 1.0) << rec.key();
+        if (!rec.equal_time_to.has_value()) {
+            EXPECT_LT(rec.error.nmse, 1.0) << rec.key();
+        }
         methods.insert(rec.method);
         eq += rec.equal_time_to.has_value();
     }
