@@ -43,7 +43,7 @@
  * by host/methods/mc_table.cpp); LB_MC_VAR writes each pixel's variance
  * for the a-trous filter (common/denoise.h, whose kernels this program also
  * holds: the method's post-passes).
- * @variants: "" | "-DLB_LUT" | "-DLB_LUT -DLB_LUT_1D -DLB_NO_HORIZON -DLB_NO_BACK" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_MC_WARP" | "-DLB_MC_EXT -DLB_MC_DOMAIN=3 -DLB_MC_SEQ=3 -DLB_MC_CLIPV -DLB_MC_VAR -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=2 -DLB_MC_SEQ=1 -DLB_MC_SHIFT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=4 -DLB_MC_SEQ=2 -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=5 -DLB_MC_SEQ=1 -DLB_MC_CLIPV" | "-DLB_MC_EXT -DLB_MC_DOMAIN=6 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_SEQ=2 -DLB_MC_DISK" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_MC_VAR -DLB_LUT -DLB_MC_STRAIGHT -DLB_LANES=8" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=0 -DLB_MC_SHIFT -DLB_LUT -DLB_NO_BACK -DLB_MC_STRAIGHT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=0 -DLB_MC_SEQ=1 -DLB_LUT -DLB_MC_STRAIGHT -DLB_LANES=8" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=0 -DLB_MC_SHIFT -DLB_MC_DISK" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=3 -DLB_MC_DISK -DLB_MC_VAR -DLB_LUT"
+ * @variants: "" | "-DLB_LUT" | "-DLB_LUT -DLB_LUT_1D -DLB_NO_HORIZON -DLB_NO_BACK" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_MC_WARP" | "-DLB_MC_EXT -DLB_MC_DOMAIN=3 -DLB_MC_SEQ=3 -DLB_MC_CLIPV -DLB_MC_VAR -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=2 -DLB_MC_SEQ=1 -DLB_MC_SHIFT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=4 -DLB_MC_SEQ=2 -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=5 -DLB_MC_SEQ=1 -DLB_MC_CLIPV" | "-DLB_MC_EXT -DLB_MC_DOMAIN=6 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_SEQ=2 -DLB_MC_DISK" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_MC_VAR -DLB_LUT -DLB_MC_STRAIGHT -DLB_LANES=8" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=0 -DLB_MC_SHIFT -DLB_LUT -DLB_NO_BACK -DLB_MC_STRAIGHT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=0 -DLB_MC_SEQ=1 -DLB_LUT -DLB_MC_STRAIGHT -DLB_LANES=8" | "-DLB_MC_EXT -DLB_MC_DOMAIN=2 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_LUT -DLB_MC_STRAIGHT -DLB_LANES=8" | "-DLB_MC_EXT -DLB_MC_DOMAIN=3 -DLB_MC_SEQ=3 -DLB_MC_CLIPV -DLB_MC_VAR -DLB_LUT -DLB_MC_STRAIGHT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=3 -DLB_MC_WARP -DLB_LUT -DLB_MC_STRAIGHT -DLB_LANES=8" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=0 -DLB_MC_SHIFT -DLB_MC_DISK" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=3 -DLB_MC_DISK -DLB_MC_VAR -DLB_LUT"
  */
 #include "common/lbmath.h"
 
@@ -240,13 +240,14 @@ LB_FN_INLINE void mc_domain_at(const mc_view* vw, real min_solid, mc_domain* dm)
     real tl = R(1) / sqrt(t1u * t1u + t1v * t1v + t1n * t1n);
     t1u *= tl, t1v *= tl, t1n *= tl;
     real t2u = av * t1n - an * t1v, t2v = an * t1u - au * t1n, t2n = au * t1v - av * t1u;
-    real3 qv[4];
+    real qx[4], qy[4], qz[4];
     real cu[4] = {vw->ou, vw->ou + vw->w, vw->ou + vw->w, vw->ou}, cv[4] = {vw->y0, vw->y0, vw->y0 + vw->ey,
                                                                               vw->y0 + vw->ey};
-    for (int k = 0; k < 4; ++k)
-        qv[k] = R3(t1u * cu[k] + t1v * cv[k] + t1n * on, t2u * cu[k] + t2v * cv[k] + t2n * on,
-                   fmax(R(0), au * cu[k] + av * cv[k] + vw->an0));
-    dm->pj = lb_mc_proj_setup(qv);
+    for (int k = 0; k < 4; ++k) {
+        qx[k] = t1u * cu[k] + t1v * cv[k] + t1n * on, qy[k] = t2u * cu[k] + t2v * cv[k] + t2n * on;
+        qz[k] = fmax(R(0), au * cu[k] + av * cv[k] + vw->an0);
+    }
+    dm->pj = lb_mc_proj_setup(qx, qy, qz);
     dm->lit = vw->tv > R(0) && dm->pj.area > R(0);
     dm->kproj = dm->lit ? dm->pj.area / vw->area : R(0);
     dm->t1u = t1u, dm->t1v = t1v, dm->t1n = t1n, dm->t2u = t2u, dm->t2v = t2v, dm->t2n = t2n;
@@ -255,12 +256,15 @@ LB_FN_INLINE void mc_domain_at(const mc_view* vw, real min_solid, mc_domain* dm)
 #endif
 }
 
-/* A projected sample's direction (receiver frame) in the light's frame. */
-LB_FN_INLINE void mc_domain_dir(const mc_view* vw, const mc_domain* dm, real3 dr, real* wu, real* wv, real* wn)
+/* The projected sample's direction for (u0, u1), in the light's frame. */
+LB_FN_INLINE void mc_domain_dir(const mc_view* vw, const mc_domain* dm, real u0, real u1, real* wu, real* wv,
+                                 real* wn)
 {
-    *wu = dr.x * dm->t1u + dr.y * dm->t2u + dr.z * vw->au;
-    *wv = dr.x * dm->t1v + dr.y * dm->t2v + dr.z * vw->av;
-    *wn = dr.x * dm->t1n + dr.y * dm->t2n + dr.z * vw->an;
+    real x, y, z;
+    lb_mc_proj_sample(&dm->pj, u0, u1, &x, &y, &z);
+    *wu = x * dm->t1u + y * dm->t2u + z * vw->au;
+    *wv = x * dm->t1v + y * dm->t2v + z * vw->av;
+    *wn = x * dm->t1n + y * dm->t2n + z * vw->an;
 }
 #else
 typedef struct {
@@ -339,7 +343,7 @@ LB_FN_INLINE real mc_eval_tmis(__global const float* lum, const mc_view* vw, con
     /* i is the same in every work-item: a uniform branch */
     if (proj) {
         real wu, wv, wn;
-        mc_domain_dir(vw, dm, lb_mc_proj_sample(&dm->pj, u0, u1), &wu, &wv, &wn);
+        mc_domain_dir(vw, dm, u0, u1, &wu, &wv, &wn);
         dx = -wu, dy = -wv, dz = -wn;
         pt = lb_mc_tab_pdf(&dm->tw, dx, dy, dz);
     } else {
@@ -403,7 +407,7 @@ LB_FN_INLINE real mc_eval(__global const float* lum, const mc_view* vw, const mc
     return f * kw;
 #else
     real wu, wv, wn;
-    mc_domain_dir(vw, dm, lb_mc_proj_sample(&dm->pj, u0, u1), &wu, &wv, &wn);
+    mc_domain_dir(vw, dm, u0, u1, &wu, &wv, &wn);
     return dm->lit && wn != R(0) ? dm->kproj * LB_INTENSITY3(lum, -wu, -wv, -wn) / (wn < R(0) ? -wn : wn) : R(0);
 #endif
 }
@@ -416,11 +420,9 @@ LB_FN_INLINE real mc_eval_mis(__global const float* lum, const mc_view* vw, cons
 {
     /* i is the same in every work-item: a uniform branch skips the
      * projected sampler for the area samples */
-    real3 dr = R3(0, 0, 1);
+    real wu = vw->au, wv = vw->av, wn = vw->an;
     if (proj)
-        dr = lb_mc_proj_sample(&dm->pj, u0, u1);
-    real wu, wv, wn;
-    mc_domain_dir(vw, dm, dr, &wu, &wv, &wn);
+        mc_domain_dir(vw, dm, u0, u1, &wu, &wv, &wn);
     real on = vw->on;
     /* the sample's point on the light: the direction's hit (projected
      * samples) or the area point (area samples) */
@@ -523,13 +525,15 @@ LB_FN_INLINE int mc_tile_count(int n, float extra, int row0, int res, int lanes,
 
 #ifdef LB_MC_STRAIGHT
 /* The straight-line form of the extended path (host/methods/family_mc.cpp
- * picks it): domain area or solid angle (no warp), sequence shared (with
- * LB_MC_SHIFT), random or sobol, the rectangle light, the trig-free table.
- * No barrier, no loop but the samples', every branch uniform over the lanes:
- * eight pixels of a row per work-item in float8 where the host asks for
- * LB_LANES=8 (CPUs, float), else one. The same sequences, set-up and
- * estimates as mc_ext (common/mc_lanes.inc holds the sampler for both;
- * tests/methods/test_mc_straight.cpp holds the form to mc_ext). */
+ * picks it): domain area, solid angle (with or without the cosine warp),
+ * projected or mis, every sequence, the rectangle light, the trig-free
+ * table. No barrier, no loop but the samples' (and the projected sampler's
+ * inversion, run to the slowest lane), every other branch uniform over the
+ * lanes: eight pixels of a row per work-item in float8 where the host asks
+ * for LB_LANES=8 (CPUs, float), else one. The same sequences, set-up and
+ * estimates as mc_ext (common/mc_lanes.inc and proj_lanes.inc hold the
+ * samplers for both; tests/methods/test_mc_straight.cpp holds the form to
+ * mc_ext). */
 #if defined(LB_LANES) && LB_LANES == 8 && !defined(LB_DOUBLE)
 #include "common/lanes8.h"
 #include "common/lanes_all.inc"
@@ -537,23 +541,76 @@ LB_FN_INLINE int mc_tile_count(int n, float extra, int row0, int res, int lanes,
 #include "common/lanes1.h"
 #endif
 
-/* The pixels' view of the light, as mc_view, and the solid-angle sampler's
- * set-up, as mc_domain (domain 1). */
+/* The pixels' view of the light, as mc_view, and the domain's set-up, as
+ * mc_domain. */
 typedef struct {
     LB_V ou, ov, on, y0, ey, tv, on2, an0;
-    real au, av, w, l, area;
+    real au, av, an, w, l, area;
 #if LB_MC_DOMAIN == 1
     LB_VFN(lb_mc_sphrect) q;
     LB_V ksolid;
     LB_M use;
+#ifdef LB_MC_WARP
+    LB_V w00, w10, w01, w11; /* the receiver cosines at the corners, the warp's weights */
+#endif
+#elif LB_MC_DOMAIN == 2 || LB_MC_DOMAIN == 3
+    LB_VFN(lb_mc_proj) pj;
+    real t1u, t1v, t1n, t2u, t2v, t2n; /* the receiver's tangent frame in the light's */
+    LB_V kproj;                        /* projected solid angle / light area */
+    LB_M lit;                          /* some of the light above the horizon */
 #endif
 } LB_VFN(mcs_view);
+
+#ifdef LB_MC_WARP
+/* The warp's weight at the light point (x, y): the receiver cosine, >= 0.01. */
+LB_FN LB_V LB_VFN(mcs_corner_cos)(const LB_VFN(mcs_view) * vw, LB_V x, LB_V y)
+{
+    LB_V c = (vw->au * x + vw->av * y + vw->an0) / LB_MC_SQRT(x * x + y * y + vw->on2);
+    return c > R(0.01) ? c : R(0.01);
+}
+#endif
+
+#if LB_MC_DOMAIN == 2 || LB_MC_DOMAIN == 3
+/* The projected sampler's set-up, as mc_domain_at: the part of the light
+ * above the horizon in the receiver's tangent frame (T1, T2, n_x). */
+LB_FN void LB_VFN(mcs_proj_at)(LB_VFN(mcs_view) * vw)
+{
+    real au = vw->au, av = vw->av, an = vw->an;
+    real t1u = R(1) - au * au, t1v = -au * av, t1n = -au * an;
+    real tl = R(1) / sqrt(t1u * t1u + t1v * t1v + t1n * t1n);
+    t1u *= tl, t1v *= tl, t1n *= tl;
+    real t2u = av * t1n - an * t1v, t2v = an * t1u - au * t1n, t2n = au * t1v - av * t1u;
+    LB_V qx[4], qy[4], qz[4];
+    LB_V cu[4] = {vw->ou, vw->ou + vw->w, vw->ou + vw->w, vw->ou};
+    LB_V cv[4] = {vw->y0, vw->y0, vw->y0 + vw->ey, vw->y0 + vw->ey};
+    for (int k = 0; k < 4; ++k) {
+        qx[k] = t1u * cu[k] + t1v * cv[k] + t1n * vw->on, qy[k] = t2u * cu[k] + t2v * cv[k] + t2n * vw->on;
+        LB_V z = au * cu[k] + av * cv[k] + vw->an0;
+        qz[k] = z > R(0) ? z : R(0) * z;
+    }
+    vw->pj = LB_VFN(lb_mc_proj_setup)(qx, qy, qz);
+    vw->lit = vw->tv > R(0) && vw->pj.area > R(0);
+    vw->kproj = vw->lit ? vw->pj.area / vw->area : R(0) * vw->tv;
+    vw->t1u = t1u, vw->t1v = t1v, vw->t1n = t1n, vw->t2u = t2u, vw->t2v = t2v, vw->t2n = t2n;
+}
+
+/* A projected sample's direction for (u0, u1), in the light's frame. */
+LB_FN void LB_VFN(mcs_proj_dir)(const LB_VFN(mcs_view) * vw, LB_V u0, LB_V u1, LB_V* wu, LB_V* wv, LB_V* wn)
+{
+    LB_V x, y, z;
+    LB_VFN(lb_mc_proj_sample)(&vw->pj, u0, u1, &x, &y, &z);
+    *wu = x * vw->t1u + y * vw->t2u + z * vw->au;
+    *wv = x * vw->t1v + y * vw->t2v + z * vw->av;
+    *wn = x * vw->t1n + y * vw->t2n + z * vw->an;
+}
+#endif
 
 LB_FN void LB_VFN(mcs_view_at)(__global const real* P, LB_V ou, LB_V ov, LB_V on, real min_solid,
                                LB_VFN(mcs_view) * vw)
 {
     real w = P[LB_P_W], l = P[LB_P_L], an;
     lb_receiver_normal_local(P, &vw->au, &vw->av, &an);
+    vw->an = an;
     vw->ou = ou, vw->ov = ov, vw->on = on, vw->w = w, vw->l = l, vw->area = w * l;
     LB_V t0 = R(0), t1 = R(1);
 #ifdef LB_MC_CLIPV
@@ -578,17 +635,64 @@ LB_FN void LB_VFN(mcs_view_at)(__global const real* P, LB_V ou, LB_V ov, LB_V on
      * sampling of the same rectangle (exact pdf: 1 / its area), as mc_domain_at */
     vw->use = omega >= min_solid && omega > R(0) && aon > R(0);
     vw->ksolid = vw->use ? omega / (aon * vw->area) : R(0) * omega;
+#ifdef LB_MC_WARP
+    LB_V x1 = ou + w, y1 = vw->y0 + vw->ey;
+    vw->w00 = LB_VFN(mcs_corner_cos)(vw, ou, vw->y0), vw->w10 = LB_VFN(mcs_corner_cos)(vw, x1, vw->y0);
+    vw->w11 = LB_VFN(mcs_corner_cos)(vw, x1, y1), vw->w01 = LB_VFN(mcs_corner_cos)(vw, ou, y1);
+#endif
+#elif LB_MC_DOMAIN == 2 || LB_MC_DOMAIN == 3
+    LB_VFN(mcs_proj_at)(vw);
+    (void)min_solid;
 #else
     (void)min_solid;
 #endif
 }
 
-/* One sample's estimate for the point (u0, u1), as mc_eval (domains 0, 1). */
+#if LB_MC_DOMAIN == 3
+/* One mis sample's estimate, m samples of which np projected, as mc_eval_mis:
+ * a projected sample (proj, the same in every lane) or an area sample for
+ * the point (u0, u1), weighted by the balance heuristic. */
+LB_FN LB_V LB_VFN(mcs_eval_mis)(__global const float* lum, const LB_VFN(mcs_view) * vw, int m, int np, bool proj,
+                                LB_V u0, LB_V u1)
+{
+    LB_V wu = vw->au + R(0) * u0, wv = vw->av + R(0) * u0, wn = vw->an + R(0) * u0;
+    if (proj)
+        LB_VFN(mcs_proj_dir)(vw, u0, u1, &wu, &wv, &wn);
+    LB_V on = vw->on;
+    /* the sample's point on the light: the direction's hit (projected
+     * samples) or the area point (area samples) */
+    LB_V sc = wn != R(0) ? on / wn : R(0) * wn;
+    LB_V pu = proj ? wu * sc : vw->ou + vw->w * u0;
+    LB_V pv = proj ? wv * sc : vw->y0 + vw->ey * u1;
+    LB_V r2 = pu * pu + pv * pv + vw->on2;
+    LB_V cw = vw->au * pu + vw->av * pv + vw->an0;
+    cw = cw > R(0) ? cw : R(0) * cw;
+    LB_V r = LB_MC_SQRT(r2), aon = on < R(0) ? -on : on;
+    /* f / (na p_area + np p_proj) in area measure, times r^4 A above and below */
+    LB_V den = (real)(m - np) * r2 * r2 / vw->tv + (real)np * cw * aon * vw->area / vw->pj.area;
+    LB_M ok = vw->lit && den > R(0);
+    if (proj)
+        ok = ok && sc > R(0);
+    LB_V f = LB_VINTENSITY3(lum, -pu, -pv, -on) * cw * r;
+    return ok ? (real)m * f / den : R(0) * f;
+}
+#else
+/* One sample's estimate for the point (u0, u1), as mc_eval (domains 0-2). */
 LB_FN LB_V LB_VFN(mcs_eval)(__global const float* lum, const LB_VFN(mcs_view) * vw, LB_V u0, LB_V u1)
 {
+#if LB_MC_DOMAIN == 2
+    LB_V wu, wv, wn;
+    LB_VFN(mcs_proj_dir)(vw, u0, u1, &wu, &wv, &wn);
+    LB_V awn = wn < R(0) ? -wn : wn;
+    LB_V f = LB_VINTENSITY3(lum, -wu, -wv, -wn);
+    return vw->lit && awn > R(0) ? vw->kproj * f / awn : R(0) * f;
+#else
 #if LB_MC_DOMAIN == 1
-    LB_V sx, sy;
-    LB_VFN(lb_mc_sphrect_sample)(&vw->q, u0, u1, &sx, &sy);
+    LB_V wu0 = u0, wu1 = u1, sx, sy;
+#ifdef LB_MC_WARP
+    LB_V bp = LB_VFN(lb_mc_bilinear)(&wu0, &wu1, vw->w00, vw->w10, vw->w01, vw->w11);
+#endif
+    LB_VFN(lb_mc_sphrect_sample)(&vw->q, wu0, wu1, &sx, &sy);
     LB_V pu = vw->use ? sx : vw->ou + vw->w * u0;
     LB_V pv = vw->use ? sy : vw->y0 + vw->ey * u1;
 #else
@@ -599,29 +703,46 @@ LB_FN LB_V LB_VFN(mcs_eval)(__global const float* lum, const LB_VFN(mcs_view) * 
     cw = cw > R(0) ? cw : R(0) * cw;
     LB_V ri = r2 > R(0) ? R(1) / LB_MC_SQRT(r2) : R(0) * r2;
     LB_V f = LB_VINTENSITY3(lum, -pu, -pv, -vw->on) * cw;
-#if LB_MC_DOMAIN == 1
+#if LB_MC_DOMAIN == 1 && defined(LB_MC_WARP)
+    return f * (vw->use ? vw->ksolid / bp : vw->tv * ri * ri * ri);
+#elif LB_MC_DOMAIN == 1
     return f * (vw->use ? vw->ksolid : vw->tv * ri * ri * ri);
 #else
     return f * (ri * ri * ri);
 #endif
+#endif
 }
+#endif
 
 /* The pixels' sequence state (mc_point's, per pixel): the Sobol scrambles,
- * the random hash, or the shift of the shared set. */
+ * the random hash, the shift of the shared set, ZSobol's pixel and seed. */
 typedef struct {
-    LB_U k0, k1;
+    LB_U k0, k1, col;
     LB_V sa, sb;
+    lb_u32 sd;
+    int row, lg, digits;
 } LB_VFN(mcs_seq);
 
-LB_FN LB_VFN(mcs_seq) LB_VFN(mcs_seq_at)(LB_U hp)
+/* The pixels (columns col of row, hash hp) as mc_pixel_at, their points of
+ * the technique `salt` (as mc_point's). */
+LB_FN LB_VFN(mcs_seq) LB_VFN(mcs_seq_at)(LB_U hp, LB_U col, int row, lb_u32 seed, int lg, int res, lb_u32 salt)
 {
     LB_VFN(mcs_seq) q;
-    LB_U h = LB_VFN(lb_mc_hash)(hp); /* hash(hp ^ salt), salt 0 */
-    q.k0 = h, q.k1 = h;
+    LB_U h = LB_VFN(lb_mc_hash)(hp ^ salt);
+    q.k0 = h, q.k1 = h, q.col = col, q.row = row, q.lg = lg, q.sd = 0U;
+    int rb = 0;
+    while ((1 << rb) < res)
+        ++rb;
+    q.digits = rb + (lg + 1) / 2;
 #if LB_MC_SEQ == 2
     q.k0 = LB_VFN(lb_mc_hash)(h ^ 0xa511e9b3U);
     q.k1 = LB_VFN(lb_mc_hash)(h ^ 0x63d83595U);
+#elif LB_MC_SEQ == 3
+    q.sd = lb_mc_hash(seed ^ salt);
+    q.k0 = q.k0 * 0U + lb_mc_hash(q.sd ^ 0xa511e9b3U);
+    q.k1 = q.k1 * 0U + lb_mc_hash(q.sd ^ 0x63d83595U);
 #endif
+    (void)seed;
     q.sa = R(0) * LB_U_TO_V(h), q.sb = q.sa;
 #if LB_MC_SEQ == 0 && defined(LB_MC_SHIFT)
     q.sa = LB_VFN(lb_mc_unit)(LB_VFN(lb_mc_hash)(hp ^ 0x2545f491U));
@@ -630,21 +751,27 @@ LB_FN LB_VFN(mcs_seq) LB_VFN(mcs_seq_at)(LB_U hp)
     return q;
 }
 
-/* Point j of the pixels' sequences, as mc_point. */
-LB_FN void LB_VFN(mcs_point)(__global const real* st, const LB_VFN(mcs_seq) * q, int j, LB_V* u0, LB_V* u1)
+/* Point j of the pixels' sequences (i: the index into the shared set), as
+ * mc_point. */
+LB_FN void LB_VFN(mcs_point)(__global const real* st, const LB_VFN(mcs_seq) * q, int j, int i, LB_V* u0, LB_V* u1)
 {
 #if LB_MC_SEQ == 0
-    LB_V a = st[2 * j] + q->sa, b = st[2 * j + 1] + q->sb;
+    LB_V a = st[2 * i] + q->sa, b = st[2 * i + 1] + q->sb;
     *u0 = a >= R(1) ? a - R(1) : a;
     *u1 = b >= R(1) ? b - R(1) : b;
 #elif LB_MC_SEQ == 1
     lb_u32 hj0 = lb_mc_hash(2U * (lb_u32)j), hj1 = lb_mc_hash(2U * (lb_u32)j + 1U);
     *u0 = LB_VFN(lb_mc_unit)(LB_VFN(lb_mc_hash)(q->k0 ^ hj0));
     *u1 = LB_VFN(lb_mc_unit)(LB_VFN(lb_mc_hash)(q->k0 ^ hj1));
-#else
+#elif LB_MC_SEQ == 2
     *u0 = LB_VFN(lb_mc_unit)(LB_VFN(lb_mc_owen)((LB_U)(lb_mc_sobol0((lb_u32)j)), q->k0));
     *u1 = LB_VFN(lb_mc_unit)(LB_VFN(lb_mc_owen)((LB_U)(lb_mc_sobol1((lb_u32)j)), q->k1));
+#else
+    LB_U idx = LB_VFN(lb_mc_zsobol_index)(q->col, q->row, (lb_u32)j, q->lg, q->digits, q->sd);
+    *u0 = LB_VFN(lb_mc_unit)(LB_VFN(lb_mc_owen)(LB_VFN(lb_mc_sobol0)(idx), q->k0));
+    *u1 = LB_VFN(lb_mc_unit)(LB_VFN(lb_mc_owen)(LB_VFN(lb_mc_sobol1)(idx), q->k1));
 #endif
+    (void)i, (void)j;
 }
 
 LB_FN void LB_VFN(mcs_store)(__global real* out, int i, int left, LB_V e)
@@ -661,7 +788,7 @@ __kernel void render(__global const real* P, __global const float* lum, __global
                      __global const real* st, int n, float extra, int seed, int np, int lg, real min_solid,
                      __global real* var, __global const float* tab)
 {
-    (void)np, (void)lg, (void)tab, (void)var;
+    (void)np, (void)tab, (void)var;
     int col0, row, res;
     LB_V ou, ov, on;
     real au, av, an;
@@ -680,13 +807,25 @@ __kernel void render(__global const real* P, __global const float* lum, __global
         LB_U col = LB_TO_U(LB_TO_I(LB_LANE_INDEX) + col0);
         LB_U hp = LB_VFN(lb_mc_hash)(lb_mc_hash((lb_u32)seed * 0x9e3779b9U + 0x632be5abU) ^
                                      ((lb_u32)(row * res) + col));
-        LB_VFN(mcs_seq) q = LB_VFN(mcs_seq_at)(hp);
+#if LB_MC_DOMAIN == 3
+        /* mis: the projected samples' points and the area samples' (mc_sample's salts) */
+        LB_VFN(mcs_seq) q = LB_VFN(mcs_seq_at)(hp, col, row, (lb_u32)seed, lg, res, 0x5bd1e995U);
+        LB_VFN(mcs_seq) qa = LB_VFN(mcs_seq_at)(hp, col, row, (lb_u32)seed, lg, res, 0x27d4eb2fU);
+#else
+        LB_VFN(mcs_seq) q = LB_VFN(mcs_seq_at)(hp, col, row, (lb_u32)seed, lg, res, 0U);
+#endif
         /* the variance from the samples' offsets to the first one, as mc_ext */
         LB_V e0 = sum;
         for (int i = 0; i < m; ++i) {
             LB_V u0, u1;
-            LB_VFN(mcs_point)(st, &q, i, &u0, &u1);
+#if LB_MC_DOMAIN == 3
+            bool proj = i < np; /* the same in every lane */
+            LB_VFN(mcs_point)(st, proj ? &q : &qa, proj ? i : i - np, i, &u0, &u1);
+            LB_V e = LB_VFN(mcs_eval_mis)(lum, &vw, m, np, proj, u0, u1);
+#else
+            LB_VFN(mcs_point)(st, &q, i, i, &u0, &u1);
             LB_V e = LB_VFN(mcs_eval)(lum, &vw, u0, u1);
+#endif
             sum += e;
             e0 = i == 0 ? e : e0;
             d1 += e - e0;

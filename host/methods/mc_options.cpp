@@ -107,8 +107,8 @@ std::string mcDefines(const McOptions& o)
 
 bool mcStraight(const McOptions& o, const Scene& scene, bool lut, bool specialize)
 {
-    const bool domain = o.domain == "area" || (o.domain == "solid" && !o.cosineWarp);
-    return o.extended() && domain && o.sequence != "zsobol" && scene.shape == LightShape::Rect && lut && specialize;
+    const bool domain = o.domain == "area" || o.domain == "solid" || o.domain == "projected" || o.domain == "mis";
+    return o.extended() && domain && scene.shape == LightShape::Rect && lut && specialize;
 }
 
 int mcLog2(int samples)

@@ -39,8 +39,9 @@ std::string mcDefines(const McOptions& o);
 std::string mcSceneDefines(const McOptions& o, const Scene& scene, int n);
 
 // Whether the extended path runs in its straight-line form (kernels/mc.cl,
-// LB_MC_STRAIGHT): domain area or solid angle without the warp, a sequence
-// other than zsobol, the rectangle, the trig-free table, specialize=auto.
+// LB_MC_STRAIGHT): domain area, solid (also with the warp), projected or
+// mis, every sequence, the rectangle, the trig-free table, specialize=auto.
+// The table domains and the disk keep the general path.
 bool mcStraight(const McOptions& o, const Scene& scene, bool lut, bool specialize);
 
 // log2 of the samples per pixel, rounded up (zsobol's digit count, sobol's bits).

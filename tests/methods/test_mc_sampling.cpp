@@ -299,12 +299,15 @@ double cos2Integral(const std::vector<glm::dvec3>& poly, int g)
 TEST(McSampling, ProjectedSolidAngleSamplingIsCosineDistributed)
 {
     for (auto& poly : polygons()) {
-        auto p = f64::lb_mc_proj_setup(poly.data());
+        double qx[4], qy[4], qz[4];
+        for (int k = 0; k < 4; ++k) qx[k] = poly[k].x, qy[k] = poly[k].y, qz[k] = poly[k].z;
+        auto p = f64::lb_mc_proj_setup(qx, qy, qz);
         double lambert = f64::lb_polygon_irradiance_lambert(poly.data(), 4, {0, 0, 1});
         EXPECT_NEAR(p.area, lambert, 1e-12 * std::max(1.0, lambert)) << poly[1].x;
         double worst = 0;
         double est = p.area * gridMean(300, [&](double u0, double u1) {
-                         glm::dvec3 d = f64::lb_mc_proj_sample(&p, u0, u1);
+                         glm::dvec3 d;
+                         f64::lb_mc_proj_sample(&p, u0, u1, &d.x, &d.y, &d.z);
                          for (int k = 0; k < 4; ++k) {
                              glm::dvec3 nk = glm::normalize(glm::cross(poly[k], poly[(k + 1) % 4]));
                              double side = glm::dot(nk, d) * glm::sign(glm::dot(nk, poly[(k + 2) % 4]));

@@ -45,16 +45,27 @@ const char* kStraightSpecs[] = {
     "mc:n=4,domain=area,sequence=random",
     "mc:n=4,domain=area,sequence=shared,pattern=stratified,shift=1",
     "mc:n=4,domain=solid,sequence=sobol,min_solid=0,denoise=atrous",
+    "mc:n=3,domain=solid,sequence=zsobol,min_solid=0",
+    "mc:n=4,domain=solid,sequence=sobol,cosine_warp=1,min_solid=0",
+    "mc:n=4,domain=area,sequence=zsobol",
+    "mc:n=5,domain=projected,sequence=sobol",
+    "mc:n=3,domain=projected,sequence=random",
+    "mc:n=4,domain=projected,sequence=zsobol,denoise=atrous",
+    "mc:n=6,domain=mis,sequence=sobol",
+    "mc:n=5,domain=mis,sequence=shared,pattern=stratified,shift=1,mis_split=0.4",
 };
 
 // The worst relative pixel difference of the straight-line form against the
-// general path over the specs and scenes (h, R) at res pixels per side;
-// checks which form each took (lanes: 8 on CPU devices in float, else none).
-double worstAgainstGeneral(ocl::Runtime& rt, Precision p, std::initializer_list<std::pair<double, double>> scenes,
-                           int res, double tol)
+// general path over the specs and scenes (h, R) at res pixels per side, of
+// area and solid angle (first) and of the projected samplers (second, bound
+// 10 tol); checks which form each took (lanes: 8 on CPU devices in float,
+// else none).
+std::pair<double, double> worstAgainstGeneral(ocl::Runtime& rt, Precision p,
+                                              std::initializer_list<std::pair<double, double>> scenes, int res,
+                                              double tol)
 {
     const auto t = lumpy();
-    double worst = 0;
+    std::pair<double, double> worst{0, 0};
     for (auto [h, R] : scenes)
         for (const char* spec : kStraightSpecs) {
             Scene sc = scene(h, R, res);
@@ -66,8 +77,10 @@ double worstAgainstGeneral(ocl::Runtime& rt, Precision p, std::initializer_list<
             EXPECT_EQ(defs.find("LB_LANES=8") != std::string::npos, eight) << spec;
             EXPECT_EQ(gen.stats["defines"].get<std::string>().find("LB_MC_STRAIGHT"), std::string::npos);
             const double d = maxRelDiff(gen.image, st.image);
-            worst = std::max(worst, d);
-            EXPECT_LE(d, tol) << spec << " h " << h << " R " << R;
+            const bool proj = methods::test_tables::samplesProjected(spec);
+            double& w = proj ? worst.second : worst.first;
+            w = std::max(w, d);
+            EXPECT_LE(d, proj ? 10 * tol : tol) << spec << " h " << h << " R " << R;
         }
     return worst;
 }
@@ -76,24 +89,25 @@ double worstAgainstGeneral(ocl::Runtime& rt, Precision p, std::initializer_list<
 // the sampler's set-up and sample and the estimate are the same code
 // (common/mc_lanes.inc, the lanes' instances); what differs is the
 // compiler's order of the float operations in the two kernels: a few ulp
-// per sample. Measured worst 9.2e-7 over the 21 cases; 1e-5 is 10x that
-// and far below one sample's noise (~1e-1).
+// per sample. Measured worst 1.1e-6 over the 33 cases of area and solid
+// angle (1e-5 is 10x that and far below one sample's noise, ~1e-1), and
+// 1.7e-5 over the 15 of projected and mis (at h 0.1 R 3pi/4; bound 1e-4).
 TEST(McStraight, EightLanesEqualTheGeneralPathInFloat)
 {
     LB_REQUIRE_RUNTIME(rt);
-    double w =
+    auto [w, wp] =
         worstAgainstGeneral(*rt, Precision::Float, {{0.1, 3 * M_PI / 4}, {1.1, M_PI / 2}, {0.3, M_PI}}, 27, 1e-5);
-    std::printf("straight vs general, float: worst relative pixel difference %.3g\n", w);
+    std::printf("straight vs general, float: worst relative pixel difference %.3g, projected %.3g\n", w, wp);
 }
 
 // Double runs the one-pixel instance of the same code (the form GPUs take):
-// measured bit-equal; 1e-12 allows a compiler's reassociation.
+// measured within 6.7e-16; 1e-12 allows a compiler's reassociation.
 TEST(McStraight, OnePixelFormEqualsTheGeneralPathInDouble)
 {
     LB_REQUIRE_RUNTIME(rt);
     if (!rt->fp64()) GTEST_SKIP() << "no fp64";
-    double w = worstAgainstGeneral(*rt, Precision::Double, {{0.1, 3 * M_PI / 4}, {1.1, M_PI / 2}}, 19, 1e-12);
-    std::printf("straight vs general, double: worst relative pixel difference %.3g\n", w);
+    auto [w, wp] = worstAgainstGeneral(*rt, Precision::Double, {{0.1, 3 * M_PI / 4}, {1.1, M_PI / 2}}, 19, 1e-12);
+    std::printf("straight vs general, double: worst relative pixel difference %.3g, projected %.3g\n", w, wp);
 }
 
 // What the straight-line form does not take stays on the general path.
@@ -102,8 +116,8 @@ TEST(McStraight, OtherKeysKeepTheGeneralPath)
     LB_REQUIRE_RUNTIME(rt);
     const auto t = lumpy();
     Scene sc = scene(1.1, M_PI / 2, 8);
-    for (const char* spec : {"mc:n=2,domain=solid,sequence=sobol,cosine_warp=1", "mc:n=2,domain=solid,sequence=zsobol",
-                             "mc:n=2,domain=projected,sequence=sobol", "mc:n=2,domain=mis,sequence=sobol",
+    for (const char* spec : {"mc:n=2,domain=table,sequence=sobol", "mc:n=2,domain=mis_table,sequence=sobol",
+                             "mc:n=2,domain=mis_table_solid,sequence=sobol",
                              "mc:n=2,domain=solid,sequence=sobol,lookup=exact", "mc:n=2"}) {
         auto r = run(*rt, t, sc, spec, Precision::Float);
         EXPECT_EQ(r.stats["defines"].get<std::string>().find("LB_MC_STRAIGHT"), std::string::npos) << spec;

@@ -6,6 +6,7 @@
 #include "scene/scene.h"
 
 #include <cmath>
+#include <string>
 
 namespace lb::methods::test_tables {
 
@@ -44,6 +45,16 @@ inline Scene sceneAt(SceneKind kind, double h, double rot, int res)
     s.rotation = rot;
     s.res = res;
     return s;
+}
+
+// Whether an mc spec samples the projected solid angle (projected, mis): the
+// azimuth inversion stops within a few ulp of the projected area's terms, and
+// two kernels' operation orders may stop it one step apart (next to the
+// horizon, where the area is a difference of arcs many times itself: a few
+// 1e-5 of a pixel, tests/methods/test_mc_straight.cpp).
+inline bool samplesProjected(const std::string& spec)
+{
+    return spec.find("domain=projected") != std::string::npos || spec.find("domain=mis,") != std::string::npos;
 }
 
 }  // namespace lb::methods::test_tables
