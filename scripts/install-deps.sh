@@ -6,8 +6,19 @@
 # the project-local Python environment .venv/ (PyPI packages the tests use as
 # independent peers, and flip-evaluator for the flip metric). Idempotent:
 # re-running it on a machine that has everything only checks.
+#
+# --oidn also installs pyoidn (Intel Open Image Denoise, ~90 MB) and OpenEXR's
+# Python bindings into .venv: only experiments/mc-baselines/oidn_ceiling.py
+# needs them (no test does).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+OIDN=0
+for arg in "$@"; do
+  case "$arg" in
+    --oidn) OIDN=1 ;;
+    *) echo "install-deps: unknown option '$arg' (expected --oidn)" >&2; exit 2 ;;
+  esac
+done
 PKGS=(
   build-essential cmake pkg-config
   pocl-opencl-icd ocl-icd-opencl-dev opencl-headers opencl-clhpp-headers clinfo
@@ -40,6 +51,7 @@ fi
 # flip-evaluator (NVIDIA's FLIP, the `flip` metric: host/metrics/flip.h).
 # Without PyPI the peer and FLIP tests skip and say so, and flip is null.
 PYPI=(eulumdat-py==1.0.0 flip-evaluator==1.7 pyradiance==1.3.1)
+if [ "$OIDN" -eq 1 ]; then PYPI+=(pyoidn==2.5.1.0 OpenEXR==3.5.3); fi
 VENV=.venv
 if [ ! -x "$VENV/bin/python" ]; then
   /usr/bin/python3 -m venv --system-site-packages "$VENV"

@@ -6,18 +6,18 @@ geometric-mean NMSE over the scenes. Writes JSON to the path given as the
 first argument and a markdown table to stdout.
 
 usage: nmse_vs_n.py OUT.json [--res 32] [--seeds 2] [--ns 1,4,16,64,256]
+                     [--set samplers|mis-split] [--scenes 0.1:3pi/4,1.1:pi/2]
+
+--set mis-split: mis (area + projected by the balance heuristic) at several
+shares of N for the projected technique, against area and projected alone.
 """
 import argparse
-import json
 import math
 import os
-import subprocess
 import sys
 import tempfile
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-BIN = os.path.join(ROOT, "build", "lumibench")
-LUMDIR = os.path.join(ROOT, "..", "shared", "luminaires", "zumtobel")
+from lbrun import ZUMTOBEL as LUMDIR, nmse, parse_scenes, render, write_json
 SCENES = [(0.1, "3pi/4"), (1.1, "pi/2")]
 SAMPLERS = [
     ("area, shared (MCI)", "mc"),
@@ -29,17 +29,15 @@ SAMPLERS = [
     ("projected, zsobol", "mc:domain=projected,sequence=zsobol"),
     ("mis, sobol", "mc:domain=mis,sequence=sobol"),
 ]
-
-
-def render(lum, h, rot, spec, res, out):
-    cmd = [BIN, "render", "--luminaire", lum, "--method", spec, "--height", str(h), "--rotation", rot,
-           "--res", str(res), "--reps", "1", "--out", out, "--json"]
-    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
-
-
-def nmse(ref, test):
-    r = subprocess.run([BIN, "compare", ref, test, "--json"], check=True, capture_output=True, text=True)
-    return json.loads(r.stdout)["nmse"]
+MIS_SPLIT = [
+    ("area, sobol", "mc:domain=area,sequence=sobol"),
+    ("solid, sobol", "mc:domain=solid,sequence=sobol"),
+    ("projected, sobol", "mc:domain=projected,sequence=sobol"),
+    ("mis 0.25 projected, sobol", "mc:domain=mis,sequence=sobol,mis_split=0.25"),
+    ("mis 0.5 projected, sobol", "mc:domain=mis,sequence=sobol,mis_split=0.5"),
+    ("mis 0.75 projected, sobol", "mc:domain=mis,sequence=sobol,mis_split=0.75"),
+    ("mis 0.9 projected, sobol", "mc:domain=mis,sequence=sobol,mis_split=0.9"),
+]
 
 
 def slope(xs, ys):
@@ -55,17 +53,21 @@ def main():
     ap.add_argument("--res", type=int, default=32)
     ap.add_argument("--seeds", type=int, default=1)
     ap.add_argument("--ns", default="1,4,16,64,256")
+    ap.add_argument("--set", choices=["samplers", "mis-split"], default="samplers")
+    ap.add_argument("--scenes", default=",".join(f"{h}:{r}" for h, r in SCENES))
     a = ap.parse_args()
     ns = [int(x) for x in a.ns.split(",")]
+    samplers = SAMPLERS if a.set == "samplers" else MIS_SPLIT
+    scenes = parse_scenes(a.scenes, "nmse_vs_n.py")
     lums = sorted(f for f in os.listdir(LUMDIR) if f.lower().endswith(".ldt"))
     tmp = tempfile.mkdtemp(prefix="mcnmse")
-    table = {name: {n: [] for n in ns} for name, _ in SAMPLERS}
+    table = {name: {n: [] for n in ns} for name, _ in samplers}
     for lum in lums:
         path = os.path.join(LUMDIR, lum)
-        for h, rot in SCENES:
+        for h, rot in scenes:
             ref = os.path.join(tmp, "ref.exr")
             render(path, h, rot, "reference:tol=1e-4", a.res, ref)
-            for name, spec in SAMPLERS:
+            for name, spec in samplers:
                 for n in ns:
                     vals = []
                     for seed in range(1, a.seeds + 1):
@@ -75,14 +77,13 @@ def main():
                         vals.append(nmse(ref, out))
                     table[name][n].append(sum(vals) / len(vals))
             print(f"{lum} h {h} R {rot} done", file=sys.stderr, flush=True)
-            json.dump({"partial": True, "table": table}, open(a.out, "w"))
+            write_json(a.out, {"partial": True, "table": table})
     rows = []
-    for name, spec in SAMPLERS:
+    for name, spec in samplers:
         gm = {n: math.exp(sum(math.log(max(v, 1e-300)) for v in table[name][n]) / len(table[name][n])) for n in ns}
         s = slope([math.log(n) for n in ns], [math.log(gm[n]) for n in ns])
         rows.append({"sampler": name, "spec": spec, "gmean_nmse": gm, "slope": s, "per_scene": table[name]})
-    json.dump({"res": a.res, "seeds": a.seeds, "ns": ns, "scenes": SCENES, "luminaires": lums, "rows": rows},
-              open(a.out, "w"), indent=1)
+    write_json(a.out, {"res": a.res, "seeds": a.seeds, "ns": ns, "scenes": scenes, "luminaires": lums, "rows": rows})
     print("| sampler | " + " | ".join(f"N={n}" for n in ns) + " | slope |")
     print("|---|" + "---|" * (len(ns) + 1))
     for r in rows:

@@ -13,16 +13,12 @@ usage: table_sampler.py OUT.json [--n 16] [--seeds 2] [--res 32] [--time-res 128
        [--luminaires ARCOS3,MIREL,...]
 """
 import argparse
-import json
 import math
 import os
-import subprocess
 import sys
 import tempfile
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-BIN = os.path.join(ROOT, "build", "lumibench")
-ZUM = os.path.join(ROOT, "..", "shared", "luminaires", "zumtobel")
+from lbrun import ZUMTOBEL as ZUM, nmse, render as render_doc, write_json
 SCENES = [(0.1, "pi/2"), (1.1, "pi")]
 SAMPLERS = [
     ("projected", "mc:domain=projected,sequence=sobol"),
@@ -35,15 +31,8 @@ SAMPLERS = [
 
 
 def render(lum, h, rot, spec, res, out, reps=1):
-    cmd = [BIN, "render", "--luminaire", lum, "--method", spec, "--height", str(h), "--rotation", rot,
-           "--res", str(res), "--reps", str(reps), "--out", out, "--json"]
-    r = subprocess.run(cmd, check=True, capture_output=True, text=True)
-    return json.loads(r.stdout)["time_ms"]["median"]
-
-
-def nmse(ref, test):
-    r = subprocess.run([BIN, "compare", ref, test, "--json"], check=True, capture_output=True, text=True)
-    return json.loads(r.stdout)["nmse"]
+    """Renders spec; returns the median time (ms)."""
+    return render_doc(lum, h, rot, spec, res, out, reps)["time_ms"]["median"]
 
 
 def luminaires(names):
@@ -77,7 +66,7 @@ def main():
     a = ap.parse_args()
     tmp = tempfile.mkdtemp(prefix="mctable")
     if a.cost:
-        json.dump({"cost_ms_per_sample": cost(tmp)}, open(a.out, "w"), indent=1)
+        write_json(a.out, {"cost_ms_per_sample": cost(tmp)})
         return
     res = {}
     for name, path in luminaires(a.luminaires):
@@ -95,9 +84,8 @@ def main():
                 row[sname] = {"nmse": sum(vals) / len(vals), "ms": ms}
             res[f"{name} h {h} R {rot}"] = row
             print(f"{name} h {h} R {rot} done", file=sys.stderr, flush=True)
-            json.dump({"partial": True, "scenes": res}, open(a.out, "w"))
-    json.dump({"n": a.n, "seeds": a.seeds, "res": a.res, "time_res": a.time_res, "scenes": res}, open(a.out, "w"),
-              indent=1)
+            write_json(a.out, {"partial": True, "scenes": res})
+    write_json(a.out, {"n": a.n, "seeds": a.seeds, "res": a.res, "time_res": a.time_res, "scenes": res})
     names = [s for s, _ in SAMPLERS]
     print(f"NMSE at N = {a.n} (equal-time figure: NMSE x time / projected's)")
     print("| scene | " + " | ".join(names) + " |")
