@@ -9,14 +9,17 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 #include "lb_build_config.h"
 
 namespace lb::test {
@@ -124,6 +127,24 @@ inline std::string inputErrorOf(const std::function<void()>& f)
         return e.what();
     }
     return "(no error)";
+}
+
+// Worst per-pixel relative difference |ref - test| / max(|ref|, floor peak)
+// (peak: the largest |ref|); each pixel is held within `bound` (the loop
+// stops at the first pixel beyond it). `what` names the comparison.
+inline double worstRelDiff(const std::vector<double>& ref, const std::vector<double>& test, double floor, double bound,
+                           const std::string& what)
+{
+    double peak = 0, worst = 0;
+    for (double v : ref) peak = std::max(peak, std::fabs(v));
+    EXPECT_GT(peak, 0) << what;
+    for (size_t i = 0; i < ref.size(); ++i) {
+        double d = std::fabs(ref[i] - test[i]) / std::max(std::fabs(ref[i]), floor * peak);
+        worst = std::max(worst, d);
+        EXPECT_LE(d, bound) << what << " pixel " << i << ": " << ref[i] << " vs " << test[i];
+        if (d > bound) break;
+    }
+    return worst;
 }
 
 }  // namespace lb::test

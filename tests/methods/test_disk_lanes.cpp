@@ -27,23 +27,6 @@ Scene diskScene(double h, double R, double w, double l, int res = 45)
     return s;
 }
 
-// Worst |a - b| / max(|a|, floor peak) over the image, each pixel held to
-// `bound` (peak: the largest |a|).
-double worstDiff(const std::vector<double>& a, const std::vector<double>& b, double floor, double bound,
-                 const std::string& what)
-{
-    double peak = 0, worst = 0;
-    for (double v : a) peak = std::max(peak, std::fabs(v));
-    EXPECT_GT(peak, 0) << what;
-    for (size_t i = 0; i < a.size(); ++i) {
-        double d = std::fabs(a[i] - b[i]) / std::max(std::fabs(a[i]), floor * peak);
-        worst = std::max(worst, d);
-        EXPECT_LE(d, bound) << what << " pixel " << i << ": " << a[i] << " vs " << b[i];
-        if (d > bound) break;
-    }
-    return worst;
-}
-
 RenderResult renderOnce(ocl::Runtime& rt, const photometry::Table& t, const Scene& s, const std::string& spec,
                         Precision p)
 {
@@ -100,26 +83,27 @@ TEST(DiskLanes, StraightLineFormEqualsTheGeneralKernel)
             if (!rt->fp64()) {
                 auto gf = renderOnce(*rt, t, s, general, Precision::Float);
                 for (const char* lanes : {"1", "8"})
-                    worstF = std::max(
-                        worstF,
-                        worstDiff(gf.image.px,
-                                  renderOnce(*rt, t, s, straight + "lanes=" + lanes, Precision::Float).image.px, 1e-4,
-                                  1e-3, what + " lanes=" + lanes));
+                    worstF = std::max(worstF,
+                                      test::worstRelDiff(
+                                          gf.image.px,
+                                          renderOnce(*rt, t, s, straight + "lanes=" + lanes, Precision::Float).image.px,
+                                          1e-4, 1e-3, what + " lanes=" + lanes));
                 continue;
             }
             auto gd = renderOnce(*rt, t, s, general, Precision::Double);
             auto gf = renderOnce(*rt, t, s, general, Precision::Float);
-            const double g = worstDiff(gd.image.px, gf.image.px, 1e-4, HUGE_VAL, what + " general float");
+            const double g = test::worstRelDiff(gd.image.px, gf.image.px, 1e-4, HUGE_VAL, what + " general float");
             worstG = std::max(worstG, g);
             for (const char* lanes : {"1", "8"}) {
                 auto sf = renderOnce(*rt, t, s, straight + "lanes=" + lanes, Precision::Float);
                 EXPECT_EQ(sf.stats.value("form", ""), "straight-line") << what;
-                worstF = std::max(
-                    worstF, worstDiff(gd.image.px, sf.image.px, 1e-4, std::max(2e-5, 2 * g), what + " lanes=" + lanes));
+                worstF = std::max(worstF,
+                                  test::worstRelDiff(gd.image.px, sf.image.px, 1e-4, std::max(2e-5, 2 * g),
+                                                     what + " lanes=" + lanes));
                 EXPECT_EQ(sf.stats["triangles_per_pixel"], gf.stats["triangles_per_pixel"]) << what;
             }
             auto sd = renderOnce(*rt, t, s, straight + "lanes=1", Precision::Double);
-            worstD = std::max(worstD, worstDiff(gd.image.px, sd.image.px, 1e-9, 1e-10, what + " double"));
+            worstD = std::max(worstD, test::worstRelDiff(gd.image.px, sd.image.px, 1e-9, 1e-10, what + " double"));
             if (HasFailure()) return;
         }
     std::cout << "disk straight-line form (float, 1 and 8 lanes) against the double general kernel: worst " << worstF

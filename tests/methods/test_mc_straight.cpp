@@ -23,17 +23,6 @@ using test::scene;
 
 using methods::test_tables::lumpy;
 
-// The largest per-pixel difference of the two images relative to the pixel
-// (or to 1e-6 of the peak where the pixel is darker).
-double maxRelDiff(const Image& a, const Image& b)
-{
-    double peak = 0, worst = 0;
-    for (double v : a.px) peak = std::max(peak, std::fabs(v));
-    for (size_t i = 0; i < a.px.size(); ++i)
-        worst = std::max(worst, std::fabs(a.px[i] - b.px[i]) / std::max(std::fabs(a.px[i]), 1e-6 * peak));
-    return worst;
-}
-
 // The keys the straight-line form takes (min_solid=0: no pixel sits at the
 // switch to area sampling, where the two solid-angle formulas' last bits
 // could pick different branches); res 27 leaves a partial last work-item.
@@ -76,11 +65,12 @@ std::pair<double, double> worstAgainstGeneral(ocl::Runtime& rt, Precision p,
             const bool eight = p == Precision::Float && rt.info().type == "CPU";
             EXPECT_EQ(defs.find("LB_LANES=8") != std::string::npos, eight) << spec;
             EXPECT_EQ(gen.stats["defines"].get<std::string>().find("LB_MC_STRAIGHT"), std::string::npos);
-            const double d = maxRelDiff(gen.image, st.image);
+            // relative to the pixel, or to 1e-6 of the peak where it is darker
             const bool proj = methods::test_tables::samplesProjected(spec);
+            const double d = test::worstRelDiff(gen.image.px, st.image.px, 1e-6, proj ? 10 * tol : tol,
+                                                fmt::format("{} h {} R {}", spec, h, R));
             double& w = proj ? worst.second : worst.first;
             w = std::max(w, d);
-            EXPECT_LE(d, proj ? 10 * tol : tol) << spec << " h " << h << " R " << R;
         }
     return worst;
 }

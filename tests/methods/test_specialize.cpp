@@ -230,24 +230,6 @@ TEST(Specialize, CubatureRectFanRule)
     EXPECT_EQ(cubatureLanes(analyseCubature(s, t, opts(cb)), opts(cb), "CPU", false), 8);
 }
 
-// Worst per-pixel relative difference of `test` from `ref` (denominator at
-// least 1e-12 of ref's peak); each pixel is held within `bound` (the loop
-// stops at the first pixel beyond it). `what` names the comparison.
-double worstRelDiff(const std::vector<double>& ref, const std::vector<double>& test, double bound,
-                    const std::string& what)
-{
-    double peak = 0, worst = 0;
-    for (double v : ref) peak = std::max(peak, std::fabs(v));
-    EXPECT_GT(peak, 0) << what;
-    for (size_t i = 0; i < ref.size(); ++i) {
-        double d = std::fabs(ref[i] - test[i]) / std::max(std::fabs(ref[i]), 1e-12 * peak);
-        worst = std::max(worst, d);
-        EXPECT_LE(d, bound) << what << " pixel " << i << ": " << ref[i] << " vs " << test[i];
-        if (d > bound) break;
-    }
-    return worst;
-}
-
 // `spec` rendered by the rectangle fan with `lanes` (1 or 8) in precision p,
 // against the general kernel in precision `ref`; per pixel within `rel` of
 // the general value (floor 1e-12 of the peak). Returns the worst relative
@@ -263,7 +245,8 @@ double cubatureDiff(ocl::Runtime& rt, const photometry::Table& t, const Scene& s
     std::string sep = spec.find(':') == std::string::npos ? ":" : ",";
     auto gen = render(rt, t, s, parseSpec(spec + sep + "specialize=none"), ref, opt);
     auto sp = render(rt, t, s, parseSpec(spec + sep + "lanes=" + lanes), p, opt);
-    double worst = worstRelDiff(gen.image.px, sp.image.px, rel, spec + " lanes=" + lanes + " " + s.describe());
+    double worst =
+        test::worstRelDiff(gen.image.px, sp.image.px, 1e-12, rel, spec + " lanes=" + lanes + " " + s.describe());
     // The statistics (triangles and flips per pixel) follow the general code's
     // cases, in the same precision (float and double may decide a flip at a
     // near-cocircular quadrilateral differently).
@@ -282,7 +265,7 @@ double generalFloatError(ocl::Runtime& rt, const photometry::Table& t, const Sce
     auto general = parseSpec(spec + (spec.find(':') == std::string::npos ? ":" : ",") + "specialize=none");
     auto gf = render(rt, t, s, general, Precision::Float, opt);
     auto gd = render(rt, t, s, general, Precision::Double, opt);
-    return worstRelDiff(gd.image.px, gf.image.px, HUGE_VAL, spec + " general float " + s.describe());
+    return test::worstRelDiff(gd.image.px, gf.image.px, 1e-12, HUGE_VAL, spec + " general float " + s.describe());
 }
 
 TEST(Specialize, CubatureRectFanEqualsGeneral)
@@ -398,7 +381,7 @@ TEST(Specialize, StraightLineFormsEqualGeneral)
         std::string general = spec.find("specialize") != std::string::npos ? spec : spec + sep + "specialize=none";
         auto gen = render(*rt, t, s, parseSpec(general), pr, opt);
         auto sp = render(*rt, t, s, parseSpec(spec), p, opt);
-        return worstRelDiff(gen.image.px, sp.image.px, bound, spec + " " + s.describe());
+        return test::worstRelDiff(gen.image.px, sp.image.px, 1e-12, bound, spec + " " + s.describe());
     };
     struct Case {
         std::string name, define;
@@ -559,7 +542,8 @@ auto ownFlipsDiff(ocl::Runtime& rt, const photometry::Table& t, std::string defi
         auto gen = render(rt, t, s, parseSpec(spec + ",specialize=none"), pr, opt);
         auto sp = render(rt, t, s, parseSpec(spec + ",lanes=" + lanes), p, opt);
         EXPECT_NE(sp.stats.value("defines", std::string()).find(define), std::string::npos);
-        double w = worstRelDiff(gen.image.px, sp.image.px, bound, spec + " lanes=" + lanes + " " + s.describe());
+        double w =
+            test::worstRelDiff(gen.image.px, sp.image.px, 1e-12, bound, spec + " lanes=" + lanes + " " + s.describe());
         double gf = gen.stats["flips_per_pixel"], sf = sp.stats["flips_per_pixel"];
         if (p != pr) gen = render(rt, t, s, parseSpec(spec + ",specialize=none"), p, opt);
         EXPECT_EQ(gen.stats["triangles_per_pixel"], sp.stats["triangles_per_pixel"]) << spec << " " << s.describe();
