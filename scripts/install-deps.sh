@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs every Debian package lumibench needs to build, test and plot
+# Installs every Debian package lumibench needs to build (ccache: scripts/build.sh
+# uses it where present, so clones share compiled objects), test and plot
 # (python3-pandas and python3-seaborn: the tests that results.csv loads and that
 # the docs' examples run on it; chromium: the test that
 # opens report.html in a headless browser), and
@@ -20,7 +21,7 @@ for arg in "$@"; do
   esac
 done
 PKGS=(
-  build-essential cmake pkg-config
+  build-essential cmake pkg-config ccache
   pocl-opencl-icd ocl-icd-opencl-dev opencl-headers opencl-clhpp-headers clinfo
   libglm-dev libopenexr-dev libnlopt-cxx-dev libnlopt-dev
   googletest libgtest-dev
