@@ -5,7 +5,8 @@
 A pair (a method and its MC partner on one scene) is *on time* where the
 partner's paired time ratio lies within the run's tolerance (the record's
 equal_time.ratio, +-10 %); off-time pairs are counted as such and not as wins,
-ties or losses. On-time verdicts as results::verdict: a win where the method's
+ties or losses (their verdicts are listed apart, for what they are: against an MC that ran
+longer or shorter). On-time verdicts as results::verdict: a win where the method's
 value (its 95 % interval where it has one) lies below the partner's interval, a
 loss where above, else a tie.
 
@@ -43,17 +44,19 @@ def tally(doc):
         m = methods.get((r["scene"], et["label"]))
         if m is None:
             continue
-        row = rows.setdefault(et["label"], {"pairs": 0, "off_time": 0, "nmse": {}, "flip": {},
+        row = rows.setdefault(et["label"], {"pairs": 0, "off_time": 0, "nmse": {}, "flip": {}, "off_nmse": {}, "off_flip": {},
                                             "ratios": [], "n": [], "log_nmse": []})
         row["pairs"] += 1
         row["ratios"].append(et["ratio"])
         row["n"].append(r.get("n", et.get("n")))
-        if abs(et["ratio"] - 1) > et.get("tolerance", 0.1):
-            row["off_time"] += 1
-            continue
+        off = abs(et["ratio"] - 1) > et.get("tolerance", 0.1)
+        row["off_time"] += off
         for metric in ("nmse", "flip"):
             v = verdict(m, r, metric)
-            row[metric][v] = row[metric].get(v, 0) + 1
+            key = "off_" + metric if off else metric
+            row.setdefault(key, {})[v] = row.setdefault(key, {}).get(v, 0) + 1
+        if off:
+            continue
         if m["nmse"] > 0 and r["nmse"] > 0:
             row["log_nmse"].append(math.log(m["nmse"] / r["nmse"]))
     return rows
@@ -70,15 +73,16 @@ def main():
     a = ap.parse_args()
     rows = tally(load(a.results))
     print("| method | pairs | off-time | NMSE wins / ties / losses | FLIP wins / ties / losses "
-          "| NMSE / MC's (geo. mean, on time) | MC N | MC time / method time, median (range) |")
-    print("|---|---|---|---|---|---|---|---|")
+          "| NMSE / MC's (geo. mean, on time) | MC N | MC time / method time, median (range) "
+          "| off-time pairs: NMSE, FLIP w / t / l |")
+    print("|---|---|---|---|---|---|---|---|---|")
     out = {}
     for label, r in rows.items():
         geo = math.exp(statistics.mean(r["log_nmse"])) if r["log_nmse"] else float("nan")
         ns = [n for n in r["n"] if n is not None]
         print(f"| {label} | {r['pairs']} | {r['off_time']} | {wtl(r['nmse'])} | {wtl(r['flip'])} | {geo:.3g} "
               f"| {min(ns):g}-{max(ns):g} | {statistics.median(r['ratios']):.2f} "
-              f"({min(r['ratios']):.2f}-{max(r['ratios']):.2f}) |")
+              f"({min(r['ratios']):.2f}-{max(r['ratios']):.2f}) | {wtl(r['off_nmse'])}, {wtl(r['off_flip'])} |")
         out[label] = {k: v for k, v in r.items() if k != "log_nmse"}
         out[label]["nmse_ratio_geomean"] = geo
     if a.json:

@@ -546,11 +546,11 @@ std::string format(const nlohmann::json& d)
         }
     }
     if (d.contains("filters")) {
-        const auto& f = d["filters"];
+        const auto& flt = d["filters"];
         o << fmt::format("Filters after one solid + sobol MC pass at N = 1 (limits: {:.1f} GB/s copy, {:.0f} GFLOP/s "
                          "nominal):\n",
-                         f["bandwidth_gbps"].get<double>(), f["peak_gflops"].get<double>());
-        for (const auto& r : f["filters"]) {
+                         flt["bandwidth_gbps"].get<double>(), flt["peak_gflops"].get<double>());
+        for (const auto& r : flt["filters"]) {
             o << fmt::format("  {}: passes {:.3f} ms / MC {:.3f} ms = {:.2f}x (target <= {:g}: {})\n",
                              r["spec"].get<std::string>(), r["passes_ms"].get<double>(), r["mc_ms"].get<double>(),
                              r["ratio"].get<double>(), r["goal"].get<double>(), r["ok"].get<bool>() ? "met" : "MISSED");

@@ -35,6 +35,7 @@
                    (f) * (R(0.24023718463104904) + (f) * (R(0.05591689382504847) + (f) * R(0.009600395517054633)))))
 /* x + 1.5 2^p (p the mantissa's bits) rounds x to an integer held in the
  * low bits; minus it, the rounded value */
+#undef LB_EXP2_MAGIC /* the host includes this file once per precision */
 #if LB_REAL_IS_DOUBLE
 #define LB_EXP2_MAGIC R(6755399441055744.0)
 #else
