@@ -488,9 +488,33 @@ nlohmann::json run(ocl::Runtime& rt, const photometry::Table& table, const Scene
     return doc;
 }
 
+// The filters' rows of run()'s document (none: nothing).
+void formatFilters(std::ostream& o, const nlohmann::json& d)
+{
+    if (!d.contains("filters")) return;
+    const auto& flt = d["filters"];
+    o << fmt::format("Filters after one solid + sobol MC pass at N = 1 (limits: {:.1f} GB/s copy, {:.0f} GFLOP/s "
+                     "nominal):\n",
+                     flt["bandwidth_gbps"].get<double>(), flt["peak_gflops"].get<double>());
+    for (const auto& r : flt["filters"]) {
+        o << fmt::format("  {}: passes {:.3f} ms / MC {:.3f} ms = {:.2f}x (target <= {:g}: {})\n",
+                         r["spec"].get<std::string>(), r["passes_ms"].get<double>(), r["mc_ms"].get<double>(),
+                         r["ratio"].get<double>(), r["goal"].get<double>(), r["ok"].get<bool>() ? "met" : "MISSED");
+        for (const auto& p : r["passes"])
+            o << fmt::format("    {:<12} {:7.2f} ns/pixel (limit {:5.2f})\n", p["stage"].get<std::string>(),
+                             p["ns_per_pixel"].get<double>(), p["limit_ns_per_pixel"].get<double>());
+    }
+}
+
 std::string format(const nlohmann::json& d)
 {
     std::ostringstream o;
+    if (!d.contains("mc")) {  // --filters
+        o << fmt::format("device: {} ({}), {}^2 pixels\n", d["device"].get<std::string>(),
+                         d["driver"].get<std::string>(), d["res"].get<int>());
+        formatFilters(o, d);
+        return o.str();
+    }
     o << fmt::format("device: {} ({}), {}^2 pixels, local {}x{}, median of {} after 1 warm-up\n",
                      d["device"].get<std::string>(), d["driver"].get<std::string>(), d["res"].get<int>(),
                      d["local"][0].get<int>(), d["local"][1].get<int>(), d["reps"].get<int>());
@@ -545,20 +569,7 @@ std::string format(const nlohmann::json& d)
                              r["ratio"].get<double>(), r["t8_ratio"].get<double>(), goal);
         }
     }
-    if (d.contains("filters")) {
-        const auto& flt = d["filters"];
-        o << fmt::format("Filters after one solid + sobol MC pass at N = 1 (limits: {:.1f} GB/s copy, {:.0f} GFLOP/s "
-                         "nominal):\n",
-                         flt["bandwidth_gbps"].get<double>(), flt["peak_gflops"].get<double>());
-        for (const auto& r : flt["filters"]) {
-            o << fmt::format("  {}: passes {:.3f} ms / MC {:.3f} ms = {:.2f}x (target <= {:g}: {})\n",
-                             r["spec"].get<std::string>(), r["passes_ms"].get<double>(), r["mc_ms"].get<double>(),
-                             r["ratio"].get<double>(), r["goal"].get<double>(), r["ok"].get<bool>() ? "met" : "MISSED");
-            for (const auto& p : r["passes"])
-                o << fmt::format("    {:<12} {:7.2f} ns/pixel (limit {:5.2f})\n", p["stage"].get<std::string>(),
-                                 p["ns_per_pixel"].get<double>(), p["limit_ns_per_pixel"].get<double>());
-        }
-    }
+    formatFilters(o, d);
     return o.str();
 }
 
