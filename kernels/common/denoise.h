@@ -4,8 +4,10 @@
  * common/denoise_math.h's; here each work-item filters eight pixels of a row
  * (columns 8 g0 .. 8 g0 + 7, row g1; a 2D launch over ceil(res / 8) x res):
  * in the interior, where every tap of the eight is inside the image, in eight
- * lanes with contiguous loads and no border tests; elsewhere (the border, a
- * last partial group of columns) pixel by pixel through denoise_math.h.
+ * lanes with contiguous loads and no border tests (the a-trous level also in
+ * the first and last rows, skipping a tap row outside for all lanes alike);
+ * elsewhere (the border, a last partial group of columns) pixel by pixel
+ * through denoise_math.h.
  *
  * lb_gauss: one pass of the separable Gaussian, along rows (vertical = 0) or
  *   columns; w[0 .. radius] the host's weights (constant memory, summing to 1
@@ -57,24 +59,33 @@ __kernel void lb_gauss(__global const real* in, __global real* out, int res, __c
     vstore8(s, 0, out + r * res + c0);
 }
 
-/* the edge stop's factor of eight pixels in the interior (lb_atrous_k) */
-LB_FN_INLINE lb_dn8 lb_atrous_k8(__global const real* p, __global const real* v, int res, real sigma_l)
+/* the edge stop's factor of eight pixels whose columns are inside
+ * (lb_atrous_k; rows outside the image are left out, uniformly) */
+LB_FN_INLINE lb_dn8 lb_atrous_k8(__global const real* p, __global const real* v, int res, int r, real sigma_l)
 {
     lb_dn8 vb = (lb_dn8)R(0);
+    real wb = R(0);
     for (int dy = -1; dy <= 1; ++dy) {
+        if (r + dy < 0 || r + dy >= res)
+            continue;
         __global const real* q = v + dy * res;
         lb_dn8 row = R(0.25) * vload8(0, q - 1) + R(0.5) * vload8(0, q) + R(0.25) * vload8(0, q + 1);
-        vb += (dy == 0 ? R(0.5) : R(0.25)) * row;
+        real ky = dy == 0 ? R(0.5) : R(0.25);
+        vb += ky * row;
+        wb += ky;
     }
-    return R(-LB_LOG2E) / (sigma_l * sqrt(fmax(vb, (lb_dn8)R(0))) + R(1e-10) * fabs(vload8(0, p)) + R(1e-30));
+    return R(-LB_LOG2E) / (sigma_l * sqrt(fmax(vb / wb, (lb_dn8)R(0))) + R(1e-10) * fabs(vload8(0, p)) + R(1e-30));
 }
 
-__kernel void lb_atrous(__global const real* in, __global const real* var, __global real* out, __global real* varOut,
-                        int res, int step, real sigma_l)
+/* Pixel by pixel only where a tap's column leaves the image (the first and
+ * last 2 step columns, a partial group); a tap row outside the image is
+ * skipped by all eight lanes alike. */
+__kernel void lb_atrous(__global const real* in, __global const real* var, __global real* out,
+                        __global real* varOut, int res, int step, real sigma_l)
 {
     int c0, r, n = lb_dn_lanes(res, &c0, &r);
     const int e = 2 * step;
-    if (n < 8 || c0 < e || c0 + 8 + e > res || r < e || r + e >= res) {
+    if (n < 8 || c0 < e || c0 + 8 + e > res) {
         for (int i = 0; i < n; ++i) {
             real vo;
             out[r * res + c0 + i] = lb_atrous_px(in, var, res, c0 + i, r, step, sigma_l, &vo);
@@ -83,9 +94,11 @@ __kernel void lb_atrous(__global const real* in, __global const real* var, __glo
         return;
     }
     const int at = r * res + c0;
-    lb_dn8 cp = vload8(0, in + at), k = lb_atrous_k8(in + at, var + at, res, sigma_l);
+    lb_dn8 cp = vload8(0, in + at), k = lb_atrous_k8(in + at, var + at, res, r, sigma_l);
     lb_dn8 s = (lb_dn8)R(0), ws = s, vs = s;
     for (int dy = -2; dy <= 2; ++dy) {
+        if (r + dy * step < 0 || r + dy * step >= res)
+            continue;
         real hy = lb_atrous_h(dy);
         for (int dx = -2; dx <= 2; ++dx) {
             int q = at + dy * step * res + dx * step;
