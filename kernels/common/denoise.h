@@ -4,10 +4,10 @@
  * common/denoise_math.h's; here each work-item filters eight pixels of a row
  * (columns 8 g0 .. 8 g0 + 7, row g1; a 2D launch over ceil(res / 8) x res):
  * in the interior, where every tap of the eight is inside the image, in eight
- * lanes with contiguous loads and no border tests (the a-trous level also in
- * the first and last rows, skipping a tap row outside for all lanes alike);
- * elsewhere (the border, a last partial group of columns) pixel by pixel
- * through denoise_math.h.
+ * lanes with contiguous loads and no border tests; elsewhere (the border, a
+ * last partial group of columns) pixel by pixel through denoise_math.h, but
+ * for the a-trous level, which runs every full group in eight lanes (taps
+ * outside the image weighted 0, gathered only where a column leaves it).
  *
  * lb_gauss: one pass of the separable Gaussian, along rows (vertical = 0) or
  *   columns; w[0 .. radius] the host's weights (constant memory, summing to 1
@@ -77,15 +77,31 @@ LB_FN_INLINE lb_dn8 lb_atrous_k8(__global const real* p, __global const real* v,
     return R(-LB_LOG2E) / (sigma_l * sqrt(fmax(vb / wb, (lb_dn8)R(0))) + R(1e-10) * fabs(vload8(0, p)) + R(1e-30));
 }
 
-/* Pixel by pixel only where a tap's column leaves the image (the first and
- * last 2 step columns, a partial group); a tap row outside the image is
- * skipped by all eight lanes alike. */
+/* the taps' values and variances at columns c0 + 8 lanes, row rr, where some
+ * leave the image (clamped; *ok 0 there, else 1) */
+LB_FN void lb_atrous_gather8(__global const real* in, __global const real* var, int res, int at, int cc0,
+                             lb_dn8* cq, lb_dn8* vq, lb_dn8* ok)
+{
+    real a[8], b[8], m[8];
+    for (int i = 0; i < 8; ++i) {
+        int cc = clamp(cc0 + i, 0, res - 1);
+        a[i] = in[at + cc];
+        b[i] = var[at + cc];
+        m[i] = cc == cc0 + i ? R(1) : R(0);
+    }
+    *cq = vload8(0, a);
+    *vq = vload8(0, b);
+    *ok = vload8(0, m);
+}
+
+/* Pixel by pixel only in a last partial group of columns; a tap row outside
+ * the image is left out by all eight lanes alike, a tap column outside by its
+ * lane (weight 0: the sums of denoise_math.h, which skips it). */
 __kernel void lb_atrous(__global const real* in, __global const real* var, __global real* out,
                         __global real* varOut, int res, int step, real sigma_l)
 {
     int c0, r, n = lb_dn_lanes(res, &c0, &r);
-    const int e = 2 * step;
-    if (n < 8 || c0 < e || c0 + 8 + e > res) {
+    if (n < 8) {
         for (int i = 0; i < n; ++i) {
             real vo;
             out[r * res + c0 + i] = lb_atrous_px(in, var, res, c0 + i, r, step, sigma_l, &vo);
@@ -94,20 +110,36 @@ __kernel void lb_atrous(__global const real* in, __global const real* var, __glo
         return;
     }
     const int at = r * res + c0;
-    lb_dn8 cp = vload8(0, in + at), k = lb_atrous_k8(in + at, var + at, res, r, sigma_l);
+    const bool edge = c0 < 2 * step || c0 + 8 + 2 * step > res;
+    lb_dn8 cp = vload8(0, in + at), k;
+    if (c0 >= 1 && c0 + 8 < res) {
+        k = lb_atrous_k8(in + at, var + at, res, r, sigma_l);
+    } else {
+        real kk[8];
+        for (int i = 0; i < 8; ++i)
+            kk[i] = lb_atrous_k(in, var, res, c0 + i, r, sigma_l);
+        k = vload8(0, kk);
+    }
     lb_dn8 s = (lb_dn8)R(0), ws = s, vs = s;
     for (int dy = -2; dy <= 2; ++dy) {
-        if (r + dy * step < 0 || r + dy * step >= res)
+        int rr = r + dy * step;
+        if (rr < 0 || rr >= res)
             continue;
         real hy = lb_atrous_h(dy);
         for (int dx = -2; dx <= 2; ++dx) {
-            int q = at + dy * step * res + dx * step;
-            lb_dn8 cq = vload8(0, in + q);
+            int cc0 = c0 + dx * step;
+            lb_dn8 cq, vq, ok = (lb_dn8)R(1);
+            if (!edge || (cc0 >= 0 && cc0 + 8 <= res)) {
+                cq = vload8(0, in + rr * res + cc0);
+                vq = vload8(0, var + rr * res + cc0);
+            } else {
+                lb_atrous_gather8(in, var, res, rr * res, cc0, &cq, &vq, &ok);
+            }
             real h = hy * lb_atrous_h(dx);
-            lb_dn8 wq = dx == 0 && dy == 0 ? (lb_dn8)h : h * lb_exp2_neg8(k * fabs(cp - cq));
+            lb_dn8 wq = dx == 0 && dy == 0 ? (lb_dn8)h : ok * (h * lb_exp2_neg8(k * fabs(cp - cq)));
             s += wq * cq;
             ws += wq;
-            vs += wq * wq * vload8(0, var + q);
+            vs += wq * wq * vq;
         }
     }
     vstore8(s / ws, 0, out + at);
