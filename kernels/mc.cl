@@ -41,8 +41,9 @@
  * the luminaire's table, MIS of table and projected or solid angle), the math in
  * common/mc_sample.h and common/mc_table.h (the table sampler `tab`, built
  * by host/methods/mc_table.cpp); LB_MC_VAR writes each pixel's variance
- * for the a-trous filter (common/denoise.h, whose kernels this program also
- * holds: the method's post-passes).
+ * (-1 where it has one sample: no estimate) for the a-trous filter
+ * (common/denoise.h, whose kernels this program also holds: the method's
+ * post-passes).
  * @variants: "" | "-DLB_LUT" | "-DLB_LUT -DLB_LUT_1D -DLB_NO_HORIZON -DLB_NO_BACK" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_MC_WARP" | "-DLB_MC_EXT -DLB_MC_DOMAIN=3 -DLB_MC_SEQ=3 -DLB_MC_CLIPV -DLB_MC_VAR -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=2 -DLB_MC_SEQ=1 -DLB_MC_SHIFT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=4 -DLB_MC_SEQ=2 -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=5 -DLB_MC_SEQ=1 -DLB_MC_CLIPV" | "-DLB_MC_EXT -DLB_MC_DOMAIN=6 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_SEQ=2 -DLB_MC_DISK" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_MC_VAR -DLB_LUT -DLB_MC_STRAIGHT -DLB_LANES=8" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=0 -DLB_MC_SHIFT -DLB_LUT -DLB_NO_BACK -DLB_MC_STRAIGHT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=0 -DLB_MC_SEQ=1 -DLB_LUT -DLB_MC_STRAIGHT -DLB_LANES=8" | "-DLB_MC_EXT -DLB_MC_DOMAIN=2 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_LUT -DLB_MC_STRAIGHT -DLB_LANES=8" | "-DLB_MC_EXT -DLB_MC_DOMAIN=3 -DLB_MC_SEQ=3 -DLB_MC_CLIPV -DLB_MC_VAR -DLB_LUT -DLB_MC_STRAIGHT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=3 -DLB_MC_WARP -DLB_LUT -DLB_MC_STRAIGHT -DLB_LANES=8" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=0 -DLB_MC_SHIFT -DLB_MC_DISK" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=3 -DLB_MC_DISK -DLB_MC_VAR -DLB_LUT"
  */
 #include "common/lbmath.h"
@@ -462,7 +463,8 @@ LB_FN_INLINE real mc_sample(__global const float* lum, __global const real* st, 
 }
 
 /* The pixel's estimate with m samples; *ev: the variance of the estimate (the
- * sample variance / m). One barrier per sample, as the main loop. */
+ * sample variance / m; -1 with one sample). One barrier per sample, as the
+ * main loop. */
 LB_FN_INLINE real mc_ext(__global const float* lum, __global const real* st, const mc_pixel* px,
                          const mc_view* vw, int m, real min_solid, real* ev)
 {
@@ -482,7 +484,7 @@ LB_FN_INLINE real mc_ext(__global const float* lum, __global const real* st, con
         barrier(CLK_LOCAL_MEM_FENCE);
 #endif
     }
-    *ev = m > 1 ? fmax(R(0), d2 - d1 * d1 / (real)m) / ((real)m * (real)(m - 1)) : R(0);
+    *ev = m > 1 ? fmax(R(0), d2 - d1 * d1 / (real)m) / ((real)m * (real)(m - 1)) : R(-1);
     return sum / (real)m;
 }
 #endif
@@ -836,7 +838,7 @@ __kernel void render(__global const real* P, __global const float* lum, __global
 #ifdef LB_MC_VAR
     LB_V ev = d2 - d1 * d1 / (real)m;
     ev = ev > R(0) ? ev : R(0) * ev;
-    LB_VFN(mcs_store)(var, row * res + col0, res - col0, m > 1 ? ev / ((real)m * (real)(m - 1)) : R(0) * ev);
+    LB_VFN(mcs_store)(var, row * res + col0, res - col0, m > 1 ? ev / ((real)m * (real)(m - 1)) : R(0) * ev - R(1));
 #endif
 }
 #include "common/lanes_end.h"

@@ -3,6 +3,7 @@
 #include "equaltime/equaltime.h"
 #include "experiments/results.h"
 #include "methods/cubature_options.h"
+#include "methods/mc_denoise.h"
 #include "methods/registry.h"
 #include "methods/render.h"
 #include "methods/samples.h"
@@ -381,6 +382,87 @@ nlohmann::json mcSamplers(Bench& b)
     return {{"area_ms_per_sample", area}, {"area_t8_ms", area8}, {"n", {lo, hi}}, {"samplers", rows}};
 }
 
+// The device's limits for the filters' rows: copy bandwidth (a 64 MiB
+// buffer copied, read + write counted, median of 5) and a nominal peak of one
+// float FMA per lane per cycle (compute units x clock x native float width x 2).
+struct Limits {
+    double gbps, gflops;
+};
+Limits deviceLimits(Bench& b)
+{
+    const size_t bytes = size_t(64) << 20;
+    cl::Buffer a(b.rt.context(), CL_MEM_READ_WRITE, bytes), c(b.rt.context(), CL_MEM_READ_WRITE, bytes);
+    auto t = b.rt.time(
+        [&] {
+            cl::Event e;
+            b.rt.queue().enqueueCopyBuffer(a, c, 0, 0, bytes, nullptr, &e);
+            return e;
+        },
+        5, 1);
+    const cl::Device& d = b.rt.info().device;
+    const double ghz = d.getInfo<CL_DEVICE_MAX_CLOCK_FREQUENCY>() * 1e-3;
+    const double lanes = d.getInfo<CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT>();
+    return {2.0 * bytes / (t.median_ms * 1e6), b.rt.info().computeUnits * ghz * std::max(1.0, lanes) * 2};
+}
+
+// 7. The filters (kernels/common/denoise.h) after one solid + sobol MC pass
+// at N = 1: each pass's time per pixel (Prepared::stageMs, the medians of the
+// same launches), the machine's limit for it (bytes over bandwidth, flops
+// over the nominal peak; the larger), and the passes over the MC pass of the
+// same launches (goals: the Gaussian <= 1, the a-trous filter <= 3).
+nlohmann::json filterTimes(Bench& b)
+{
+    const Limits lim = deviceLimits(b);
+    const double px = double(b.scene.res) * b.scene.res;
+    const int radius = methods::gaussShape(0, 0, b.scene.res).radius;
+    // per pixel: reals read + written, flops (a Gaussian tap folded: r + 1
+    // products, 2 r sums; an a-trous tap ~ 28 with its polynomial exp2, the
+    // prefilter and divisions 30; the 7 x 7 moments 3 per tap)
+    auto cost = [&](const std::string& stage, double* reals, double* flops) {
+        if (stage == "denoise_row" || stage == "denoise_col")
+            *reals = 2, *flops = 3.0 * radius + 1;
+        else if (stage == "denoise_var")
+            *reals = 3, *flops = 49 * 3 + 5;
+        else
+            *reals = 4, *flops = 25 * 28 + 30;
+    };
+    const size_t realBytes = 4;  // float
+    nlohmann::json out = {
+        {"bandwidth_gbps", lim.gbps}, {"peak_gflops", lim.gflops}, {"filters", nlohmann::json::array()}};
+    for (auto [filter, goal] : {std::pair<const char*, double>{"gauss16", 1.0}, {"atrous", 3.0}}) {
+        const std::string spec = fmt::format("mc:n=1,domain=solid,sequence=sobol,denoise={}", filter);
+        methods::Prepared p(b.rt, b.table, b.scene, methods::parseSpec(spec), methods::Precision::Float);
+        p.setLocal(b.opt.lx, b.opt.ly);
+        const auto t = p.time(std::max(b.opt.reps, 11));
+        const auto st = p.stageMs();
+        nlohmann::json passes = nlohmann::json::array();
+        double sum = 0;
+        for (auto& [stage, ms] : st.items()) {
+            if (stage == "eval") continue;
+            double reals = 0, flops = 0;
+            cost(stage, &reals, &flops);
+            const double limNs = std::max(reals * realBytes / lim.gbps, flops / lim.gflops);
+            sum += ms.get<double>();
+            passes.push_back({{"stage", stage},
+                              {"ms", ms},
+                              {"ns_per_pixel", ms.get<double>() * 1e6 / px},
+                              {"limit_ns_per_pixel", limNs},
+                              {"bytes_per_pixel", reals * realBytes},
+                              {"flops_per_pixel", flops}});
+        }
+        const double mc = st["eval"].get<double>();
+        out["filters"].push_back({{"spec", spec},
+                                  {"total_ms", t.median_ms},
+                                  {"mc_ms", mc},
+                                  {"passes_ms", sum},
+                                  {"ratio", sum / mc},
+                                  {"goal", goal},
+                                  {"ok", sum / mc <= goal},
+                                  {"passes", passes}});
+    }
+    return out;
+}
+
 }  // namespace
 
 nlohmann::json run(ocl::Runtime& rt, const photometry::Table& table, const Scene& scene0, const Options& opt)
@@ -389,6 +471,10 @@ nlohmann::json run(ocl::Runtime& rt, const photometry::Table& table, const Scene
     scene.res = opt.res;
     Bench b{rt, table, scene, opt};
     nlohmann::json doc = header(b);
+    if (opt.filtersOnly) {
+        doc["filters"] = filterTimes(b);
+        return doc;
+    }
     doc["mc"] = samplesPerSecond(b);
     const McFit fit = mcFit(b);
     doc["mc_fit"] = fit.json;
@@ -398,12 +484,37 @@ nlohmann::json run(ocl::Runtime& rt, const photometry::Table& table, const Scene
     doc["indirect"] = indirectTimes(b);
     doc["specular"] = specularTimes(b);
     doc["mc_samplers"] = mcSamplers(b);
+    doc["filters"] = filterTimes(b);
     return doc;
+}
+
+// The filters' rows of run()'s document (none: nothing).
+void formatFilters(std::ostream& o, const nlohmann::json& d)
+{
+    if (!d.contains("filters")) return;
+    const auto& flt = d["filters"];
+    o << fmt::format("Filters after one solid + sobol MC pass at N = 1 (limits: {:.1f} GB/s copy, {:.0f} GFLOP/s "
+                     "nominal):\n",
+                     flt["bandwidth_gbps"].get<double>(), flt["peak_gflops"].get<double>());
+    for (const auto& r : flt["filters"]) {
+        o << fmt::format("  {}: passes {:.3f} ms / MC {:.3f} ms = {:.2f}x (target <= {:g}: {})\n",
+                         r["spec"].get<std::string>(), r["passes_ms"].get<double>(), r["mc_ms"].get<double>(),
+                         r["ratio"].get<double>(), r["goal"].get<double>(), r["ok"].get<bool>() ? "met" : "MISSED");
+        for (const auto& p : r["passes"])
+            o << fmt::format("    {:<12} {:7.2f} ns/pixel (limit {:5.2f})\n", p["stage"].get<std::string>(),
+                             p["ns_per_pixel"].get<double>(), p["limit_ns_per_pixel"].get<double>());
+    }
 }
 
 std::string format(const nlohmann::json& d)
 {
     std::ostringstream o;
+    if (!d.contains("mc")) {  // --filters
+        o << fmt::format("device: {} ({}), {}^2 pixels\n", d["device"].get<std::string>(),
+                         d["driver"].get<std::string>(), d["res"].get<int>());
+        formatFilters(o, d);
+        return o.str();
+    }
     o << fmt::format("device: {} ({}), {}^2 pixels, local {}x{}, median of {} after 1 warm-up\n",
                      d["device"].get<std::string>(), d["driver"].get<std::string>(), d["res"].get<int>(),
                      d["local"][0].get<int>(), d["local"][1].get<int>(), d["reps"].get<int>());
@@ -458,6 +569,7 @@ std::string format(const nlohmann::json& d)
                              r["ratio"].get<double>(), r["t8_ratio"].get<double>(), goal);
         }
     }
+    formatFilters(o, d);
     return o.str();
 }
 

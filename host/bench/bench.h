@@ -22,6 +22,7 @@ struct Options {
     int rounds = 3;  // alternating naive / fast rounds (median of each)
     size_t lx = 8, ly = 8;  // local size
     bool quick = false;  // fewer methods and MC fit points (tests)
+    bool filtersOnly = false;  // the header and the filters' rows alone
 };
 
 // Runs the benchmark; returns the JSON document `bench --json` prints:
@@ -32,7 +33,10 @@ struct Options {
 //   cubature: {time_ms, mc8_ms, ratio, target 1, ok, and equaltime::search's
 //     equal_time_n (+ equal_time_extra), verify_ms and paired_ms (MC's and
 //     cubature's medians over the same paired rounds), equal_time_ratio,
-//     equal_time_ok, equal_time_bracketed, equal_time_candidates}.
+//     equal_time_ok, equal_time_bracketed, equal_time_candidates},
+//   filters: {bandwidth_gbps, peak_gflops, filters: [{spec, mc_ms, passes_ms,
+//     ratio, goal, ok, passes: [{stage, ns_per_pixel, limit_ns_per_pixel}]}]}
+//     (the image filters after one solid + sobol MC pass at N = 1).
 nlohmann::json run(ocl::Runtime& rt, const photometry::Table& table, const Scene& scene, const Options& opt);
 
 // Human-readable table of run()'s document.

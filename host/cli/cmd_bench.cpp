@@ -22,7 +22,7 @@ void addBenchCommand(CLI::App& app)
         std::string rotation = "3pi/4";
         int res = 512, reps = 5, samples = 32, rounds = 3, device = -1;
         std::string local = "8x8";
-        bool quick = false, json = false;
+        bool quick = false, json = false, filters = false;
     };
     auto o = std::make_shared<Opts>();
     auto* cmd = app.add_subcommand("bench", "Benchmark the kernels against a naive MC kernel");
@@ -38,6 +38,7 @@ void addBenchCommand(CLI::App& app)
     cmd->add_option("--local", o->local, "Work-group size WxH")->capture_default_str();
     cmd->add_option("--device", o->device, "OpenCL device index >= 0 (lumibench devices)");
     cmd->add_flag("--quick", o->quick, "Fewer methods and fit points (smoke tests)");
+    cmd->add_flag("--filters", o->filters, "Only the image filters' rows (mc:denoise=...; the header and one section)");
     cmd->add_flag("--json", o->json, "Print one JSON document to stdout");
     cmd->callback([o, cmd] {
         Scene scene = sceneFromFlags(o->height, o->rotation, "1x1", 5, o->res);
@@ -61,6 +62,7 @@ void addBenchCommand(CLI::App& app)
         opt.samples = o->samples;
         opt.rounds = o->rounds;
         opt.quick = o->quick;
+        opt.filtersOnly = o->filters;
         photometry::Table table = methods::loadLuminaire(o->luminaire);
         ocl::Runtime rt(device);
         auto doc = bench::run(rt, table, scene, opt);

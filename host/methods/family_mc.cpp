@@ -179,10 +179,18 @@ void registerMc(Registry& r)
                     "domain=mis, mis_table: share of the N samples that are projected (mis_table_solid: by solid "
                     "angle)",
                     false),
-        Param::choice("denoise", "none", {"none", "gauss16", "atrous"},
-                      "image filter after the render, timed with it: the paper's separable 2 x 16 Gaussian, or the "
-                      "edge-avoiding a-trous wavelet filter on the per-pixel variance (Dammertz et al. 2010); "
-                      "footprint fixed in metres (methods/mc_denoise.h)"),
+        Param::choice(
+            "denoise", "none", {"none", "gauss16", "atrous"},
+            "image filter after the render, timed with it: the paper's separable Gaussian (DN 2 x 16), or the "
+            "edge-avoiding a-trous wavelet filter on the per-pixel variance (Dammertz et al. 2010); "
+            "footprint fixed in metres (methods/mc_denoise.h)"),
+        Param::real("gauss_sigma", 0, 0, 64, Scale::Linear,
+                    "denoise=gauss16: sigma in pixels of the filtered image (0: 4 pixels at 512^2, scaled with the "
+                    "resolution; methods/mc_denoise.h)",
+                    false),
+        Param::integer("gauss_radius", 0, 0, 128, Scale::Linear,
+                       "denoise=gauss16: taps -radius .. radius in pixels (0: ceil(2 sigma); given alone, sigma = "
+                       "radius / 2: gauss_radius=16 is the paper's filter at 1920 x 1080)"),
         Param::real("atrous_sigma", 4, 0.1, 100, Scale::Log,
                     "denoise=atrous: edge stop, in standard deviations of a pixel's estimate", false),
         Param::integer("paper", 0, 0, 1, Scale::Linear,
@@ -191,10 +199,15 @@ void registerMc(Registry& r)
         lookupParam("lut", "intensity lookup: trig-free table (photometry/lut.h) or the exact bilinear one"),
         specializeParam("auto: smallest kernel for the scene (methods/specialize.h); none: the general one"),
     };
-    f.validate = validateMc;
+    f.validate = [](const MethodSpec& s) {
+        validateMc(s);
+        validateDenoise(s);
+    };
     f.args = kMcArgs;
     f.plan = mcPlan;
-    f.postPasses = [](LaunchContext& c) { return denoisePasses(c, mcOptions(c.spec), c.spec.num("atrous_sigma")); };
+    f.postPasses = [](LaunchContext& c) {
+        return denoisePasses(c, mcOptions(c.spec), c.spec.num("atrous_sigma"), c.spec.integer("n"));
+    };
     f.benchSpecs = {"mc:n=8", "mc:n=32", "mc:n=32,lookup=exact"};
     r.add(f);
     registerMcPoints(r, f);

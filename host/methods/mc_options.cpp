@@ -67,6 +67,8 @@ McOptions mcOptions(const MethodSpec& s)
     o.minSolid = s.num("min_solid");
     o.misSplit = s.num("mis_split");
     o.denoise = s.str("denoise");
+    o.gaussSigma = s.num("gauss_sigma");
+    o.gaussRadius = s.integer("gauss_radius");
     if (s.integer("paper") != 0) {
         o.domain = "solid";
         o.sequence = "shared";

@@ -20,6 +20,8 @@ struct McOptions {
     double minSolid = 1e-3;  // solid: area sampling below this solid angle (sr)
     double misSplit = 0.5;  // mis, mis_table(_solid): share of the N samples that are projected (solid)
     std::string denoise = "none";  // none | gauss16 | atrous
+    double gaussSigma = 0;  // gauss16: sigma in pixels (0: the default footprint, methods/mc_denoise.h)
+    int gaussRadius = 0;  // gauss16: taps -radius .. radius (0: from sigma)
     // Whether the kernel takes its extended path (anything but today's MCI).
     bool extended() const;
     // The projected (mis_table_solid: solid-angle) samples of the mis domains out of n.

@@ -1,74 +1,172 @@
 /* denoise.h -- image-space filters run after mc.cl's render kernel, as one
  * method (host/methods/mc_denoise.cpp runs them as post-passes, timed with
- * the render): OpenCL only, included by mc.cl. Images are res x res reals,
- * row-major; every work-item is one pixel of a 2D launch over the image.
+ * the render): OpenCL only, included by mc.cl. The math per pixel is
+ * common/denoise_math.h's; here each work-item filters eight pixels of a row
+ * (columns 8 g0 .. 8 g0 + 7, row g1; a 2D launch over ceil(res / 8) x res):
+ * in the interior, where every tap of the eight is inside the image, in eight
+ * lanes with contiguous loads and no border tests; elsewhere (the border, a
+ * last partial group of columns) pixel by pixel through denoise_math.h, but
+ * for the a-trous level, which runs every full group in eight lanes (taps
+ * outside the image weighted 0, gathered only where a column leaves it).
  *
- * lb_gauss: one pass of the separable Gaussian (sigma in pixels, taps
- *   -radius .. radius), renormalised over the taps inside the image.
+ * lb_gauss: one pass of the separable Gaussian, along rows (vertical = 0) or
+ *   columns; w[0 .. radius] the host's weights (constant memory, summing to 1
+ *   over the 2 radius + 1 taps, so the interior needs no renormalisation).
  * lb_atrous: one level of the edge-avoiding a-trous wavelet filter (Dammertz,
- *   Sewtz, Hanika and Lensch 2010), as SVGF runs it: the 5 x 5 B3-spline
- *   kernel at taps `step` pixels apart, each tap weighted by
- *   exp(-|c_p - c_q| / (sigma_l sqrt(var_p) + eps)) with var_p the 3 x 3
- *   Gaussian of the pixels' variances of their MC estimates (mc.cl,
- *   LB_MC_VAR), as SVGF prefilters it; the variance is filtered with the
- *   squared weights for the next level. On the flat receiver there
- *   are no normal or depth edges: the luminance weight is the only stop. */
+ *   Sewtz, Hanika and Lensch 2010), as SVGF runs it (denoise_math.h). On the
+ *   flat receiver there are no normal or depth edges: the luminance weight is
+ *   the only stop.
+ * lb_var_spatial: where the render left a pixel no variance (one sample: mc.cl
+ *   writes -1), SVGF's spatial estimate from the 7 x 7 moments; in place. */
 
-LB_FN int lb_dn_inside(int c, int r, int res)
+#if LB_REAL_IS_DOUBLE
+typedef double8 lb_dn8;
+#define LB_DN8_POW2(t) as_double8((as_long8(t) - as_long(LB_EXP2_MAGIC) + 1023) << 52)
+#else
+typedef float8 lb_dn8;
+#define LB_DN8_POW2(t) as_float8((as_int8(t) - as_int(LB_EXP2_MAGIC) + 127) << 23)
+#endif
+
+/* lb_exp2_neg in eight lanes: the same reduction and polynomial */
+LB_FN_INLINE lb_dn8 lb_exp2_neg8(lb_dn8 x)
 {
-    return c >= 0 && r >= 0 && c < res && r < res;
+    x = x < R(-LB_EXP2_CUT) ? (lb_dn8)R(-LB_EXP2_CUT) : x;
+    lb_dn8 t = x + LB_EXP2_MAGIC, f = x - (t - LB_EXP2_MAGIC);
+    return LB_EXP2_POLY(f) * LB_DN8_POW2(t);
 }
 
-/* One pass of the separable Gaussian: along rows (vertical = 0) or columns. */
-__kernel void lb_gauss(__global const real* in, __global real* out, int res, real sigma, int radius, int vertical)
+/* the work-item's first column, its row and its pixel count (0: none) */
+LB_FN int lb_dn_lanes(int res, int* c0, int* r)
 {
-    int c = (int)get_global_id(0), r = (int)get_global_id(1);
-    if (c >= res || r >= res)
+    *c0 = 8 * (int)get_global_id(0);
+    *r = (int)get_global_id(1);
+    return *r < res && *c0 < res ? min(8, res - *c0) : 0;
+}
+
+__kernel void lb_gauss(__global const real* in, __global real* out, int res, __constant const real* w, int radius,
+                       int vertical)
+{
+    int c0, r, n = lb_dn_lanes(res, &c0, &r);
+    bool interior = n == 8 && (vertical ? r >= radius && r + radius < res : c0 >= radius && c0 + 8 + radius <= res);
+    if (!interior) {
+        for (int i = 0; i < n; ++i) out[r * res + c0 + i] = lb_gauss_px(in, w, res, radius, c0 + i, r, vertical);
         return;
-    real s = R(0), ws = R(0), k = R(-0.5) / (sigma * sigma);
-    for (int d = -radius; d <= radius; ++d) {
-        int cc = vertical ? c : c + d, rr = vertical ? r + d : r;
-        real w = exp(k * (real)(d * d));
-        bool in_ = lb_dn_inside(cc, rr, res);
-        s += in_ ? w * in[in_ ? rr * res + cc : r * res + c] : R(0);
-        ws += in_ ? w : R(0);
     }
-    out[r * res + c] = s / ws;
+    __global const real* p = in + r * res + c0;
+    int stride = vertical ? res : 1;
+    lb_dn8 s = w[0] * vload8(0, p);
+    for (int d = 1; d <= radius; ++d) s += w[d] * (vload8(0, p - d * stride) + vload8(0, p + d * stride));
+    vstore8(s, 0, out + r * res + c0);
 }
 
+/* the edge stop's factor of eight pixels whose columns are inside
+ * (lb_atrous_k; rows outside the image are left out, uniformly) */
+LB_FN_INLINE lb_dn8 lb_atrous_k8(__global const real* p, __global const real* v, int res, int r, real sigma_l)
+{
+    lb_dn8 vb = (lb_dn8)R(0);
+    real wb = R(0);
+    for (int dy = -1; dy <= 1; ++dy) {
+        if (r + dy < 0 || r + dy >= res)
+            continue;
+        __global const real* q = v + dy * res;
+        lb_dn8 row = R(0.25) * vload8(0, q - 1) + R(0.5) * vload8(0, q) + R(0.25) * vload8(0, q + 1);
+        real ky = dy == 0 ? R(0.5) : R(0.25);
+        vb += ky * row;
+        wb += ky;
+    }
+    return R(-LB_LOG2E) / (sigma_l * sqrt(fmax(vb / wb, (lb_dn8)R(0))) + R(1e-10) * fabs(vload8(0, p)) + R(1e-30));
+}
+
+/* the taps' values and variances at columns c0 + 8 lanes, row rr, where some
+ * leave the image (clamped; *ok 0 there, else 1) */
+LB_FN void lb_atrous_gather8(__global const real* in, __global const real* var, int res, int at, int cc0,
+                             lb_dn8* cq, lb_dn8* vq, lb_dn8* ok)
+{
+    real a[8], b[8], m[8];
+    for (int i = 0; i < 8; ++i) {
+        int cc = clamp(cc0 + i, 0, res - 1);
+        a[i] = in[at + cc];
+        b[i] = var[at + cc];
+        m[i] = cc == cc0 + i ? R(1) : R(0);
+    }
+    *cq = vload8(0, a);
+    *vq = vload8(0, b);
+    *ok = vload8(0, m);
+}
+
+/* Pixel by pixel only in a last partial group of columns; a tap row outside
+ * the image is left out by all eight lanes alike, a tap column outside by its
+ * lane (weight 0: the sums of denoise_math.h, which skips it). */
 __kernel void lb_atrous(__global const real* in, __global const real* var, __global real* out,
                         __global real* varOut, int res, int step, real sigma_l)
 {
-    int c = (int)get_global_id(0), r = (int)get_global_id(1);
-    if (c >= res || r >= res)
+    int c0, r, n = lb_dn_lanes(res, &c0, &r);
+    if (n < 8) {
+        for (int i = 0; i < n; ++i) {
+            real vo;
+            out[r * res + c0 + i] = lb_atrous_px(in, var, res, c0 + i, r, step, sigma_l, &vo);
+            varOut[r * res + c0 + i] = vo;
+        }
         return;
-    const real h[3] = {R(0.375), R(0.25), R(0.0625)};
-    real cp = in[r * res + c];
-    /* the edge stop's variance: SVGF's 3 x 3 Gaussian of the pixel's
-     * neighbourhood, so that two neighbours see about the same scale (a
-     * pixel's own 2-sample variance grows with its bright outliers) */
-    real vb = R(0), wb = R(0);
-    for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-            int cc = c + dx, rr = r + dy;
-            real k = (dx == 0 ? R(0.5) : R(0.25)) * (dy == 0 ? R(0.5) : R(0.25));
-            bool in_ = lb_dn_inside(cc, rr, res);
-            vb += in_ ? k * var[in_ ? rr * res + cc : r * res + c] : R(0);
-            wb += in_ ? k : R(0);
-        }
-    real scale = sigma_l * sqrt(fmax(vb / wb, R(0))) + R(1e-10) * fabs(cp) + R(1e-30);
-    real s = R(0), ws = R(0), vs = R(0);
-    for (int dy = -2; dy <= 2; ++dy)
+    }
+    const int at = r * res + c0;
+    const bool edge = c0 < 2 * step || c0 + 8 + 2 * step > res;
+    lb_dn8 cp = vload8(0, in + at), k;
+    if (c0 >= 1 && c0 + 8 < res) {
+        k = lb_atrous_k8(in + at, var + at, res, r, sigma_l);
+    } else {
+        real kk[8];
+        for (int i = 0; i < 8; ++i)
+            kk[i] = lb_atrous_k(in, var, res, c0 + i, r, sigma_l);
+        k = vload8(0, kk);
+    }
+    lb_dn8 s = (lb_dn8)R(0), ws = s, vs = s;
+    for (int dy = -2; dy <= 2; ++dy) {
+        int rr = r + dy * step;
+        if (rr < 0 || rr >= res)
+            continue;
+        real hy = lb_atrous_h(dy);
         for (int dx = -2; dx <= 2; ++dx) {
-            int cc = c + dx * step, rr = r + dy * step;
-            if (!lb_dn_inside(cc, rr, res))
-                continue;
-            real cq = in[rr * res + cc];
-            real w = h[dx < 0 ? -dx : dx] * h[dy < 0 ? -dy : dy] * exp(-fabs(cp - cq) / scale);
-            s += w * cq;
-            ws += w;
-            vs += w * w * var[rr * res + cc];
+            int cc0 = c0 + dx * step;
+            lb_dn8 cq, vq, ok = (lb_dn8)R(1);
+            if (!edge || (cc0 >= 0 && cc0 + 8 <= res)) {
+                cq = vload8(0, in + rr * res + cc0);
+                vq = vload8(0, var + rr * res + cc0);
+            } else {
+                lb_atrous_gather8(in, var, res, rr * res, cc0, &cq, &vq, &ok);
+            }
+            real h = hy * lb_atrous_h(dx);
+            lb_dn8 wq = dx == 0 && dy == 0 ? (lb_dn8)h : ok * (h * lb_exp2_neg8(k * fabs(cp - cq)));
+            s += wq * cq;
+            ws += wq;
+            vs += wq * wq * vq;
         }
-    out[r * res + c] = s / ws;
-    varOut[r * res + c] = vs / (ws * ws);
+    }
+    vstore8(s / ws, 0, out + at);
+    vstore8(vs / (ws * ws), 0, varOut + at);
+}
+
+__kernel void lb_var_spatial(__global const real* in, __global real* var, int res)
+{
+    int c0, r, n = lb_dn_lanes(res, &c0, &r);
+    const int e = LB_DN_VAR_RADIUS;
+    if (n < 8 || c0 < e || c0 + 8 + e > res || r < e || r + e >= res) {
+        for (int i = 0; i < n; ++i)
+            if (var[r * res + c0 + i] < R(0)) var[r * res + c0 + i] = lb_var_spatial_px(in, res, c0 + i, r);
+        return;
+    }
+    const int at = r * res + c0;
+    lb_dn8 v = vload8(0, var + at);
+    if (!any(v < R(0))) return;
+    lb_dn8 s1 = (lb_dn8)R(0), s2 = s1;
+    for (int dy = -e; dy <= e; ++dy)
+        for (int dx = -e; dx <= e; ++dx) {
+            lb_dn8 x = vload8(0, in + at + dy * res + dx);
+            s1 += x;
+            s2 += x * x;
+        }
+    const real inv = R(1) / (real)((2 * e + 1) * (2 * e + 1));
+    s1 *= inv;
+    lb_dn8 est = fmax(s2 * inv - s1 * s1, (lb_dn8)R(0));
+    vstore8(v < R(0) ? est : v, 0, var + at);
 }

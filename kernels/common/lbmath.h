@@ -15,6 +15,7 @@
 #include "specref.h"
 #include "mc_sample.h"
 #include "mc_table.h"
+#include "denoise_math.h"
 /* The point-sample baselines', the LTC's and the specular MC's straight-line
  * forms, one pixel per call (lanes_all.inc lists every form in this order). */
 #include "lanes1.h"

@@ -31,10 +31,11 @@ TEST(Spec, DefaultsAndValues)
     EXPECT_EQ(s.str("pattern"), "halton");
     EXPECT_EQ(s.integer("seed"), 0);  // default filled in
     EXPECT_EQ(s.given.size(), 2u);
-    EXPECT_EQ(s.canonical(),
-              "mc:atrous_sigma=4,cosine_warp=0,denoise=none,domain=area,extra=0,lookup=lut,min_solid=0.001,mis_split=0."
-              "5,n=40,"
-              "paper=0,pattern=halton,seed=0,sequence=shared,shift=0,specialize=auto");
+    EXPECT_EQ(
+        s.canonical(),
+        "mc:atrous_sigma=4,cosine_warp=0,denoise=none,domain=area,extra=0,gauss_radius=0,gauss_sigma=0,lookup=lut,"
+        "min_solid=0.001,mis_split=0.5,n=40,"
+        "paper=0,pattern=halton,seed=0,sequence=shared,shift=0,specialize=auto");
     EXPECT_EQ(s.paramsJson()["n"], 40);
     EXPECT_EQ(parseSpec("reference").num("tol"), 1e-5);
     EXPECT_EQ(parseSpec("point:").name, "point");

@@ -1,0 +1,97 @@
+#!/usr/bin/env python3
+"""Equal-time verdicts of an mc-baselines results file (lumibench run; .json or
+.json.xz) in NMSE and FLIP, with the pairs off equal time counted apart.
+
+A pair (a method and its MC partner on one scene) is *on time* where the
+partner's paired time ratio lies within the run's tolerance (the record's
+equal_time.ratio, +-10 %); off-time pairs are counted as such and not as wins,
+ties or losses (their verdicts are listed apart, for what they are: against an MC that ran
+longer or shorter). On-time verdicts as results::verdict: a win where the method's
+value (its 95 % interval where it has one) lies below the partner's interval, a
+loss where above, else a tie.
+
+    python3 experiments/mc-baselines/filter_verdicts.py RESULTS [--json OUT]
+
+Prints one markdown table; --json writes the counts (atomically).
+"""
+import argparse
+import json
+import lzma
+import math
+import os
+import statistics
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))),
+                                "plots"))
+from results_io import verdict  # noqa: E402  (results::verdict in Python)
+
+
+def load(path):
+    opener = lzma.open if path.endswith(".xz") else open
+    with opener(path, "rt") as f:
+        return json.load(f)
+
+
+def tally(doc):
+    methods = {(r["scene"], r["spec"]): r for r in doc["records"] if r["role"] == "method"}
+    rows = {}
+    for r in doc["records"]:
+        if r["role"] != "equal_time":
+            continue
+        et = r["equal_time"]
+        m = methods.get((r["scene"], et["label"]))
+        if m is None:
+            continue
+        row = rows.setdefault(et["label"], {"pairs": 0, "off_time": 0, "nmse": {}, "flip": {}, "off_nmse": {}, "off_flip": {},
+                                            "ratios": [], "n": [], "log_nmse": []})
+        row["pairs"] += 1
+        row["ratios"].append(et["ratio"])
+        row["n"].append(r.get("n", et.get("n")))
+        off = abs(et["ratio"] - 1) > et.get("tolerance", 0.1)
+        row["off_time"] += off
+        for metric in ("nmse", "flip"):
+            v = verdict(m, r, metric)
+            key = "off_" + metric if off else metric
+            row.setdefault(key, {})[v] = row.setdefault(key, {}).get(v, 0) + 1
+        if off:
+            continue
+        if m["nmse"] > 0 and r["nmse"] > 0:
+            row["log_nmse"].append(math.log(m["nmse"] / r["nmse"]))
+    return rows
+
+
+def wtl(d):
+    return f"{d.get('win', 0)} / {d.get('tie', 0)} / {d.get('loss', 0)}"
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("results")
+    ap.add_argument("--json", help="write the counts here")
+    a = ap.parse_args()
+    rows = tally(load(a.results))
+    print("| method | pairs | off-time | NMSE wins / ties / losses | FLIP wins / ties / losses "
+          "| NMSE / MC's (geo. mean, on time) | MC N | MC time / method time, median (range) "
+          "| off-time pairs: NMSE, FLIP w / t / l |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    out = {}
+    for label, r in rows.items():
+        geo = math.exp(statistics.mean(r["log_nmse"])) if r["log_nmse"] else float("nan")
+        ns = [n for n in r["n"] if n is not None]
+        print(f"| {label} | {r['pairs']} | {r['off_time']} | {wtl(r['nmse'])} | {wtl(r['flip'])} | {geo:.3g} "
+              f"| {min(ns):g}-{max(ns):g} | {statistics.median(r['ratios']):.2f} "
+              f"({min(r['ratios']):.2f}-{max(r['ratios']):.2f}) | {wtl(r['off_nmse'])}, {wtl(r['off_flip'])} |")
+        out[label] = {k: v for k, v in r.items() if k != "log_nmse"}
+        out[label]["nmse_ratio_geomean"] = geo
+    if a.json:
+        d = os.path.dirname(os.path.abspath(a.json))
+        fd, tmp = tempfile.mkstemp(dir=d, prefix=".filter_verdicts.")
+        with os.fdopen(fd, "w") as f:
+            json.dump({"results": a.results, "verdicts": out}, f, indent=1)
+        os.replace(tmp, a.json)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

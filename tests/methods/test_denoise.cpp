@@ -1,0 +1,251 @@
+// The image filters' kernels (kernels/common/denoise.h: eight lanes in the
+// interior, denoise_math.h pixel by pixel at the border) against host
+// references: the separable Gaussian against a plain convolution in double
+// with exp() weights, the a-trous level and the spatial variance against
+// denoise_math.h run on the host in double; the polynomial exp2 against
+// std::exp2.
+#include "math/kmath.h"
+#include "methods/mc_denoise.h"
+#include "methods/spec.h"
+#include "testutil.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace lb {
+namespace {
+
+// A test image: a smooth ramp with a bright square, speckles 20x the ramp
+// (the MC outliers the edge stop meets) and noise; res not a multiple of 8,
+// so every work-item kind runs (interior, border, a partial last group).
+std::vector<double> testImage(int res, unsigned seed)
+{
+    std::mt19937 g(seed);
+    std::uniform_real_distribution<double> u(0, 1);
+    std::vector<double> im(static_cast<size_t>(res) * res);
+    for (int r = 0; r < res; ++r)
+        for (int c = 0; c < res; ++c) {
+            double v = 1 + 0.01 * c + 0.02 * r + 0.5 * u(g);
+            if (r > res / 3 && r < res / 2 && c > res / 4 && c < res / 2) v += 10;
+            if (u(g) < 0.02) v *= 20;
+            im[static_cast<size_t>(r) * res + c] = v;
+        }
+    return im;
+}
+
+// Runs one of mc.cl's filter kernels (the default program, float or double)
+// on host buffers of doubles; `args` binds the kernel's arguments from the
+// device buffers (in the order given) and returns how many it bound.
+template <class T>
+struct Device {
+    ocl::Runtime& rt;
+    bool dbl() const { return sizeof(T) == 8; }
+    cl::Buffer buf(const std::vector<double>& v)
+    {
+        std::vector<T> t(v.begin(), v.end());
+        return cl::Buffer(rt.context(), CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, t.size() * sizeof(T), t.data());
+    }
+    std::vector<double> read(cl::Buffer& b, size_t n)
+    {
+        std::vector<T> t(n);
+        rt.queue().enqueueReadBuffer(b, CL_TRUE, 0, n * sizeof(T), t.data());
+        return {t.begin(), t.end()};
+    }
+    cl::Kernel kernel(const char* name) { return rt.kernel("mc.cl", name, dbl() ? "-DLB_DOUBLE" : ""); }
+    void run(cl::Kernel& k, int res) { rt.launch2D(k, (res + 7) / 8, res, 8, 8).wait(); }
+};
+
+// The Gaussian's two passes at radius 8 (the default at 512^2) and 16 (the
+// paper's), on an image whose interior, border and partial groups all run.
+template <class T>
+void gaussMatchesConvolution(ocl::Runtime& rt, double tol)
+{
+    Device<T> d{rt};
+    const int res = 203;
+    const auto im = testImage(res, 7);
+    for (int radiusKey : {0, 16}) {
+        const auto shape = methods::gaussShape(0, radiusKey, 512);
+        const auto w = methods::gaussWeights(shape);
+        cl::Buffer a = d.buf(im), b = d.buf(im), bw = d.buf(w);
+        cl::Kernel k = d.kernel("lb_gauss");
+        for (int vertical : {0, 1}) {
+            k.setArg(0, vertical ? b : a);
+            k.setArg(1, vertical ? a : b);
+            k.setArg(2, cl_int(res));
+            k.setArg(3, bw);
+            k.setArg(4, cl_int(shape.radius));
+            k.setArg(5, cl_int(vertical));
+            d.run(k, res);
+        }
+        // the reference: exp() weights, renormalised over the taps inside
+        auto blur = [&](const std::vector<double>& in, bool vertical) {
+            std::vector<double> out(in.size());
+            for (int r = 0; r < res; ++r)
+                for (int c = 0; c < res; ++c) {
+                    double s = 0, ws = 0;
+                    for (int t = -shape.radius; t <= shape.radius; ++t) {
+                        int cc = vertical ? c : c + t, rr = vertical ? r + t : r;
+                        if (cc < 0 || rr < 0 || cc >= res || rr >= res) continue;
+                        double wt = std::exp(-0.5 * t * t / (shape.sigma * shape.sigma));
+                        s += wt * in[rr * res + cc];
+                        ws += wt;
+                    }
+                    out[r * res + c] = s / ws;
+                }
+            return out;
+        };
+        const auto want = blur(blur(im, false), true);
+        double worst =
+            test::worstRelDiff(want, d.read(a, im.size()), 0, tol,
+                               fmt::format("gauss radius {} {}", shape.radius, d.dbl() ? "double" : "float"));
+        std::printf("gauss radius %d sigma %g, %s: worst relative difference %.2e\n", shape.radius, shape.sigma,
+                    d.dbl() ? "double" : "float", worst);
+    }
+}
+
+// float: each output is a 17- or 33-tap sum of positive terms, twice; float
+// rounding of the weights and sums ~ 1e-7 per operation, 1e-5 the bound (the
+// brief's). double: the same at 1e-16, 1e-12 the bound.
+TEST(Denoise, GaussMatchesConvolutionFloat)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    gaussMatchesConvolution<float>(*rt, 1e-5);
+}
+
+TEST(Denoise, GaussMatchesConvolutionDouble)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    if (!rt->fp64()) GTEST_SKIP() << "no fp64";
+    gaussMatchesConvolution<double>(*rt, 1e-12);
+}
+
+// One a-trous level per step 1 .. 16 (the levels at 512^2) and the spatial
+// variance, against denoise_math.h on the host in double.
+template <class T>
+void atrousMatchesHost(ocl::Runtime& rt, double tol)
+{
+    Device<T> d{rt};
+    const int res = 203;
+    const auto im = testImage(res, 11);
+    auto var = testImage(res, 12);
+    for (size_t i = 0; i < var.size(); ++i) var[i] = i % 5 == 0 ? -1 : 0.01 * var[i];  // -1: no estimate
+    // spatial variance where var < 0, in place
+    std::vector<double> wantVar = var;
+    for (int r = 0; r < res; ++r)
+        for (int c = 0; c < res; ++c)
+            if (var[r * res + c] < 0) wantVar[r * res + c] = f64::lb_var_spatial_px(im.data(), res, c, r);
+    cl::Buffer bi = d.buf(im), bv = d.buf(var);
+    cl::Kernel kv = d.kernel("lb_var_spatial");
+    kv.setArg(0, bi);
+    kv.setArg(1, bv);
+    kv.setArg(2, cl_int(res));
+    d.run(kv, res);
+    const char* prec = d.dbl() ? "double" : "float";
+    // E[c^2] - E[c]^2 cancels: each pixel held within tol of its window's
+    // E[c^2] (the rounding of 49-term sums of squares, ~ 3e-6 of it in float)
+    const auto got = d.read(bv, var.size());
+    double wv = 0;
+    for (int r = 0; r < res; ++r)
+        for (int c = 0; c < res; ++c) {
+            double m2 = 0;
+            int n = 0;
+            for (int y = std::max(0, r - 3); y <= std::min(res - 1, r + 3); ++y)
+                for (int x = std::max(0, c - 3); x <= std::min(res - 1, c + 3); ++x, ++n)
+                    m2 += im[y * res + x] * im[y * res + x];
+            const size_t i = static_cast<size_t>(r) * res + c;
+            wv = std::max(wv, std::fabs(got[i] - wantVar[i]) / (m2 / n));
+        }
+    EXPECT_LE(wv, tol) << "var_spatial " << prec;
+    std::printf("spatial variance, %s: worst difference %.2e of the window's E[c^2]\n", prec, wv);
+    for (int step : {1, 2, 4, 8, 16}) {
+        const double sigmaL = 4;
+        std::vector<double> wantO(im.size()), wantV(im.size());
+        for (int r = 0; r < res; ++r)
+            for (int c = 0; c < res; ++c)
+                wantO[r * res + c] =
+                    f64::lb_atrous_px(im.data(), wantVar.data(), res, c, r, step, sigmaL, &wantV[r * res + c]);
+        cl::Buffer bo = d.buf(im), bvo = d.buf(im), bw = d.buf(wantVar);
+        cl::Kernel k = d.kernel("lb_atrous");
+        k.setArg(0, bi);
+        k.setArg(1, bw);
+        k.setArg(2, bo);
+        k.setArg(3, bvo);
+        k.setArg(4, cl_int(res));
+        k.setArg(5, cl_int(step));
+        ocl::setReal(k, 6, sigmaL, d.dbl());
+        d.run(k, res);
+        double wo =
+            test::worstRelDiff(wantO, d.read(bo, im.size()), 0, tol, fmt::format("atrous step {} {}", step, prec));
+        double wvo =
+            test::worstRelDiff(wantV, d.read(bvo, im.size()), 0, tol, fmt::format("atrous var step {} {}", step, prec));
+        std::printf("a-trous step %d, %s: worst relative difference %.2e (variance %.2e)\n", step, prec, wo, wvo);
+    }
+}
+
+// float: the edge weight 2^(k |c_p - c_q|) carries the float rounding of its
+// argument (up to ~30 where a weight still counts) into the weight, ~ 30 x
+// 6e-8; the bound 1e-5 (the brief's) leaves 5x. double: 1e-12.
+TEST(Denoise, AtrousMatchesHostFloat)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    atrousMatchesHost<float>(*rt, 1e-5);
+}
+
+TEST(Denoise, AtrousMatchesHostDouble)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    if (!rt->fp64()) GTEST_SKIP() << "no fp64";
+    atrousMatchesHost<double>(*rt, 1e-12);
+}
+
+// The polynomial exp2 of the edge stop against std::exp2 on [-24, 0]: the
+// fit's relative error is 3.1e-6 (degree 4); double holds 3.2e-6, float adds
+// its rounding of ~ 8 operations (~ 5e-7): 4e-6. 2^0 is 1 exactly (the
+// centre tap); below -24 the value is 2^-24 (a weight 6e-8 of the centre's).
+TEST(Denoise, Exp2PolynomialAccuracy)
+{
+    double w32 = 0, w64 = 0;
+    for (int i = 0; i <= 24000; ++i) {
+        const double x = -i * 1e-3 - (i % 7) * 1.3e-5;
+        if (x < -24) continue;
+        w64 = std::max(w64, std::fabs(f64::lb_exp2_neg(x) / std::exp2(x) - 1));
+        w32 = std::max(w32, std::fabs(double(f32::lb_exp2_neg(float(x))) / std::exp2(double(float(x))) - 1));
+    }
+    std::printf("exp2 polynomial: worst relative error %.2e (double), %.2e (float)\n", w64, w32);
+    EXPECT_LE(w64, 3.2e-6);
+    EXPECT_LE(w32, 4e-6);
+    EXPECT_EQ(f64::lb_exp2_neg(0), 1.0);
+    EXPECT_EQ(f32::lb_exp2_neg(0), 1.0f);
+    EXPECT_EQ(f64::lb_exp2_neg(-1000), std::exp2(-24.0));
+}
+
+// The keys: the default footprint scales with the resolution; gauss_radius
+// alone gives sigma = radius / 2; the weights sum to 1; the keys without
+// denoise=gauss16 are refused.
+TEST(Denoise, GaussShapeKeys)
+{
+    auto d = methods::gaussShape(0, 0, 512);
+    EXPECT_EQ(d.sigma, 4);
+    EXPECT_EQ(d.radius, 8);
+    EXPECT_EQ(methods::gaussShape(0, 0, 1024).radius, 16);
+    auto p = methods::gaussShape(0, 16, 64);
+    EXPECT_EQ(p.sigma, 8);
+    EXPECT_EQ(p.radius, 16);
+    auto w = methods::gaussWeights(methods::gaussShape(3, 0, 64));
+    EXPECT_EQ(w.size(), 7u);
+    double sum = w[0];
+    for (size_t i = 1; i < w.size(); ++i) sum += 2 * w[i];
+    EXPECT_NEAR(sum, 1, 1e-15);  // a sum of 13 doubles
+    EXPECT_THROW(methods::parseSpec("mc:gauss_radius=16"), InputError);
+    EXPECT_THROW(methods::parseSpec("mc:denoise=atrous,gauss_sigma=2"), InputError);
+    EXPECT_NO_THROW(methods::parseSpec("mc:denoise=gauss16,gauss_radius=16,gauss_sigma=5"));
+}
+
+}  // namespace
+}  // namespace lb
