@@ -88,3 +88,16 @@ def test_methods_and_devices():
     assert n["kind"] == "int" and n["min"] >= 1 and int(n["default"]) >= 1
     devs = lb.devices()
     assert devs and sum(d["default"] for d in devs) == 1
+
+
+def test_reference_cache_is_the_clis(batwing, cli, tmp_path, monkeypatch):
+    # A reference the CLI rendered is read back by the module, not rendered again.
+    monkeypatch.setenv("LUMIBENCH_CACHE", str(tmp_path / "cache"))
+    scene = lb.Scene(height=2.0, rotation="5pi/8", res=12)
+    args = ["--luminaire", LUM, "--method", "reference:tol=1e-3", "--height", 2, "--rotation", "5pi/8", "--res", 12]
+    cli("render", *args, "--out", tmp_path / "ref.exr")
+    ref, err, info = lb.reference(batwing, scene, spec="reference:tol=1e-3")
+    assert info["cached"] is True
+    assert np.array_equal(ref, lb.read_exr(str(tmp_path / "ref.exr")))
+    monkeypatch.setenv("LUMIBENCH_CACHE", str(tmp_path / "empty"))
+    assert lb.reference(batwing, scene, spec="reference:tol=1e-3")[2]["cached"] is False
