@@ -67,3 +67,5 @@ else
   echo "install-deps: WARNING: could not install ${PYPI[*]} into $VENV; the peer and FLIP tests will skip" \
        "and flip will be null" >&2
 fi
+# The Python module: build/python on .venv's path (filled by scripts/build.sh).
+bash scripts/python-path.sh
