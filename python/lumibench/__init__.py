@@ -28,6 +28,7 @@ from ._core import (  # noqa: F401  (the public API)
     InputError,
     Luminaire,
     Scene,
+    __version__,
     bench,
     compare,
     devices,

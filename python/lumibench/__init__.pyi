@@ -10,6 +10,7 @@ import pandas
 
 Image = numpy.typing.NDArray[Union[numpy.float32, numpy.float64]]
 Path = Union[str, os.PathLike[str]]
+__version__: str  # the project's version (CMakeLists.txt)
 
 class InputError(ValueError):
     """Bad input: a file, a SPEC, a keyword's value (the CLI's exit code 2)."""

@@ -6,6 +6,7 @@
 #include "common.h"
 #include "scene_args.h"
 
+#include "lb_build_config.h"
 #include "util/error.h"
 
 #include <fmt/format.h>
@@ -50,6 +51,7 @@ NB_MODULE(_core, m)
     gError =
         PyErr_NewExceptionWithDoc("lumibench.Error", "A device, internal or output failure (the CLI's exit code 1).",
                                   PyExc_RuntimeError, nullptr);
+    m.attr("__version__") = LB_VERSION;
     m.attr("InputError") = nb::handle(gInputError);
     m.attr("Error") = nb::handle(gError);
     nb::register_exception_translator(&translate);
