@@ -8,8 +8,8 @@ import numpy
 import numpy.typing
 import pandas
 
-Image = numpy.typing.NDArray[Union[numpy.float32, numpy.float64]]
-Path = Union[str, os.PathLike[str]]
+_Image = numpy.typing.NDArray[Union[numpy.float32, numpy.float64]]
+_Path = Union[str, os.PathLike[str]]
 __version__: str  # the project's version (CMakeLists.txt)
 
 class InputError(ValueError):
@@ -89,7 +89,7 @@ def render(
     seed: Optional[int] = None,
     reps: int = 5,
     cache: bool = True,
-) -> Tuple[Image, dict[str, Any]]: ...
+) -> Tuple[_Image, dict[str, Any]]: ...
 def reference(
     luminaire: Luminaire,
     scene: Scene,
@@ -98,13 +98,13 @@ def reference(
     precision: str = "float",
     device: Optional[int] = None,
     cache: bool = True,
-) -> Tuple[Image, Image, dict[str, Any]]: ...
-def compare(ref: Image, img: Image, *, flip: bool = True) -> dict[str, Any]: ...
+) -> Tuple[_Image, _Image, dict[str, Any]]: ...
+def compare(ref: _Image, img: _Image, *, flip: bool = True) -> dict[str, Any]: ...
 def read_exr(path: str) -> numpy.typing.NDArray[numpy.float32]: ...
-def write_exr(path: str, array: Image) -> None: ...
+def write_exr(path: str, array: _Image) -> None: ...
 def run(
-    experiment: Union[Path, Mapping[str, Any]],
-    out: Path,
+    experiment: Union[_Path, Mapping[str, Any]],
+    out: _Path,
     *,
     luminaires: Optional[str] = None,
     shard: str = "1/1",
