@@ -102,3 +102,10 @@ def test_device_failure_is_a_runtime_error(batwing, scene, tmp_path, monkeypatch
     monkeypatch.delenv("LUMIBENCH_KERNEL_DIR")
     img, _ = lb.render(batwing, scene, "point", reps=1)  # the interpreter and the runtime go on
     assert img.shape == (8, 8)
+
+
+def test_bad_device_index_has_the_cli_message(batwing, scene, cli, tmp_path):
+    want = cli_error(cli(*RENDER, tmp_path / "x.exr", "--method", "point", "--device", 99, check=False))
+    with pytest.raises(lb.InputError) as e:
+        lb.render(batwing, scene, "point", device=99)
+    assert str(e.value) == want
