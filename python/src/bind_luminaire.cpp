@@ -17,6 +17,13 @@ using photometry::Table;
 using View1 = nb::ndarray<nb::numpy, const double, nb::ndim<1>, nb::c_contig>;
 using View2 = nb::ndarray<nb::numpy, const double, nb::ndim<2>, nb::c_contig>;
 
+// A read-only view of one of the table's vectors that keeps `self` alive.
+View1 view1(nb::handle self, std::vector<double> Table::*member)
+{
+    const std::vector<double>& v = nb::cast<const Table&>(self).*member;
+    return View1(v.data(), {v.size()}, self);
+}
+
 const char* kLuminaireDoc = R"(A luminaire: an IES LM-63 or EULUMDAT file, or 'analytic:cos<n>[:two]',
 unfolded into one table of absolute candela over C in [0, 360] and gamma
 (degrees; docs/design.md section 3). `candela[i, j]` is the intensity at
@@ -62,19 +69,9 @@ void bindLuminaire(nb::module_& m)
             [](const Table& t) { return nb::make_tuple(t.opening.lengthM, t.opening.widthM, t.opening.heightM); },
             "(length along C0-C180, width along C90-C270, height) of the opening in metres.")
         .def_prop_ro(
-            "c",
-            [](nb::handle self) {
-                const Table& t = nb::cast<const Table&>(self);
-                return View1(t.c.data(), {t.c.size()}, self);
-            },
-            "C angles (degrees, ascending, 0 .. 360).")
+            "c", [](nb::handle self) { return view1(self, &Table::c); }, "C angles (degrees, ascending, 0 .. 360).")
         .def_prop_ro(
-            "gamma",
-            [](nb::handle self) {
-                const Table& t = nb::cast<const Table&>(self);
-                return View1(t.gamma.data(), {t.gamma.size()}, self);
-            },
-            "Gamma angles (degrees, ascending).")
+            "gamma", [](nb::handle self) { return view1(self, &Table::gamma); }, "Gamma angles (degrees, ascending).")
         .def_prop_ro(
             "candela",
             [](nb::handle self) {
