@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# check-format.sh [--fix] -- the C++ sources under host/ and tests/ against .clang-format
+# check-format.sh [--fix] -- the C++ sources under host/, tests/ and python/ against .clang-format
 # (clang-format 14, whose output the committed files match; another version formats a few
 # constructs differently). Without --fix: lists the files that differ and exits 1.
 # With --fix: formats them in place. The kernels are not checked (.clang-format says why).
@@ -10,7 +10,7 @@ if [[ -z $CF ]]; then
     echo "check-format.sh: clang-format 14 not found (scripts/install-deps.sh installs it)" >&2
     exit 2
 fi
-mapfile -t files < <(git ls-files 'host/*.cpp' 'host/*.h' 'tests/*.cpp' 'tests/*.h')
+mapfile -t files < <(git ls-files 'host/*.cpp' 'host/*.h' 'tests/*.cpp' 'tests/*.h' 'python/*.cpp' 'python/*.h')
 if [[ ${1:-} == --fix ]]; then
     "$CF" -i "${files[@]}"
     exit 0

@@ -27,6 +27,7 @@ PKGS=(
   googletest libgtest-dev
   libcli11-dev nlohmann-json3-dev libfmt-dev libpng-dev jq clang-format-14
   python3 python3-matplotlib python3-numpy python3-pandas python3-seaborn python3-venv
+  python3-dev  # the Python module's extension (python/, docs/python.md)
   chromium
   parallel
   slurmctld slurmd slurm-client munge
@@ -53,6 +54,9 @@ fi
 # Without PyPI the peer and FLIP tests skip and say so, and flip is null.
 PYPI=(eulumdat-py==1.0.0 flip-evaluator==1.7 pyradiance==1.3.1)
 if [ "$OIDN" -eq 1 ]; then PYPI+=(pyoidn==2.5.1.0 OpenEXR==3.5.3); fi
+# The Python module (python/, docs/python.md): nanobind and scikit-build-core build it,
+# pytest runs its tests; it uses Debian's numpy and pandas (python3-numpy, python3-pandas).
+PYPI+=(nanobind==3.1.0 scikit-build-core==1.1.2 pytest==8.4.2)
 VENV=.venv
 if [ ! -x "$VENV/bin/python" ]; then
   /usr/bin/python3 -m venv --system-site-packages "$VENV"
@@ -64,3 +68,5 @@ else
   echo "install-deps: WARNING: could not install ${PYPI[*]} into $VENV; the peer and FLIP tests will skip" \
        "and flip will be null" >&2
 fi
+# The Python module: build/python on .venv's path (filled by scripts/build.sh).
+bash scripts/python-path.sh

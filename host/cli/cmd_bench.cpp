@@ -14,6 +14,19 @@
 
 namespace lb::cli {
 
+void parseLocal(const std::string& name, const std::string& text, size_t& lx, size_t& ly)
+{
+    auto x = text.find_first_of("xX");
+    try {
+        if (x == std::string::npos) throw std::invalid_argument("");
+        lx = std::stoul(text.substr(0, x));
+        ly = std::stoul(text.substr(x + 1));
+    } catch (const std::exception&) {
+        throw InputError(fmt::format("{}: expected WxH, got '{}'", name, text));
+    }
+    if (lx < 1 || ly < 1 || lx * ly > 1024) throw InputError(fmt::format("{}: work-group {} out of range", name, text));
+}
+
 void addBenchCommand(CLI::App& app)
 {
     struct Opts {
@@ -47,16 +60,7 @@ void addBenchCommand(CLI::App& app)
         util::checkRange("--rounds", o->rounds, 1, ocl::kMaxReps);
         const int device = deviceFlag(*cmd, o->device);
         bench::Options opt;
-        auto x = o->local.find_first_of("xX");
-        try {
-            if (x == std::string::npos) throw std::invalid_argument("");
-            opt.lx = std::stoul(o->local.substr(0, x));
-            opt.ly = std::stoul(o->local.substr(x + 1));
-        } catch (const std::exception&) {
-            throw InputError(fmt::format("--local: expected WxH, got '{}'", o->local));
-        }
-        if (opt.lx < 1 || opt.ly < 1 || opt.lx * opt.ly > 1024)
-            throw InputError(fmt::format("--local: work-group {} out of range", o->local));
+        parseLocal("--local", o->local, opt.lx, opt.ly);
         opt.res = o->res;
         opt.reps = o->reps;
         opt.samples = o->samples;

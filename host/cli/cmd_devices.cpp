@@ -10,6 +10,26 @@
 
 namespace lb::cli {
 
+nlohmann::json devicesJson()
+{
+    auto devs = ocl::listDevices();
+    const int def = devs.empty() ? -1 : ocl::chooseDevice(-1);
+    nlohmann::json a = nlohmann::json::array();
+    for (auto& d : devs)
+        a.push_back({{"index", d.index},
+                     {"platform", d.platform},
+                     {"name", d.name},
+                     {"vendor", d.vendor},
+                     {"version", d.version},
+                     {"driver", d.driver},
+                     {"type", d.type},
+                     {"fp64", d.fp64},
+                     {"compute_units", d.computeUnits},
+                     {"global_mem_bytes", d.globalMem},
+                     {"default", d.index == def}});
+    return a;
+}
+
 void addDevicesCommand(CLI::App& app)
 {
     auto* cmd = app.add_subcommand("devices",
@@ -18,25 +38,12 @@ void addDevicesCommand(CLI::App& app)
     auto json = std::make_shared<bool>(false);
     cmd->add_flag("--json", *json, "Print a JSON array instead of a table");
     cmd->callback([json] {
-        auto devs = ocl::listDevices();
-        int def = devs.empty() ? -1 : ocl::chooseDevice(-1);
         if (*json) {
-            nlohmann::json a = nlohmann::json::array();
-            for (auto& d : devs)
-                a.push_back({{"index", d.index},
-                             {"platform", d.platform},
-                             {"name", d.name},
-                             {"vendor", d.vendor},
-                             {"version", d.version},
-                             {"driver", d.driver},
-                             {"type", d.type},
-                             {"fp64", d.fp64},
-                             {"compute_units", d.computeUnits},
-                             {"global_mem_bytes", d.globalMem},
-                             {"default", d.index == def}});
-            std::cout << a.dump(2) << '\n';
+            std::cout << devicesJson().dump(2) << '\n';
             return;
         }
+        auto devs = ocl::listDevices();
+        int def = devs.empty() ? -1 : ocl::chooseDevice(-1);
         if (devs.empty()) {
             std::cout << "no OpenCL devices (install pocl-opencl-icd: scripts/install-deps.sh)\n";
             return;

@@ -49,6 +49,11 @@ methods::Precision precisionFlag(const std::string& text);
 // --scene, --alpha, --eye, --albedo into scene (a flag of another kind is an error).
 void sceneKindFromFlags(const CLI::App& cmd, const std::string& kind, double alpha, const std::string& eye,
                         double albedo, Scene& scene);
+// The devices as `devices --json` prints them (index, name, ..., default).
+nlohmann::json devicesJson();
+// A work-group size "WxH" (bench --local) into lx, ly; InputError naming
+// `name` unless both are >= 1 with lx * ly <= 1024.
+void parseLocal(const std::string& name, const std::string& text, size_t& lx, size_t& ly);
 // The scene as `render --json` prints it (kind and the kind's values included).
 nlohmann::json sceneJson(const Scene& scene);
 
