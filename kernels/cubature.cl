@@ -75,9 +75,14 @@
  * kernel below opens with this signature and CUB_PROLOGUE. */
 #define CUB_TUNABLE_ARG(name) , real name
 #define CUB_TUNABLE_SET(name) tun.name = name;
+/* CUB_EXTRA_ARGS: arguments a file that includes this one (sh.cl's fallback)
+ * appends to the signature, unused here. */
+#ifndef CUB_EXTRA_ARGS
+#define CUB_EXTRA_ARGS
+#endif
 #define CUB_KERNEL                                                                                             \
     __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,     \
-                         __global int* stats, int want_stats LB_CUB_TUNABLES(CUB_TUNABLE_ARG))
+                         __global int* stats, int want_stats LB_CUB_TUNABLES(CUB_TUNABLE_ARG) CUB_EXTRA_ARGS)
 /* opt: the structural variant (the -D flags above); tun: the arguments */
 #define CUB_PROLOGUE                                                                                           \
     lb_cub_options opt;                                                                                        \

@@ -1,6 +1,8 @@
 // lumibench luminaire info|eval|dump|synth|convert.
 #include "cli/commands.h"
 
+#include "methods/sh_fit.h"
+
 #include "photometry/ies.h"
 #include "photometry/ldt.h"
 #include "photometry/load.h"
@@ -113,8 +115,19 @@ void addLuminaireCommand(CLI::App& app)
     auto json = std::make_shared<bool>(false);
     info->add_option("file", *file, "IES or LDT file")->required();
     info->add_flag("--json", *json, "Print one JSON object");
-    info->callback([file, json] {
-        auto j = summary(photometry::load(*file));
+    auto sh = std::make_shared<bool>(false);
+    info->add_flag("--sh", *sh,
+                   "Also the error of the `sh` method's fit (methods/sh_fit.h: least squares with its default "
+                   "ridge) at L = 0, 2, 4, 8, 12, 16: relative L2 of the intensity over the sphere (sh_fit_error)");
+    info->callback([file, json, sh] {
+        const Table t = photometry::load(*file);
+        auto j = summary(t);
+        if (*sh)
+            for (int L : {0, 2, 4, 8, 12, 16}) {
+                methods::ShFitOptions o;
+                o.L = L;
+                j["sh_fit_error"][std::to_string(L)] = methods::shFit(t, o).error;
+            }
         if (*json) {
             std::cout << j.dump() << '\n';
             return;

@@ -163,6 +163,11 @@ Family cubatureFamily()
 
 void registerCubature(Registry& r) { r.add(cubatureFamily()); }
 
+Plan robustPlan(const Scene& scene, const photometry::Table& table, const ocl::DeviceInfo& device, Precision precision)
+{
+    return cubaturePlan(parseSpec("robust", scene.kind), scene, table, device, precision);
+}
+
 // robust: the cubature where it is best (near the light, in front of it) and
 // the area form where it is not (far field, the light's own plane): the
 // recommended variant of docs/robust.md. Every cubature parameter applies;

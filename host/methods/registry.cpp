@@ -18,6 +18,8 @@ void registerVoronoi(Registry& r);
 void registerIndirect(Registry& r);
 void registerSpecular(Registry& r);
 void registerRobust(Registry& r);
+void registerEngine(Registry& r);
+void registerSh(Registry& r);
 
 namespace {
 Registry builtinFamilies()
@@ -32,6 +34,8 @@ Registry builtinFamilies()
     registerIndirect(r);  // reference (indirect), vpl, kmeans, acrsm (and mc: VPLs)
     registerSpecular(r);  // reference, mc, ltc of the specular scene
     registerRobust(r);
+    registerEngine(r);
+    registerSh(r);
     return r;
 }
 }  // namespace

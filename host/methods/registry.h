@@ -243,6 +243,10 @@ void finishReference(LaunchContext& c);  // extra image "err", the split statist
 // Both for a kernel whose arguments are just those four; no defines, expensive.
 void referenceIo(Family& f);
 
+// The plan of `robust` at its defaults (family_cubature.cpp): the fallback
+// of `sh` (family_sh.cpp).
+Plan robustPlan(const Scene& scene, const photometry::Table& table, const ocl::DeviceInfo& device, Precision precision);
+
 // The family's plan (Family::plan); Error for a family without one.
 Plan planFor(const Family& f, const MethodSpec& spec, const Scene& scene, const photometry::Table& table,
              const ocl::DeviceInfo& device, Precision precision);

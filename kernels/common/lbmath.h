@@ -16,10 +16,12 @@
 #include "mc_sample.h"
 #include "mc_table.h"
 #include "denoise_math.h"
+#include "sh.h"
 /* The point-sample baselines', the LTC's and the specular MC's straight-line
  * forms, one pixel per call (lanes_all.inc lists every form in this order). */
 #include "lanes1.h"
 #include "dynamic_lanes.inc"
+#include "engine_lanes.inc"
 #include "ltc_lanes.inc"
 #include "smc_lanes.inc"
 #include "lanes_end.h"

@@ -175,13 +175,13 @@ TEST(DiskMethods, ConstantRadianceIsExactForEverySampleRule)
 {
     LB_REQUIRE_RUNTIME(rt);
     // A Lambertian disk has one radiance in every direction: cp, np, mrp,
-    // structured and the cubature multiply it by the disk's Phi (disk.h),
+    // structured, engine and the cubature multiply it by the disk's Phi (disk.h),
     // exact up to the arcs' Gauss rule (< 3e-6, DiskMath above) and the
     // tabulated cos1 (0.1 deg steps: relative (step)^2 / 8 (1 + tan^2 gamma)
     // in I, 2.5e-5 at the grazing 83 deg a receiver of the R = pi/2 scene
     // sees; measured worst 2.5e-5): 1e-4 in double, the reference's bound
     // (docs/design.md); float 1e-3 (the rim's 32-bit coordinates).
-    for (const char* m : {"cp", "np", "mrp", "structured", "cubature"})
+    for (const char* m : {"cp", "np", "mrp", "structured", "engine", "cubature"})
         for (double R : {M_PI / 2, 3 * M_PI / 4, M_PI}) {
             double wd = worstLambert(*rt, diskScene(0.5, R, 1.0, 10), m, Precision::Double);
             EXPECT_LT(wd, 1e-4) << m << " R " << R;

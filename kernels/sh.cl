@@ -1,0 +1,69 @@
+/* sh.cl -- the analytic spherical-harmonics method (docs/design.md section 4):
+ * the luminaire's radiance fitted once in real SH of degree LB_SH_L per
+ * hemisphere of the light (host/methods/sh_fit.h), times the receiver cosine
+ * (degree LB_SH_L + 1, projected per scene on the host), integrated exactly
+ * over the horizon-clipped light's spherical polygon (common/sh.h): the
+ * geometry is exact at any distance, the only error the fit's band limit.
+ * zc: the scene's zonal lobes, the front hemisphere's (pixels in front of
+ * the light) then the back's, each in common/sh.h's layout. E below 0 (the
+ * fit's ringing) is clamped to 0. far_size (radians): where the light's
+ * diagonal subtends less than twice it, E blends into engine.cl's exact
+ * form factor times the table's radiance toward the centre (the far field,
+ * where the fit's error in the one direction the light is seen from would
+ * stay while every other method converges, and where a tiny polygon's edge
+ * sum cancels in float); fully there below far_size. lum: the exact table.
+ *
+ *   LB_SH_L=n        the fit's degree, 0 .. 20 (host: L)
+ *   LB_SH_FALLBACK   the fit's error exceeds the threshold (sh:fallback=robust):
+ *                    robust's kernel (cubature.cl with robust's defines)
+ *                    instead; zc and far_size are unused. Its arguments are
+ *                    sh's: robust's, then zc and far_size.
+ * @variants: "-DLB_SH_L=0" | "-DLB_SH_L=1" | "-DLB_SH_L=8" | "-DLB_SH_L=16" | "-DLB_SH_L=8 -DLB_LUT" | "-DLB_SH_FALLBACK -DLB_LUT -DLB_CUB_AREA=3" | "-DLB_SH_FALLBACK -DLB_LUT -DLB_CUB_AREA=3 -DLB_CUB_RECT_FAN -DLB_LANES=8"
+ */
+#ifdef LB_SH_FALLBACK
+#define CUB_EXTRA_ARGS , __global const real *zc, real far_size
+#include "cubature.cl"
+#else
+#include "common/lbmath.h"
+
+#ifndef LB_SH_L
+#define LB_SH_L 8
+#endif
+#define SH_TUNABLE_ARG(name) , real name
+
+/* One work-item per pixel of rows row0 .. row0 + global height; the
+ * arguments between want_stats and zc are robust's (the fallback's), unused. */
+__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
+                     __global int* stats, int want_stats LB_CUB_TUNABLES(SH_TUNABLE_ARG), __global const real* zc,
+                     real far_size)
+{
+    (void)stats;
+    (void)want_stats;
+    int px;
+    lb_light L;
+    real3 x, nx;
+    if (!lb_work_item_receiver(P, row0, &px, &L, &x, &nx))
+        return;
+    const int nb = LB_SH_L + 2, nd = 2 * LB_SH_L + 4; /* host/methods/sh_fit.h shBands, shDirs */
+    real3 p[LB_MAXV];
+    int m = lb_clipped_light(L, x, nx, p);
+    real e = R(0);
+    if (m >= 3) {
+        /* the far field: where the light's diagonal subtends less than 2 far_size
+         * (radians) the exact table toward the centre times the form factor
+         * (engine.cl) takes over, fully below far_size */
+        real3 pc = L.c - x;
+        real size = sqrt(L.w * L.w + L.l * L.l) / length(pc);
+        real t = clamp((R(2) * far_size - size) / far_size, R(0), R(1));
+        real esh = R(0), efar = R(0);
+        /* the emission direction's hemisphere: in front of the light (gamma < 90) or behind */
+        int side = dot(x - L.c, L.n) > R(0) ? 0 : 1;
+        if (t < R(1))
+            esh = fmax(R(0), lb_sh_polygon(p, m, zc + side * (3 * nd + nb * nd), nb, nd));
+        if (t > R(0))
+            efar = lb_radiance_from(lum, L, pc) * lb_polygon_irradiance_lambert(p, m, nx);
+        e = (R(1) - t) * esh + t * efar;
+    }
+    out[px] = e;
+}
+#endif
