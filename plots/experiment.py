@@ -256,7 +256,7 @@ def one_grid(job):
     with open(os.devnull, "w") as null:  # image_grid prints the path
         stdout, sys.stdout = sys.stdout, null
         try:
-            image_grid.main(rows + ["--out", path, "--title", scene, "--size", "2.0", "--dpi", str(dpi)])
+            image_grid.main(rows + ["--out", path, "--title=" + scene, "--size", "2.0", "--dpi", str(dpi)])
         finally:
             sys.stdout = stdout
     plt.close("all")

@@ -61,7 +61,8 @@ std::vector<std::string> luminaireFiles(const std::string& dir, const std::strin
     for (const auto& e : fs::directory_iterator(dir)) {
         std::string ext = e.path().extension().string();
         std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-        if (e.is_regular_file() && (ext == ".ldt" || ext == ".ies")) files.push_back(e.path());
+        if (e.is_regular_file() && (ext == ".ldt" || ext == ".ies"))
+            files.push_back(util::requireUtf8(e.path().string(), "a luminaire file"));
     }
     std::sort(files.begin(), files.end());
     std::vector<std::string> out;
@@ -240,8 +241,8 @@ std::string SceneId::label() const
     std::string rot;
     for (char c : angleText(rotation)) rot += (std::isalnum(static_cast<unsigned char>(c)) || c == '.') ? c : '-';
     const std::string a = kindKeys.kind == SceneKind::Specular ? fmt::format("_a{}", alpha) : "";
-    return fmt::format("{}-{}_h{}_r{}{}_{}", fs::path(luminaire).stem().string(),
-                       util::digestHex(luminaireName).substr(0, 6), height, rot, a, precision);
+    return util::shortName(fmt::format("{}-{}_h{}_r{}{}_{}", fs::path(luminaire).stem().string(),
+                                       util::digestHex(luminaireName).substr(0, 6), height, rot, a, precision));
 }
 
 namespace {

@@ -324,6 +324,7 @@ std::string makePlots(const std::string& dir)
     std::string python = py && *py ? py : "/usr/bin/python3";
     if (!fs::exists(python)) return fmt::format("no Python at {} (set LUMIBENCH_PYTHON)", python);
     std::string script = (fs::path(LB_SOURCE_DIR) / "plots" / "experiment.py").string();
+    util::refuseLinksBelow(dir, "plots");  // the scripts' writes would follow a link
     std::string why;
     int code = util::runProcess({python, script, dir}, {}, &why);
     if (code == -1) return fmt::format("could not start {}: {}", python, why);
@@ -851,6 +852,7 @@ void makeReport(const std::string& dir, const ReportSteps& steps)
     auto say = [&](const std::string& line) {
         if (steps.progress) std::cerr << fmt::format("[{}] report {} ({:.1f} s)\n", steps.tag, line, since(t0));
     };
+    util::refuseLinksBelow(dir, "images", true);  // the error pictures are written again in its folders
     results::Results doc = results::load((fs::path(dir) / "results.json").string());
     results::dedupe(doc.records);
     say("1/3: error pictures on one bound per scene (images/)");

@@ -1,5 +1,7 @@
 #include "experiments/results.h"
 
+#include "experiments/experiment.h"
+#include "scene/scene.h"
 #include "util/error.h"
 #include "util/fileio.h"
 #include "util/json_file.h"
@@ -117,6 +119,33 @@ EqualTime legacyEqualTime(const json& x, const Record& r)
     e.candidates = x.value("equal_time_candidates", json::array());
     e.fit = x.value("equal_time_fit", json::array());
     return e;
+}
+
+// The values a runner writes, held to the ranges it writes them in: a file
+// edited by hand (or damaged) is refused naming the key, never reported.
+void checkRanges(const Record& r)
+{
+    for (const auto& [k, v] : r.ci95)
+        if (v[0] > v[1])
+            throw InputError(
+                fmt::format("key \"ci95\".{}: expected [lo, hi] with lo <= hi, found [{}, {}]", k, v[0], v[1]));
+    if (r.sceneKeys.contains("shape")) {
+        const json& s = r.sceneKeys["shape"];
+        try {
+            parseLightShape(s.is_string() ? s.get<std::string>() : s.dump());
+        } catch (const InputError& e) {
+            throw InputError(fmt::format("key \"shape\": {}", e.what()));
+        }
+    }
+    if (r.sceneKeys.contains("size")) {
+        const json& s = r.sceneKeys["size"];
+        const auto inRange = [](const json& v) {
+            return v.is_number() && v.get<double>() > 0 && v.get<double>() <= kMaxSceneLength;
+        };
+        if (!s.is_array() || s.size() != 2 || !inRange(s[0]) || !inRange(s[1]))
+            throw InputError(
+                fmt::format("key \"size\": expected [W, L] in (0, {}] m, found {}", kMaxSceneLength, s.dump()));
+    }
 }
 
 }  // namespace
@@ -293,7 +322,13 @@ void from_json(const json& j, Record& r)
     if (j.contains("equal_time_to")) r.equal_time_to = field<std::string>(j, "equal_time_to");
     if (j.contains("n")) r.n = field<int64_t>(j, "n");
     if (j.contains("equal_time")) r.equalTime = field<EqualTime>(j, "equal_time");
-    if (j.contains("seeds")) r.seeds = field<int>(j, "seeds");
+    if (j.contains("seeds")) {  // as the widest integer: a large count must not wrap into the range
+        const int64_t seeds = field<int64_t>(j, "seeds");
+        if (!(seeds >= 1 && seeds <= experiments::kMaxSeeds))
+            throw InputError(
+                fmt::format("key \"seeds\": expected an integer in [1, {}], found {}", experiments::kMaxSeeds, seeds));
+        r.seeds = static_cast<int>(seeds);
+    }
     if (j.contains("ci95")) {
         const json ci = field<json>(j, "ci95");
         if (!ci.is_object()) throw InputError("key \"ci95\": expected an object of [lo, hi] by metric");
@@ -319,6 +354,7 @@ void from_json(const json& j, Record& r)
         r.equalTime = legacyEqualTime(r.extra, r);
         for (const char* k : kLegacyEqualTime) r.extra.erase(k);
     }
+    checkRanges(r);
 }
 
 void to_json(json& j, const Results& d)
@@ -333,7 +369,9 @@ void from_json(const json& j, Results& d)
     if (!j["context"].is_object()) throw InputError("\"context\" must be an object");
     if (!j["records"].is_array()) throw InputError("\"records\" must be an array");
     const json version = j.value("schema_version", json(1));
-    if (!version.is_number_integer() || version.get<int>() < 1 || version.get<int>() > kResultsSchemaVersion)
+    // read as the widest integer: 4294967297 must not wrap to 1
+    if (!version.is_number_integer() || version.get<long long>() < 1 ||
+        version.get<long long>() > kResultsSchemaVersion)
         throw InputError(fmt::format("\"schema_version\" {}: this lumibench reads versions 1 to {} (a newer "
                                      "lumibench wrote it?)",
                                      version.dump(), kResultsSchemaVersion));
@@ -428,6 +466,19 @@ void foldJournal(const std::string& jpath, Results& doc)
     dedupe(doc.records);
 }
 
+// The error of a failed open(O_NOFOLLOW) of an output folder's file: a link
+// there is an input error naming it (a planted link would carry the appends
+// out of the folder), anything else the system's reason.
+[[noreturn]] void failOpen(const std::string& path, const char* what)
+{
+    const int e = errno;
+    if (e == ELOOP)
+        throw InputError(fmt::format("{}: the results {} is a symbolic link; expected a regular file (lumibench "
+                                     "writes no output through a link: remove it)",
+                                     path, what));
+    throw Error(fmt::format("{}: cannot open the results {}: {}", path, what, std::strerror(e)));
+}
+
 // Held while a process appends to or compacts a results file: the document
 // is replaced by every save, so a lock on it would not serialise anything.
 struct FileLock {
@@ -435,8 +486,8 @@ struct FileLock {
     explicit FileLock(const std::string& path)
     {
         const std::string lockPath = path + ".lock";
-        fd = ::open(lockPath.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
-        if (fd < 0) throw Error(fmt::format("{}: cannot open lock file: {}", lockPath, std::strerror(errno)));
+        fd = ::open(lockPath.c_str(), O_CREAT | O_RDWR | O_CLOEXEC | O_NOFOLLOW, 0644);
+        if (fd < 0) failOpen(lockPath, "lock file");
         if (::flock(fd, LOCK_EX) != 0) {
             int e = errno;
             ::close(fd);
@@ -507,8 +558,8 @@ void appendRecord(const std::string& path, const json& context, const Record& r)
 {
     FileLock lock(path);
     const std::string jpath = journalPath(path);
-    int fd = ::open(jpath.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
-    if (fd < 0) throw Error(fmt::format("{}: cannot open: {}", jpath, std::strerror(errno)));
+    int fd = ::open(jpath.c_str(), O_CREAT | O_RDWR | O_CLOEXEC | O_NOFOLLOW, 0644);
+    if (fd < 0) failOpen(jpath, "journal");
     struct Close {
         int fd;
         ~Close() { ::close(fd); }

@@ -10,6 +10,7 @@
 #include "metrics/tonemap.h"
 #include "photometry/names.h"
 #include "photometry/text.h"
+#include "experiments/run_lock.h"
 #include "util/digest.h"
 #include "util/error.h"
 #include "util/fileio.h"
@@ -37,7 +38,7 @@ std::string cellImageName(const std::string& role, const std::string& spec)
 {
     std::string out = role == "equal_time" ? "mci_eq_" : "";
     for (char c : spec) out += (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-') ? c : '_';
-    return out;
+    return util::shortName(out);  // a long SPEC (a preset's path) still names a file
 }
 
 namespace {
@@ -47,6 +48,8 @@ using Clock = std::chrono::steady_clock;
 // The error metrics a record carries (an input: records of a runner that
 // computed fewer are recomputed on resume, so that every record has them all).
 const char* const kMetricSet = "nmse nrmse relmse ueb leb grad_nmse flip";
+// The smallest image side that is pictured and given a FLIP (whyNoPictures).
+constexpr int kMinPicturedRes = 2;
 
 // One cell of a scene: a method (as written), an MCI-curve point, or the
 // equal-time partner of a method.
@@ -138,6 +141,7 @@ struct SceneRun {
     methods::Precision prec;
     Image ref;
     std::string imageDir;
+    bool pictured = true;  // false: no pictures, no FLIP for this scene (canBePictured)
 
     // The scene's part of a record, with the name the luminaire file gives it.
     results::Record base() const
@@ -163,7 +167,8 @@ struct SceneRun {
         r.params = spec.paramsJson();
         r.time_ms = {rr.timing.median_ms, rr.timing.min_ms, rr.timing.max_ms, rr.timing.reps, rr.timeRes, rr.timing.cv};
         r.error = metrics::compare(ref, rr.image);
-        r.error.flip = metrics::flip(ref, rr.image);  // null, with one warning per run, without flip-evaluator
+        // null, with one warning per run, without flip-evaluator
+        if (pictured) r.error.flip = metrics::flip(ref, rr.image);
         if (seeded(spec)) {
             std::vector<metrics::Metrics> draws = {r.error};
             for (int k = 1; k < e.seeds; ++k) draws.push_back(drawError(spec, k));
@@ -193,7 +198,7 @@ struct SceneRun {
         imageOnly.reps = 1;
         Image img = methods::render(rt, table, scene, spec.with("seed", std::to_string(seed)), prec, imageOnly).image;
         metrics::Metrics m = metrics::compare(ref, img);
-        m.flip = metrics::flip(ref, img);
+        if (pictured) m.flip = metrics::flip(ref, img);
         return m;
     }
 
@@ -212,6 +217,21 @@ struct SceneRun {
                                 {p + ".json", j.dump() + '\n'}});
     }
 };
+
+// Why a reference cannot be pictured ("" when it can): a black one (the
+// tone-mapping scale is 1/mean, and FLIP's exposure range comes from it) or
+// one too small for FLIP's filters.
+std::string whyNoPictures(const Image& ref)
+{
+    if (ref.width < kMinPicturedRes || ref.height < kMinPicturedRes)
+        return fmt::format("the image is {}x{} pixels, below the {}x{} that FLIP and the pictures need", ref.width,
+                           ref.height, kMinPicturedRes, kMinPicturedRes);
+    double sum = 0;
+    for (double v : ref.px) sum += v;
+    const double mean = sum / double(ref.px.size());
+    if (!(mean > 0) || !std::isfinite(mean)) return fmt::format("the reference's mean is {} lx (black)", mean);
+    return "";
+}
 
 // MC's SPEC of the experiment at N samples (N + extra: mc's fractional count).
 methods::MethodSpec mcAt(const Experiment& e, long n, double extra = 0)
@@ -431,6 +451,10 @@ public:
     RunSummary run()
     {
         context_ = runContext();
+        // one experiment at a time in this folder (its shards together)
+        const RunLock lock(resultsPath_,
+                           util::digestHex(json{e_.name, e_.raw, e_.res, e_.reps, e_.timeRes, e_.luminaireDir}.dump()),
+                           e_.name, e_.path);
         util::removeStaleTemporaries(opt_.outDir);  // left by a killed run
         cells_ = cellsOf(e_);
         dropCellsNotInTheExperiment();
@@ -504,7 +528,7 @@ private:
         for (const auto& [from, to] : renamed) {
             const fs::path src = fs::path(opt_.outDir) / "images" / from, dst = fs::path(opt_.outDir) / "images" / to;
             if (!fs::is_directory(src)) continue;
-            fs::create_directories(dst);
+            util::createDirsBelow(opt_.outDir, fs::path("images") / to);
             for (const auto& f : fs::directory_iterator(src))  // a picture already under the new label is newer
                 if (!fs::exists(dst / f.path().filename())) fs::rename(f.path(), dst / f.path().filename());
             fs::remove_all(src);
@@ -556,13 +580,19 @@ private:
 
     void renderReference(SceneRun& sr)
     {
-        if (e_.saveImages) {
-            sr.imageDir = (fs::path(opt_.outDir) / "images" / sr.sid.label()).string();
-            fs::create_directories(sr.imageDir);
-        }
         methods::RenderOptions ro;
         ro.reps = 1;
         sr.ref = methods::render(rt_, sr.table, sr.scene, refSpec_, sr.prec, ro).image;
+        const std::string why = whyNoPictures(sr.ref);
+        sr.pictured = why.empty();
+        if (!sr.pictured)
+            std::cerr << fmt::format("lumibench: warning: {}: {}: no pictures and no FLIP for this scene; its records "
+                                     "are kept\n",
+                                     sr.sid.label(), why);
+        if (e_.saveImages && sr.pictured) {
+            sr.imageDir = (fs::path(opt_.outDir) / "images" / sr.sid.label()).string();
+            util::createDirsBelow(opt_.outDir, fs::path("images") / sr.sid.label());
+        }
         if (!sr.imageDir.empty()) writeExr((fs::path(sr.imageDir) / "reference.exr").string(), sr.ref);
     }
 

@@ -103,8 +103,17 @@ Cell readCell(const nlohmann::json& r, int version, size_t k, const std::string&
         if (!std::isfinite(*f[q])) throw InputError(fmt::format("{}: cell {}: non-finite value", path, k));
     }
     if (version == 1) c.phi = std::atan2(c.m20, c.m22);
-    if (!(c.norm >= 0 && c.norm <= 1.0 + 1e-9))
-        throw InputError(fmt::format("{}: cell {}: norm {} outside [0, 1]", path, k, c.norm));
+    // A fitted LTC's M^-1 keeps the hemisphere's orientation (m00 > 0, the
+    // determinant of its 2 x 2 part positive: ~1e-10 at the smoothest cells of
+    // data/ltc/); an all-zero or negated matrix renders black or garbage.
+    const double det = c.m00 * c.m22 - c.m02 * c.m20;
+    if (!(c.m00 > 0 && det > 0))
+        throw InputError(fmt::format("{}: cell {}: M^-1 [[{}, {}], [{}, {}]] is not an invertible matrix that keeps "
+                                     "the hemisphere's orientation (expected m00 > 0 and m00 m22 - m02 m20 > 0, got "
+                                     "{})",
+                                     path, k, c.m00, c.m02, c.m20, c.m22, det));
+    if (!(c.norm > 0 && c.norm <= 1.0 + 1e-9))
+        throw InputError(fmt::format("{}: cell {}: norm {} outside (0, 1]", path, k, c.norm));
     return c;
 }
 

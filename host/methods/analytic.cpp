@@ -29,11 +29,7 @@ photometry::Table cosineTable(int n, double i0, bool twoSided, double stepDeg)
 photometry::Table loadLuminaire(const std::string& s)
 {
     const std::string pre = "analytic:cos";
-    if (s.rfind(pre, 0) != 0) {
-        photometry::Table t = photometry::load(s);
-        photometry::requireNoTilt(t);
-        return t;
-    }
+    if (s.rfind(pre, 0) != 0) return photometry::load(s);  // a TILT table is applied per scene (render.h)
     std::string rest = s.substr(pre.size());
     bool two = false;
     if (auto p = rest.find(":two"); p != std::string::npos && p + 4 == rest.size()) {

@@ -17,8 +17,8 @@ namespace lb::methods {
 photometry::Table cosineTable(int n, double i0 = 1000.0, bool twoSided = false, double stepDeg = 0.1);
 
 // "analytic:cos<n>[:two]" (e.g. analytic:cos1 = Lambertian) -> the table; other
-// strings -> photometry::load(path), refused (photometry::requireNoTilt) when
-// the file's TILT=INCLUDE table would change the candela values. The table's
+// strings -> photometry::load(path), its TILT=INCLUDE table kept (render
+// applies it at each scene's rotation: photometry::tiltedFor). The table's
 // `opening` is what the file declares (sizeFromFile puts it in a scene).
 photometry::Table loadLuminaire(const std::string& pathOrAnalytic);
 

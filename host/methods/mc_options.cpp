@@ -79,21 +79,50 @@ McOptions mcOptions(const MethodSpec& s)
     return o;
 }
 
+namespace {
+
+// Whether key k of an mc SPEC holds its default value (a canonical SPEC
+// writes every key out, so a key at its default overrides nothing).
+bool atDefault(const MethodSpec& s, const std::string& k)
+{
+    for (const auto& p : family("mc").params)
+        if (p.name == k) return s.values.at(k) == p.canonical("mc", p.def);
+    return false;
+}
+
+// A key set away from its default where it has no effect is refused, naming
+// what would make it act: `active` says whether it acts in this SPEC, whose
+// `has` (e.g. "domain=area") decides.
+void refuseInert(const MethodSpec& s, const std::string& k, bool active, const std::string& actsWith,
+                 const std::string& has)
+{
+    if (active || atDefault(s, k)) return;
+    throw InputError(fmt::format("method mc: {}={} has no effect with {}; it acts only with {}: drop {}= or give {}", k,
+                                 s.values.at(k), has, actsWith, k, actsWith));
+}
+
+}  // namespace
+
 void validateMc(const MethodSpec& s)
 {
-    if (s.integer("paper") == 0) return;
-    // A key given at its default overrides nothing: the canonical SPEC of a
-    // paper=1 spec (every key written out) parses again.
-    auto atDefault = [&](const std::string& k) {
-        for (const auto& p : family("mc").params)
-            if (p.name == k) return s.values.at(k) == p.canonical("mc", p.def);
-        return false;
-    };
-    for (const char* k : {"domain", "sequence", "pattern", "shift", "min_solid"})
-        if (s.given.count(k) && !atDefault(k))
-            throw InputError(fmt::format("method mc: paper=1 sets {} itself (solid angle, shared Halton points with a "
-                                         "per-pixel shift, area sampling below 1e-3 sr); drop {}= or paper=1",
-                                         k, k));
+    if (s.integer("paper") != 0) {
+        for (const char* k : {"domain", "sequence", "pattern", "shift", "min_solid"})
+            if (s.given.count(k) && !atDefault(s, k))
+                throw InputError(fmt::format("method mc: paper=1 sets {} itself (solid angle, shared Halton points "
+                                             "with a per-pixel shift, area sampling below 1e-3 sr); drop {}= or "
+                                             "paper=1",
+                                             k, k));
+    }
+    const McOptions o = mcOptions(s);  // paper=1 applied
+    const std::string domain = "domain=" + o.domain, sequence = "sequence=" + o.sequence;
+    const bool mis = o.domain == "mis" || o.domain == "mis_table" || o.domain == "mis_table_solid";
+    refuseInert(s, "cosine_warp", o.domain == "solid", "domain=solid", domain);
+    refuseInert(s, "mis_split", mis, "domain=mis, mis_table or mis_table_solid", domain);
+    refuseInert(s, "min_solid", o.domain == "solid" || o.domain == "mis_table_solid", "domain=solid or mis_table_solid",
+                domain);
+    refuseInert(s, "shift", o.sequence == "shared", "sequence=shared", sequence);
+    refuseInert(s, "pattern", o.sequence == "shared", "sequence=shared", sequence);
+    refuseInert(s, "atrous_sigma", o.denoise == "atrous", "denoise=atrous", "denoise=" + o.denoise);
 }
 
 std::string mcDefines(const McOptions& o)

@@ -1,5 +1,6 @@
 #include "methods/render.h"
 
+#include "photometry/load.h"
 #include "util/check.h"
 #include "util/digest.h"
 #include "util/error.h"
@@ -136,7 +137,7 @@ std::string cacheKey(const photometry::Table& table, const Scene& scene, const M
     f.str("lumibench-render-v2");
     auto P = scene.params();
     f.bytes(P.data(), P.size() * sizeof(double));
-    auto lum = table.packed();
+    auto lum = photometry::tiltedFor(table, scene.rotation).packed();
     f.bytes(lum.data(), lum.size() * sizeof(float));
     f.str(precisionName(p));
     f.str(resolvePreset(spec, table.source).canonical());  // a preset: the entry it resolves to
@@ -146,7 +147,8 @@ std::string cacheKey(const photometry::Table& table, const Scene& scene, const M
 
 Prepared::Prepared(ocl::Runtime& rt, const photometry::Table& table, const Scene& scene, const MethodSpec& spec,
                    Precision precision)
-    : fam_(methods::family(spec.name, scene.kind)), spec_(resolvePreset(spec, table.source)), scene_(scene)
+    : fam_(methods::family(spec.name, scene.kind)), spec_(resolvePreset(spec, table.source)), scene_(scene),
+      table_(photometry::tiltedFor(table, scene.rotation))
 {
     if (spec.kind != scene.kind)
         throw InputError(fmt::format("method {} was given for the {} scene, not the {} scene it renders here",
@@ -154,11 +156,11 @@ Prepared::Prepared(ocl::Runtime& rt, const photometry::Table& table, const Scene
     util::checkRange("the scene's res (pixels per side)", scene_.res, 1, kMaxRes);
     scene_.validate();
     checkShape(fam_, scene_);
-    table.validate();
+    table_.validate();
     const bool dbl = precision == Precision::Double;
     if (dbl && !rt.fp64())
         throw InputError(fmt::format("device '{}' has no double precision (cl_khr_fp64)", rt.info().name));
-    Plan plan = planFor(fam_, spec_, scene_, table, rt.info(), precision);
+    Plan plan = planFor(fam_, spec_, scene_, table_, rt.info(), precision);
     options_ = plan.defines;
     if (dbl) options_ += " -DLB_DOUBLE";
     const int lanes = plan.lanes;
@@ -166,7 +168,7 @@ Prepared::Prepared(ocl::Runtime& rt, const photometry::Table& table, const Scene
     finish_ = plan.finish;
     double b0 = rt.buildSeconds();
     ctx_.reset(new LaunchContext{
-        fam_, rt, spec_, scene_, table, precision, rt.kernel(fam_.file, fam_.kernelName, options_), {}, {}, {}, {}});
+        fam_, rt, spec_, scene_, table_, precision, rt.kernel(fam_.file, fam_.kernelName, options_), {}, {}, {}, {}});
     ctx_->stats = nlohmann::json::object();  // {} above made it null
     ctx_->lanes = lanes;
     ctx_->options = options_;
@@ -175,7 +177,7 @@ Prepared::Prepared(ocl::Runtime& rt, const photometry::Table& table, const Scene
     const size_t npx = static_cast<size_t>(scene_.res) * scene_.res;
     cl::Buffer P = ctx_->realBuffer(scene_.params());
     P_ = P;
-    std::vector<float> lum = plan.lum ? plan.lum() : table.packed();
+    std::vector<float> lum = plan.lum ? plan.lum() : table_.packed();
     cl::Buffer L(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, lum.size() * sizeof(float), lum.data());
     ctx_->buffers.push_back(L);
     ctx_->named["P"] = P;  // for the pre-passes' kernels

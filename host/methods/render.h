@@ -66,6 +66,7 @@ private:
     const Family& fam_;
     MethodSpec spec_;
     Scene scene_;
+    photometry::Table table_;  // the scene's: a TILT=INCLUDE factor applied (photometry::tiltedFor)
     std::string options_;
     double buildSeconds_ = 0;
     size_t lx_ = 8, ly_ = 8;

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 
@@ -51,8 +52,39 @@ MethodSpec parseSpec(const std::string& text, SceneKind kind)
     return s;
 }
 
+namespace {
+
+// The presets files being read, outermost first: parsing an entry validates
+// it, and a cubature entry's validation reads its own preset file, so a file
+// naming itself (or two naming each other) would recurse until the stack ran
+// out. A preset may not name another preset: a second level is refused at
+// once, naming the chain.
+struct PresetChain {
+    static std::vector<std::string>& files()
+    {
+        static thread_local std::vector<std::string> f;
+        return f;
+    }
+    explicit PresetChain(const std::string& file)
+    {
+        auto& f = files();
+        if (!f.empty()) {
+            const bool cycle = std::find(f.begin(), f.end(), file) != f.end();
+            throw InputError(fmt::format("{}: presets nested ({} -> {}{}): a preset may not name another preset",
+                                         f.front(), fmt::join(f, " -> "), file, cycle ? ", a cycle" : ""));
+        }
+        f.push_back(file);
+    }
+    ~PresetChain() { files().pop_back(); }
+    PresetChain(const PresetChain&) = delete;
+    PresetChain& operator=(const PresetChain&) = delete;
+};
+
+}  // namespace
+
 std::map<std::string, std::string> readPresets(const std::string& file, const std::string& family, SceneKind kind)
 {
+    const PresetChain chain(file);
     // A presets file holds one SPEC per luminaire: 1 MiB is thousands.
     const nlohmann::json j = util::readJsonObject(file, "a presets file (JSON: luminaire file name -> SPEC)", 1u << 20);
     std::map<std::string, std::string> out;

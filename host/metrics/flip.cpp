@@ -38,6 +38,25 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // one core); a co-process silent for this long is treated as hung.
 constexpr int kAnswerTimeoutMs = 600 * 1000;
 
+// The co-process's folders are lumibench-flip-PID-XXXXXX in the temporary
+// directory, removed when this process ends; one whose process was killed
+// (kill -9 runs no destructor) is removed by the next lumibench that starts
+// FLIP: those of PIDs that no longer run.
+void removeStaleFolders(const fs::path& tmp)
+{
+    const std::string prefix = "lumibench-flip-";
+    std::error_code ec;
+    for (fs::directory_iterator it(tmp, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string n = it->path().filename().string();
+        if (n.rfind(prefix, 0) != 0 || !it->is_directory(ec) || it->is_symlink(ec)) continue;
+        const std::string pid = n.substr(prefix.size(), n.find('-', prefix.size()) - prefix.size());
+        if (pid.empty() || pid.size() > 9 || pid.find_first_not_of("0123456789") != std::string::npos) continue;
+        if (::kill(static_cast<pid_t>(std::stol(pid)), 0) == 0 || errno != ESRCH) continue;
+        std::error_code rec;
+        fs::remove_all(it->path(), rec);
+    }
+}
+
 // The co-process and its temporary directory, started on first use.
 class FlipServer {
 public:
@@ -51,26 +70,41 @@ public:
         return fd_ >= 0;
     }
 
+    // The mean, from the co-process; one that died (or hung) is started
+    // again once for this image, so that one image it could not survive does
+    // not leave every later one without FLIP.
     double mean(const Image& R, const Image& A)
     {
         std::lock_guard<std::mutex> lock(mu_);
-        start();
-        if (fd_ < 0) return kNaN;
-        const fs::path rp = dir_ / "reference.f32", tp = dir_ / "test.f32";
-        try {
-            util::writeFilesAtomic({{rp.string(), floats(R)}, {tp.string(), floats(A)}});
-        } catch (const std::exception& e) {
-            fail(fmt::format("cannot write the images for it: {}", e.what()));
-            return kNaN;
+        for (int attempt = 0;; ++attempt) {
+            start();
+            if (fd_ < 0) return kNaN;
+            const fs::path rp = dir_ / "reference.f32", tp = dir_ / "test.f32";
+            try {
+                util::writeFilesAtomic({{rp.string(), floats(R)}, {tp.string(), floats(A)}});
+            } catch (const std::exception& e) {
+                fail(fmt::format("cannot write the images for it: {}", e.what()));
+                return kNaN;
+            }
+            json req = {{"reference", rp.string()}, {"test", tp.string()}, {"width", R.width}, {"height", R.height}};
+            json ans;
+            std::string err;
+            if (sendAll(req.dump() + "\n", err) && readLine(ans, err)) return value(ans, R);
+            if (attempt > 0) {
+                fail(fmt::format("the FLIP co-process stopped answering twice ({})", err));
+                return kNaN;
+            }
+            std::cerr << fmt::format("lumibench: warning: the FLIP co-process stopped answering ({}) at a {}x{} "
+                                     "image; starting it again\n",
+                                     err, R.width, R.height);
+            stop(true);
+            started_ = false;
         }
-        json req = {{"reference", rp.string()}, {"test", tp.string()}, {"width", R.width}, {"height", R.height}};
-        std::string line = req.dump() + "\n";
-        json ans;
-        std::string err;
-        if (!sendAll(line, err) || !readLine(ans, err)) {
-            fail(fmt::format("the FLIP co-process stopped answering ({})", err));
-            return kNaN;
-        }
+    }
+
+private:
+    static double value(const json& ans, const Image& R)
+    {
         if (ans.contains("error")) {
             // This image only: say so every time (it is not the one-per-run "not available").
             std::cerr << fmt::format("lumibench: warning: FLIP of a {}x{} image failed: {}; flip is null\n", R.width,
@@ -81,7 +115,6 @@ public:
         return v.is_number() ? v.get<double>() : kNaN;
     }
 
-private:
     static std::string floats(const Image& img)
     {
         std::string bytes(img.px.size() * sizeof(float), '\0');
@@ -105,7 +138,9 @@ private:
                                     py));
         }
         if (!fs::exists(script, ec)) return fail(fmt::format("the co-process script {} is missing", script));
-        std::string tmpl = (fs::temp_directory_path(ec) / "lumibench-flip-XXXXXX").string();
+        const fs::path tmp = fs::temp_directory_path(ec);
+        removeStaleFolders(tmp);
+        std::string tmpl = (tmp / fmt::format("lumibench-flip-{}-XXXXXX", ::getpid())).string();
         if (!mkdtemp(tmpl.data()))
             return fail(fmt::format("cannot make a temporary directory {}: {}", tmpl, std::strerror(errno)));
         dir_ = tmpl;

@@ -6,7 +6,10 @@
 // The first call starts one Python co-process (host/metrics/flip_server.py)
 // that lives as long as this process; every later call writes the two images
 // as float32 files into a private temporary directory and asks it for the
-// mean over a socket, so no image pays a Python start-up. The Python is
+// mean over a socket, so no image pays a Python start-up. The directory,
+// lumibench-flip-PID-XXXXXX, is removed when the process ends, and one left by
+// a killed process by the next that starts FLIP. A co-process that dies is
+// started again once per image. The Python is
 // $LUMIBENCH_FLIP_PYTHON when set, else <source dir>/.venv/bin/python (not
 // $LUMIBENCH_PYTHON: that one picks the plotting Python, default the Debian
 // /usr/bin/python3, which has no flip-evaluator).

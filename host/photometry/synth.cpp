@@ -1,5 +1,6 @@
 #include "photometry/synth.h"
 
+#include "photometry/text.h"
 #include "util/error.h"
 
 #include <fmt/format.h>
@@ -148,6 +149,11 @@ Table synth(const std::string& kind, const SynthParams& p)
         if (!(p.gammaStep > 0 && p.gammaStep <= 10 && std::abs(90 / p.gammaStep - std::round(90 / p.gammaStep)) < 1e-9))
             throw InputError(
                 fmt::format("luminaire synth: expected a gamma step dividing 90 degrees, got {}", p.gammaStep));
+        // checked before anything is computed or written: the readers take at most kMaxAngles angles
+        if (std::lround(180 / p.gammaStep) + 1 > kMaxAngles)
+            throw InputError(fmt::format("luminaire synth: expected a gamma step of at least {:.4g} degrees (at "
+                                         "most {} gamma angles, as the readers accept), got {}",
+                                         180.0 / (kMaxAngles - 1), kMaxAngles, p.gammaStep));
         // I0 from the closed-form flux: pi I0 (Lambert), 2 pi I0 / (n + 1) (Phong).
         double i0 = kind == "lambert" ? p.flux / kPi : p.flux * (n + 1) / (2 * kPi);
         int ng = static_cast<int>(std::lround(180 / p.gammaStep)) + 1;

@@ -622,7 +622,7 @@ nlohmann::json toJson(const std::vector<CaseResult>& results, const ocl::Runtime
 void writeReport(const std::string& dir, const std::vector<CaseResult>& results, const ocl::Runtime& rt,
                  const Options& opt)
 {
-    fs::create_directories(fs::path(dir) / "png");
+    util::createDirsBelow(dir, "png");
     // A rerun into the same directory must not leave the pictures of an
     // earlier run's worst methods behind: remove the names this function
     // writes (*_ref.png, *_test.png, *_err.png), nothing else.

@@ -165,6 +165,8 @@ void readSearch(const Reader& r, TuneExperiment& e)
                 r.fail("params", fmt::format("'{}' is not a numeric parameter of method {}", n, base.name));
             if (base.given.count(n))
                 r.fail("params", fmt::format("'{}' is searched, so \"method\" must not set it", n));
+            if (std::count(e.params.begin(), e.params.end(), n) > 1)
+                r.fail("params", fmt::format("'{}' named twice; expected each parameter once", n));
             if (fam.unused && fam.unused(base, n))
                 r.fail("params",
                        fmt::format("'{}' has no effect with method {} (e.g. a static sample's coordinate "
@@ -474,7 +476,6 @@ private:
         ro.progress = !opt_.quiet;
         for (const auto& lum : s.luminaires) {
             auto table = std::make_shared<photometry::Table>(photometry::load(lum));
-            photometry::requireNoTilt(*table);
             for (double h : s.heights)
                 for (size_t r = 0; r < s.rotations.size(); ++r)
                     for (double alpha : e_.sceneKeys.alphas) {
@@ -1010,6 +1011,7 @@ json runTune(const TuneExperiment& e, const TuneOptions& opt)
     if (opt.plot) {
         fs::path script = fs::path(LB_SOURCE_DIR) / "plots" / "tune.py";
         fs::path png = fs::path(opt.outDir) / "tune.png";
+        util::refuseLinksBelow(opt.outDir, "tune.png");  // the script's write would follow a link
         if (fs::exists("/usr/bin/python3") && fs::exists(script)) {
             if (util::runProcess({"/usr/bin/python3", script.string(), out.string(), png.string()}) != 0)
                 fmt::print(stderr, "tune: warning: the convergence plot failed ({} {} {})\n", script.string(),

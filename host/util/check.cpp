@@ -84,4 +84,43 @@ double parseAngle(const std::string& name, const std::string& text)
     return v;
 }
 
+namespace {
+
+// Offset of the first byte of `s` that is not part of a well-formed UTF-8
+// sequence (RFC 3629: no overlong forms, no surrogates, at most U+10FFFF), or npos.
+size_t firstBadUtf8(const std::string& s)
+{
+    const auto* b = reinterpret_cast<const unsigned char*>(s.data());
+    for (size_t i = 0, n = s.size(); i < n;) {
+        const unsigned c = b[i];
+        size_t len = c < 0x80 ? 1 : (c >> 5) == 6 ? 2 : (c >> 4) == 14 ? 3 : (c >> 3) == 30 ? 4 : 0;
+        if (len == 0 || i + len > n || (len == 2 && c < 0xC2)) return i;
+        for (size_t k = 1; k < len; ++k)
+            if ((b[i + k] & 0xC0) != 0x80) return i;
+        if (len == 3) {
+            const unsigned cp = ((c & 0x0F) << 12) | ((b[i + 1] & 0x3F) << 6) | (b[i + 2] & 0x3F);
+            if (cp < 0x800 || (cp >= 0xD800 && cp <= 0xDFFF)) return i;
+        }
+        if (len == 4) {
+            const unsigned cp = ((c & 0x07) << 18) | ((b[i + 1] & 0x3F) << 12) | ((b[i + 2] & 0x3F) << 6);
+            if (cp < 0x10000 || cp > 0x10FFFF) return i;
+        }
+        i += len;
+    }
+    return std::string::npos;
+}
+
+}  // namespace
+
+const std::string& requireUtf8(const std::string& name, const std::string& what)
+{
+    const size_t bad = firstBadUtf8(name);
+    if (bad == std::string::npos) return name;
+    std::string shown;
+    for (unsigned char c : name) shown += c >= 0x20 && c < 0x7F ? std::string(1, char(c)) : fmt::format("\\x{:02x}", c);
+    throw InputError(fmt::format("{}: {}'s name is not valid UTF-8 (byte 0x{:02x} at offset {}); expected a UTF-8 "
+                                 "name: rename the file",
+                                 shown, what, static_cast<unsigned char>(name[bad]), bad));
+}
+
 }  // namespace lb::util

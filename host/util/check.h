@@ -32,4 +32,11 @@ constexpr double kTwoPi = 6.28318530717958647692;
 // Anything else (pi/-2, -pi, pi/0, 1/2) is an InputError naming `name`.
 double parseAngle(const std::string& name, const std::string& text);
 
+// `name` (a file name) unchanged if it is valid UTF-8; else InputError
+// "NAME: WHAT's name is not valid UTF-8 (byte 0xNN at offset K); expected a
+// UTF-8 name: rename the file", the name written with \xNN for each byte that
+// is not printable ASCII. The records, the report and every JSON output hold
+// names as text: a name they cannot hold is refused where it is first read.
+const std::string& requireUtf8(const std::string& name, const std::string& what);
+
 }  // namespace lb::util

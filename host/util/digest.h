@@ -29,4 +29,14 @@ struct Digest {
 // The digest of `bytes` as 16 hex digits.
 std::string digestHex(const std::string& bytes);
 
+// Generated file names (a scene's folder, a cell's pictures) are at most this
+// many bytes, which leaves room below the file systems' 255 for the suffixes
+// written after them ("_test.png", ".tmp.PID.SEQ").
+constexpr size_t kMaxNameBytes = 200;
+
+// `name` itself when it has at most `max` bytes; else its first bytes (cut at
+// a UTF-8 character's start), '-' and digestHex(name): `max` bytes in all, and
+// two long names that differ anywhere stay apart.
+std::string shortName(const std::string& name, size_t max = kMaxNameBytes);
+
 }  // namespace lb::util

@@ -140,23 +140,28 @@ std::string readFile(const std::string& path, const std::string& what, size_t ma
 
 namespace {
 
-// Where the bytes for `path` go: a symbolic link is followed (its target is
-// replaced, the link stays). An existing device, FIFO or socket is refused:
-// opening a FIFO for writing blocks until a reader comes, and renaming a
-// temporary over a device node would replace the node with a plain file.
+// Where the bytes for `path` go: the path itself, a symbolic link there
+// included (the rename replaces the link, not its target). An existing
+// device, FIFO or socket is refused: opening a FIFO for writing blocks until
+// a reader comes, and renaming a temporary over a device node would replace
+// the node with a plain file.
 std::string resolveTarget(const std::string& path)
 {
     std::error_code ec;
     if (path.empty()) throw InputError("an output path is empty; expected a file path");
-    std::string real = path;
-    if (fs::is_symlink(fs::symlink_status(path, ec))) {
-        fs::path p = fs::weakly_canonical(path, ec);
-        if (!ec) real = p.string();
-    }
-    fs::file_status st = fs::status(real, ec);
-    if (!ec && fs::exists(st) && !fs::is_regular_file(st))
+    fs::file_status st = fs::symlink_status(path, ec);
+    if (!ec && fs::exists(st) && !fs::is_regular_file(st) && !fs::is_symlink(st))
         throw InputError(fmt::format("{}: expected a regular file path for an output, got {}", path, fileKind(st)));
-    return real;
+    return path;
+}
+
+std::string linkMessage(const fs::path& p, const std::string& root)
+{
+    std::error_code ec;
+    const fs::path to = fs::read_symlink(p, ec);
+    return fmt::format("{}: a symbolic link (to {}) inside the output folder {}; expected a directory or file of "
+                       "its own (lumibench writes no output through a link: remove it)",
+                       p.string(), ec ? std::string("?") : to.string(), root);
 }
 
 }  // namespace
@@ -233,6 +238,41 @@ size_t removeStaleTemporaries(const std::string& dir)
     return removed;
 }
 
+void createDirsBelow(const std::string& root, const std::string& rel)
+{
+    std::error_code ec;
+    fs::create_directories(root, ec);
+    if (ec) throw Error(fmt::format("{}: cannot create the directory: {}", root, ec.message()));
+    fs::path p = root;
+    for (const auto& part : fs::path(rel)) {
+        if (part.empty() || part == ".") continue;
+        p /= part;
+        const fs::file_status st = fs::symlink_status(p, ec);
+        if (fs::is_symlink(st)) throw InputError(linkMessage(p, root));
+        if (fs::is_directory(st)) continue;
+        if (fs::exists(st))
+            throw InputError(
+                fmt::format("{}: expected a directory inside the output folder, got {}", p.string(), fileKind(st)));
+        if (!fs::create_directory(p, ec) && ec)
+            throw Error(fmt::format("{}: cannot create the directory: {}", p.string(), ec.message()));
+    }
+}
+
+void refuseLinksBelow(const std::string& root, const std::string& rel, bool dirsOnly)
+{
+    std::error_code ec;
+    fs::path p = root;
+    for (const auto& part : fs::path(rel)) {
+        p /= part;
+        if (fs::is_symlink(fs::symlink_status(p, ec))) throw InputError(linkMessage(p, root));
+    }
+    if (!fs::is_directory(fs::symlink_status(p, ec))) return;
+    for (fs::recursive_directory_iterator it(p, fs::directory_options::none, ec), end; !ec && it != end;
+         it.increment(ec))
+        if (it->is_symlink(ec) && (!dirsOnly || fs::is_directory(it->path(), ec)))
+            throw InputError(linkMessage(it->path(), root));
+}
+
 void copyTreeAtomic(const std::string& from, const std::string& to)
 {
     std::error_code ec;
@@ -242,13 +282,11 @@ void copyTreeAtomic(const std::string& from, const std::string& to)
         if (ec) throw Error(fmt::format("{}: cannot read the directory: {}", from, ec.message()));
         std::error_code sec;
         if (it->is_symlink(sec) || !it->is_regular_file(sec)) continue;
-        const fs::path target = fs::path(to) / fs::relative(it->path(), from, sec);
-        fs::create_directories(target.parent_path(), sec);
-        if (sec)
-            throw Error(
-                fmt::format("{}: cannot create the directory: {}", target.parent_path().string(), sec.message()));
+        const fs::path rel = fs::relative(it->path(), from, sec);
+        createDirsBelow(to, rel.parent_path().string());
         // Images are at most a few hundred MiB (16384^2 floats is 1 GiB: allow 4).
-        writeFileAtomic(target.string(), readFile(it->path().string(), "a file to copy", size_t(4) << 30));
+        writeFileAtomic((fs::path(to) / rel).string(),
+                        readFile(it->path().string(), "a file to copy", size_t(4) << 30));
     }
 }
 

@@ -14,10 +14,13 @@
 // and its side files): all temporaries are written first, so a failure of any
 // leaves none of them.
 //
-// A symbolic link is followed (its target is replaced, the link kept); an
-// existing device, FIFO or socket (--out /dev/null) is refused with an
-// lb::InputError: a FIFO would block until a reader comes, and a rename
-// would replace the device node itself. So is an empty path.
+// A symbolic link at the output's path is never followed: the rename replaces
+// the link itself, so a link planted in an output folder (report.html ->
+// ~/.bashrc) cannot make lumibench write elsewhere. An existing device, FIFO
+// or socket (--out /dev/null) is refused with an lb::InputError: a FIFO would
+// block until a reader comes, and a rename would replace the device node
+// itself. So is an empty path. Directories inside an output folder are made
+// by createDirsBelow(), which refuses a link in their place.
 //
 // Temporary files are named TARGET.tmp.PID.SEQ. One left behind by a killed
 // process (kill -9 cannot be caught) is removed by removeStaleTemporaries(),
@@ -52,8 +55,20 @@ void writeFilesAtomic(const std::vector<std::pair<std::string, std::string>>& fi
 // were removed. Errors are ignored (best effort).
 size_t removeStaleTemporaries(const std::string& dir);
 
+// Makes the directory root/rel and every one between them (root itself may be
+// or lie below a link: the user named it). A symbolic link or anything but a
+// directory at root/rel or between is refused with an lb::InputError naming
+// it: a link there would carry the outputs out of the folder.
+void createDirsBelow(const std::string& root, const std::string& rel);
+
+// Refuses (lb::InputError naming it) a symbolic link at root/rel or anywhere
+// below it: for outputs written by other programs (the plot scripts), which
+// would follow it. `dirsOnly`: only links to directories (where files are
+// written by writeFileAtomic, which replaces a link to a file).
+void refuseLinksBelow(const std::string& root, const std::string& rel, bool dirsOnly = false);
+
 // Copies every regular file below directory `from` to the same place below
-// `to` (directories created, existing files replaced), each file written
+// `to` (directories created by createDirsBelow, existing files replaced), each file written
 // atomically as above: a full disk or a kill leaves each target whole or as
 // it was, never a 0-byte or truncated copy. Links and special files are
 // skipped. Throws lb::Error naming the file that failed.

@@ -48,14 +48,32 @@ def radiance_bin():
     return d if os.path.exists(os.path.join(d, "rtrace")) else None
 
 
-def write_ies(table, path, w, l):
+def read_tilt(path):
+    """The TILT=INCLUDE block of an IES file as its lines (geometry, count, angles,
+    factors), or None: Radiance applies it through ies2rad's tilt.cal, by the
+    light's orientation in the scene (acos of its z axis's z after xform)."""
+    if not path.lower().endswith(".ies"):
+        return None
+    with open(path, encoding="latin-1") as f:
+        lines = f.read().splitlines()
+    at = next((i for i, t in enumerate(lines) if t.strip().startswith("TILT=")), None)
+    if at is None or lines[at].strip() != "TILT=INCLUDE":
+        return None
+    words = " ".join(lines[at + 1:]).split()
+    n = int(words[1])
+    return [words[0], str(n), " ".join(words[2:2 + n]), " ".join(words[2 + n:2 + 2 * n])]
+
+
+def write_ies(table, path, w, l, tilt=None):
     """The unfolded table as an LM-63 file of absolute candela, every C plane, on a
     flat W x L rectangle (length W along C0, width L along C90), so that ies2rad
-    writes the flat source's correction 1 / cos (a point would be a sphere)."""
+    writes the flat source's correction 1 / cos (a point would be a sphere); the
+    file's TILT=INCLUDE block where it has one."""
     c, g, cd = table["c"], table["gamma"], table["cd"]
     nc, ng = len(c), len(g)
     assert len(cd) == nc * ng, "luminaire dump: cd is C-major, |C| x |gamma|"
-    lines = ["IESNA:LM-63-2002", "[TEST] lumibench radiance peer", "TILT=NONE"]
+    lines = ["IESNA:LM-63-2002", "[TEST] lumibench radiance peer"]
+    lines += ["TILT=INCLUDE"] + tilt if tilt else ["TILT=NONE"]
     # lamps, lumens (-1: absolute), multiplier, |gamma|, |C|, type C, units m, w l h
     lines.append(f"1 -1 1 {ng} {nc} 1 2 {l!r} {w!r} 0")
     lines.append("1 1 0")
@@ -136,7 +154,7 @@ def main(argv):
                                       text=True).stdout)
     tmp = tempfile.mkdtemp(prefix="lb-radiance-")
     try:
-        write_ies(table, os.path.join(tmp, "lum.ies"), w, l)
+        write_ies(table, os.path.join(tmp, "lum.ies"), w, l, read_tilt(lum))
         subprocess.run(["ies2rad", "-dm", "-c", "1", "1", "1", "-o", "out", "lum.ies"], cwd=tmp, env=env,
                        check=True, capture_output=True)
         with open(os.path.join(tmp, "out.rad")) as f:

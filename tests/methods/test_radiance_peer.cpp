@@ -12,6 +12,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -147,6 +149,35 @@ TEST(RadiancePeer, ReferenceAgreesWithRtraceOnDisks)
         // coarsest against the distance (the 150 mm disk 0.1 m above the floor; its
         // error falls 4x per refinement towards the reference, radiance_peer.py)
         EXPECT_LT(relativeRms(pc, dir), 2e-3) << pc.file << " h " << pc.height << " R " << pc.rotation;
+    }
+    fs::remove_all(dir);
+}
+
+// An IES file with TILT=INCLUDE (the suite's quadrant luminaire with factors
+// 1, 0.9, 0.8 at lamp tilts 0, 45, 90 degrees): Radiance applies the table
+// through ies2rad's tilt.cal by the light's orientation in the scene, lumibench
+// by the scene's rotation (photometry::tiltedFor). The factor moves every
+// value by up to 20 %, far beyond the peer's agreement.
+TEST(RadiancePeer, TiltIncludeIsAppliedAsRadianceAppliesIt)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    if (!fs::exists(venvPython()) || !havePyradiance())
+        GTEST_SKIP() << "pyradiance is not installed in .venv (scripts/install-deps.sh could not reach PyPI)";
+    const fs::path dir = test::freshDir("radiance-peer-tilt");
+    std::ifstream in(test::sourceDir() + "/luminaires/quadrant.ies");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const size_t at = text.find("TILT=NONE");
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, 9, "TILT=INCLUDE\n1\n3\n0 45 90\n1 0.9 0.8");
+    const std::string file = (dir / "tilted.ies").string();
+    std::ofstream(file) << text;
+    const double pi = M_PI;
+    for (const PeerCase& pc : std::vector<PeerCase>{{file, 1, 1, 1.1, "pi", pi},
+                                                    {file, 1, 1, 1.1, "3pi/4", 3 * pi / 4},
+                                                    {file, 1, 1, 1.1, "5pi/8", 5 * pi / 8},
+                                                    {file, 1, 1, 0.1, "pi/2", pi / 2}}) {
+        // 1e-3, as for the untilted files above; the factor 0.9 alone is 0.1
+        EXPECT_LT(relativeRms(pc, dir), 1e-3) << "h " << pc.height << " R " << pc.rotation;
     }
     fs::remove_all(dir);
 }

@@ -77,8 +77,9 @@ TEST(AtomicWrite, WritesAndReplaces)
 // refused with an input error and stays a FIFO (writing would block until a
 // reader comes; a rename would replace the node with a plain file: run as
 // root, `--out /dev/full` once turned /dev/full into one); a symbolic link
-// keeps being a link and its target gets the bytes.
-TEST(AtomicWrite, SpecialFilesAreRefusedAndLinksWrittenThrough)
+// is replaced by the file, its target left as it was (a link planted in an
+// output folder must not carry the bytes elsewhere).
+TEST(AtomicWrite, SpecialFilesAreRefusedAndLinksReplaced)
 {
     ASSERT_TRUE(fs::is_character_file("/dev/full")) << "/dev/full is not a device here; the full-disk tests need it";
     fs::path d = tmpDir("special");
@@ -93,8 +94,9 @@ TEST(AtomicWrite, SpecialFilesAreRefusedAndLinksWrittenThrough)
     util::writeFileAtomic((d / "real.json").string(), "old");
     fs::create_symlink("real.json", d / "link.json");
     util::writeFileAtomic((d / "link.json").string(), "new");
-    EXPECT_TRUE(fs::is_symlink(d / "link.json"));
-    EXPECT_EQ(slurp(d / "real.json"), "new");
+    EXPECT_FALSE(fs::is_symlink(d / "link.json"));  // the link replaced, its target untouched
+    EXPECT_EQ(slurp(d / "link.json"), "new");
+    EXPECT_EQ(slurp(d / "real.json"), "old");
     EXPECT_EQ(entries(d), (std::vector<std::string>{"link.json", "pipe", "real.json"}));
 }
 
