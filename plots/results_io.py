@@ -116,6 +116,19 @@ def load_records(path):
     return recs
 
 
+def load_context(path):
+    """The run's context (device, commit, date, experiment_spec, ...) of a
+    results directory or .json[.xz] file; {} for a CSV or where the file has none."""
+    path = results_file(path)
+    if path.endswith(".csv"):
+        return {}
+    opener = lzma.open if path.endswith(".xz") else open
+    with opener(path, "rt") as f:
+        doc = json.load(f)
+    c = doc.get("context") if isinstance(doc, dict) else None
+    return c if isinstance(c, dict) else {}
+
+
 def pooled_nmse(recs):
     """NMSE of the records' images stitched side by side into one, as
     lumibench's report pools them (metrics::pooled, host/metrics/metrics.h):
@@ -238,3 +251,97 @@ def verdict(method, partner, metric="nmse"):
     if m[0] > p[1]:
         return "loss"
     return "tie"
+
+
+# MC parameters that vary within one baseline: its sample count, the seed of a
+# draw, and the fraction of tiles an equal-time partner gives N + 1 samples.
+PER_RECORD_PARAMS = ("n", "seed", "extra")
+
+
+def _param_text(v):
+    if isinstance(v, float) and v.is_integer() and abs(v) < 1e15:
+        return str(int(v))
+    return str(v)
+
+
+def mc_spec(params, method="mc"):
+    """The canonical SPEC of an MC record's baseline: its method and every
+    parameter but n, seed and extra, sorted by name ("mc:domain=solid,...")."""
+    rest = ",".join("{}={}".format(k, _param_text(v)) for k, v in sorted((params or {}).items())
+                    if k not in PER_RECORD_PARAMS)
+    return method + (":" + rest if rest else "")
+
+
+def _explicit_baseline(r):
+    """(label, spec) as a record names its baseline, or (None, None): a
+    "baseline" object {label, spec} or string, or flat baseline_label /
+    baseline_spec keys (results.csv)."""
+    b = r.get("baseline")
+    if isinstance(b, dict):
+        return b.get("label"), b.get("spec")
+    label = b if isinstance(b, str) and b else r.get("baseline_label")
+    return label or None, r.get("baseline_spec") or None
+
+
+def is_curve(r):
+    return r.get("role") == "mci_curve"
+
+
+def is_partner(r):
+    return r.get("role") == "equal_time" or "equal_time_to" in r
+
+
+def baselines(records, context=None):
+    """The Monte Carlo baselines of a run, in the order first met, as an
+    ordered dict {canonical spec: label}: from the records' own baseline
+    fields where they have them, else from their parameters (every parameter
+    but n, seed and extra). An unlabelled baseline is named by the
+    experiment's `mc` (a string) or "MC" where it is the only one unlabelled,
+    else by the parameters that tell them apart ("domain=solid,sequence=sobol")."""
+    found, labels = {}, {}
+    for r in records:
+        if not (is_curve(r) or is_partner(r)):
+            continue
+        label, spec = _explicit_baseline(r)
+        spec = spec or mc_spec(r.get("params"), r.get("method", "mc"))
+        found.setdefault(spec, None)
+        if label and not labels.get(spec):
+            labels[spec] = label
+    unnamed = [s for s in found if not labels.get(s)]
+    if unnamed:
+        written = ((context or {}).get("experiment_spec") or {}).get("mc")
+        if len(unnamed) == 1:
+            labels[unnamed[0]] = written if isinstance(written, str) and written else "MC"
+        else:
+            parts = {s: dict(kv.split("=", 1) for kv in s.partition(":")[2].split(",") if "=" in kv) for s in found}
+            keys = sorted({k for p in parts.values() for k in p if len({q.get(k) for q in parts.values()}) > 1})
+            for s in unnamed:
+                labels[s] = ",".join("{}={}".format(k, parts[s][k]) for k in keys if k in parts[s]) or s
+    return {s: labels[s] for s in found}
+
+
+def baseline_of(r, known):
+    """(label, spec) of a curve point or equal-time partner, `known` being
+    baselines(records); None for any other record."""
+    if not (is_curve(r) or is_partner(r)):
+        return None
+    label, spec = _explicit_baseline(r)
+    spec = spec or mc_spec(r.get("params"), r.get("method", "mc"))
+    return label or known.get(spec, spec), spec
+
+
+def pair_verdict(method, partner, metric="nmse"):
+    """The equal-time verdict of a method against one partner: the partner
+    record's own `verdict` where the run wrote one (a string, or one per
+    metric), else "off-time" where the pair's
+    times differ by more than its tolerance (equal_time ok false), else
+    verdict()."""
+    v = partner.get("verdict")
+    if isinstance(v, dict):
+        v = v.get(metric)
+    if isinstance(v, str) and v:
+        return v
+    et = equal_time(partner) or {}
+    if et.get("ok") is False:
+        return "off-time"
+    return verdict(method, partner, metric)
