@@ -26,7 +26,7 @@ import textwrap
 import matplotlib.pyplot as plt
 
 import style
-from results_io import baseline_of, interval, is_curve, is_partner, mc_spec
+from results_io import baseline_of, equal_time, interval, is_curve, is_partner, mc_spec, written_spec
 
 
 def finite(v):
@@ -79,8 +79,10 @@ def series(r, known):
     """The legend series of a record that is drawn as a point: its method's
     spec, or MCI=<method> for a partner (with [label] where the run has
     several baselines)."""
-    s = style.series_of(r)
-    if is_partner(r) and len(known) > 1:
+    if not is_partner(r):
+        return written_spec(r)
+    s = style.PARTNER + ((equal_time(r) or {}).get("label") or "?")
+    if len(known) > 1:
         s += " [{}]".format(baseline_of(r, known)[0])
     return s
 
@@ -178,7 +180,7 @@ def draw_panel(ax, curve_map, point_map):
 
 def legend_labels(names, known, curve_ns):
     """The legend's text of each series: a curve by its label, its spec where
-    that says more, and its N."""
+    that says more, and its N; a partner as <baseline>=<method>."""
     specs = {label: spec for spec, label in known.items()}
     out = []
     for n in names:
@@ -188,6 +190,13 @@ def legend_labels(names, known, curve_ns):
             text = "{} over N{}{}".format(label, " = " + curve_ns[label] if curve_ns.get(label) else "",
                                           " ({})".format(spec) if spec and spec != label else "")
             out.append(style.wrap(text, 40))
+        elif style.is_partner(n):
+            # "<baseline>=<method>": that baseline at the method's time, as the report names it
+            body = n[len(style.PARTNER):]
+            label = next(iter(specs), "MC")
+            if body.endswith("]") and " [" in body:
+                body, label = body[:body.rindex(" [")], body[body.rindex(" [") + 2:-1]
+            out.append(style.wrap("{}={}".format(label, body)))
         else:
             out.append(style.wrap(n))
     return out
@@ -229,9 +238,13 @@ def caption_text(records, pooled_note=""):
 
 def add_caption(fig, legend, text, width_in):
     """The caption under the legend, wrapped to the figure's width."""
-    fig.canvas.draw()
-    box = legend.get_window_extent(fig.canvas.get_renderer())
-    y = box.y0 / fig.bbox.height - 0.02
+    dpi = fig.dpi
+    fig.set_dpi(style.DPI)  # measured at the saved file's dpi, where the text runs a little longer
+    try:
+        box = legend.get_window_extent(fig.canvas.get_renderer())
+        y = (box.y0 - 0.08 * fig.dpi) / fig.bbox.height
+    finally:
+        fig.set_dpi(dpi)
     chars = max(30, int((width_in - 0.1) / 0.062))
     # the empty last line: room below the text, whose extent at the saved dpi may exceed the one measured
     fig.text(0.5, y, "\n".join(textwrap.wrap(text, chars)) + "\n ", ha="center", va="top",

@@ -18,7 +18,7 @@ import sys
 
 # CSV columns that hold text even when they look like a number.
 TEXT = {"role", "series", "method", "spec", "scene", "luminaire", "precision", "device", "driver",
-        "equal_time_label"}
+        "equal_time_label", "luminaire_name", "baseline", "baseline_spec", "verdict", "verdict_flip", "off_time"}
 # Metric keys: an empty field is an undefined value (null in the JSON), kept as None.
 METRICS = {"nmse", "nrmse", "relmse", "ueb", "leb", "mean_ref", "mean_test", "grad_nmse", "flip"}
 # CSV columns named with their unit: the record key each stands for.
@@ -81,6 +81,8 @@ def _record(row):
             continue  # MC's n outside a partner is its parameter, in params
         else:
             r[key] = s if key in TEXT else _value(s)
+    if "n" not in params and row.get("n") not in (None, "") and r.get("role") != "equal_time":
+        params["n"] = _value(row["n"])  # a CSV without a params column: MC's n is its column
     _partner(r)
     r["params"] = params
     r["time_ms"] = time_ms
@@ -345,3 +347,12 @@ def pair_verdict(method, partner, metric="nmse"):
     if et.get("ok") is False:
         return "off-time"
     return verdict(method, partner, metric)
+
+
+def written_spec(r):
+    """A method record's SPEC as the experiment wrote it (what a partner's
+    equal-time label names): results.csv's `series` where its `spec` is the
+    canonical one, else `spec`."""
+    if r.get("role", "method") == "method" and isinstance(r.get("series"), str) and r["series"]:
+        return r["series"]
+    return r.get("spec") or r.get("method")

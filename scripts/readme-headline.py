@@ -34,7 +34,7 @@ import tempfile
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "plots"))
 from results_io import (baseline_of, baselines, equal_time, is_partner, load_context, load_records,  # noqa: E402
-                        pair_verdict)
+                        pair_verdict, written_spec)
 
 BEGIN, END = "<!-- headline:begin -->", "<!-- headline:end -->"
 RESULTS = "experiments/results/main.json.xz"
@@ -52,7 +52,7 @@ def tally(records, known):
     methods = {}
     for r in records:
         if r.get("role", "method") == "method" and not is_partner(r):
-            methods[(scene_key(r), r.get("spec") or r.get("method"))] = r
+            methods[(scene_key(r), written_spec(r))] = r
     counts = collections.defaultdict(collections.Counter)
     ratios = collections.defaultdict(list)
     for p in records:
