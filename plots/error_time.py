@@ -13,8 +13,9 @@
 - Per scene (metric_time: a panel per height and rotation, one figure per
   luminaire), and pooled (pooled_time: the geometric mean over scenes of the
   metric, its bounds and the times, one panel for all scenes and one per
-  luminaire). A pooled curve holds the N every scene of the panel has, a
-  pooled method the methods every scene has.
+  luminaire). A pooled curve point is the mean over the scenes where the
+  error at that N is defined (N* where some lack it), a pooled method is
+  drawn where every scene has it.
 - The caption under the legend names the device, the timing resolution (the
   pixels each launch was timed at), the timed runs and the seeds.
 """
@@ -125,7 +126,7 @@ def non_monotone(pts):
     return out
 
 
-def draw_curve(ax, label, pts, all_n=True):
+def draw_curve(ax, label, pts, all_n=True, fewer=()):
     """A baseline's curve: the band, the line through its points in N order,
     N beside them (every other one where more than six would crowd the panel;
     the last always; the first and the last only where not all_n) and a ring
@@ -146,7 +147,7 @@ def draw_curve(ax, label, pts, all_n=True):
         last = i == len(pts) - 1
         if i % step == 0 or last:
             # the last one below-left of its point: inside the panel, not under the next one
-            ax.annotate(_n_text(p[0]), (p[1], p[2]), xytext=(-2, -3) if last else (2, 2),
+            ax.annotate(_n_text(p[0]) + ("*" if p[0] in fewer else ""), (p[1], p[2]), xytext=(-2, -3) if last else (2, 2),
                         textcoords="offset points", ha="right" if last else "left", va="top" if last else "bottom",
                         fontsize=style.MIN_FONT_PT, color=colour, gid="curve-label")
 
@@ -166,10 +167,10 @@ def draw_point(ax, s, p):
     ax.plot(t, v, **style.plot_kw(s))
 
 
-def draw_panel(ax, curve_map, point_map):
+def draw_panel(ax, curve_map, point_map, fewer=None):
     # N beside every other point of the first curve; of the others, the ends (else they crowd)
     for k, (label, pts) in enumerate(sorted(curve_map.items(), key=lambda kv: style.order(style.curve_series(kv[0])))):
-        draw_curve(ax, label, pts, all_n=k == 0)
+        draw_curve(ax, label, pts, all_n=k == 0, fewer=(fewer or {}).get(label, ()))
     for s in sorted(point_map, key=style.order):
         draw_point(ax, s, point_map[s])
     ax.set_xscale("log")
@@ -181,7 +182,7 @@ def draw_panel(ax, curve_map, point_map):
 def legend_labels(names, known, curve_ns):
     """The legend's text of each series: a curve by its label, its spec where
     that says more, and its N; a partner as <baseline>=<method>."""
-    specs = {label: spec for spec, label in known.items()}
+    specs = {label: short_spec(spec, known) for spec, label in known.items()}
     out = []
     for n in names:
         if style.is_curve(n):
@@ -200,6 +201,20 @@ def legend_labels(names, known, curve_ns):
         else:
             out.append(style.wrap(n))
     return out
+
+
+# Parameters that say which Monte Carlo a baseline is; the legend always names them.
+SAMPLER_KEYS = ("domain", "sequence", "pattern", "denoise", "paper")
+
+
+def short_spec(spec, known):
+    """A baseline's spec for a legend: its sampler's parameters, and the others
+    where they differ between the run's baselines (the full specs are in the
+    records and the report)."""
+    parse = lambda s: dict(kv.split("=", 1) for kv in s.partition(":")[2].split(",") if "=" in kv)  # noqa: E731
+    mine, all_ = parse(spec), [parse(s) for s in known]
+    keep = [k for k in sorted(mine) if k in SAMPLER_KEYS or len({p.get(k) for p in all_}) > 1]
+    return spec.partition(":")[0] + (":" + ",".join("{}={}".format(k, mine[k]) for k in keep) if keep else "")
 
 
 def figure_legend(fig, width_in, known, curve_ns, marks_back):
@@ -326,23 +341,24 @@ def geomean(xs):
 
 def pool(cells, key, known):
     """The geometric mean over scenes (cells: one list of records per scene)
-    of each baseline's curve at the N every scene has and of each method
-    every scene has: (curves, points) as curves() and points() give them."""
+    of each baseline's curve and of each method every scene has: (curves,
+    points, fewer) as curves() and points() give them, `fewer` {label: the N
+    that some scenes lack (an undefined error: a black image at N = 1), whose
+    mean is over the others}."""
     per = [(curves(c, key, known), points(c, key, known, partners=False)) for c in cells]
     if not per:
-        return {}, {}
+        return {}, {}, {}
     mean = lambda rows: tuple(geomean(col) for col in zip(*rows))  # noqa: E731
-    cm = {}
-    for label in set.intersection(*(set(c) for c, _ in per)):
-        ns = set.intersection(*({p[0] for p in c[label]} for c, _ in per))
-        pts = []
-        for n in sorted(ns):
-            rows = [next(p[1:] for p in c[label] if p[0] == n) for c, _ in per]
-            pts.append((n,) + mean(rows))
-        if pts:
-            cm[label] = pts
+    cm, fewer = {}, {}
+    for label in set().union(*(set(c) for c, _ in per)):
+        by_n = collections.defaultdict(list)
+        for c, _ in per:
+            for p in c.get(label, []):
+                by_n[p[0]].append(p[1:])
+        cm[label] = [(n,) + mean(by_n[n]) for n in sorted(by_n)]
+        fewer[label] = {n for n in by_n if len(by_n[n]) < len(per)}
     pm = {s: mean([p[s] for _, p in per]) for s in set.intersection(*(set(p) for _, p in per))}
-    return cm, pm
+    return cm, pm, fewer
 
 
 def scenes(records):
@@ -384,12 +400,13 @@ def _pooled_figure(groups, rs, key, name, known, prec, path, dpi):
     pw = min(2.6 if cols == 1 else 2.1, (style.TEXT_WIDTH - 0.8) / cols)
     W, H = 0.75 + pw * cols + 0.05, 0.5 + 0.42 + 0.8 * pw * rows
     fig, axes = plt.subplots(rows, cols, figsize=(W, H), squeeze=False, sharex=True, sharey=True)
-    back = False
+    back = partial = False
     for k, (title, recs) in enumerate(groups):
         ax = axes[k // cols][k % cols]
-        cm, pm = pool(list(scenes(recs).values()), key, known)
+        cm, pm, fewer = pool(list(scenes(recs).values()), key, known)
         back |= any(non_monotone(p) for p in cm.values())
-        draw_panel(ax, cm, pm)
+        partial |= any(fewer.values())
+        draw_panel(ax, cm, pm, fewer)
         ax.set_title(textwrap.shorten(title, int(pw / 0.065)), fontsize=style.MIN_FONT_PT)
         if k % cols == 0:
             ax.set_ylabel("{} (geometric mean)".format(name))
@@ -402,7 +419,8 @@ def _pooled_figure(groups, rs, key, name, known, prec, path, dpi):
     fig.subplots_adjust(left=0.75 / W, right=1 - 0.05 / W, top=1 - 0.5 / H, bottom=0.42 / H, wspace=0.08,
                         hspace=0.35)
     legend = figure_legend(fig, W, known, curve_ns(rs, known), back)
-    note = "Geometric means over the panel's scenes (curves: the N every scene has)."
+    note = "Geometric means over the panel's scenes{}.".format(
+        "; N* over the scenes where the error is defined (some lack it)" if partial else "")
     add_caption(fig, legend, caption_text(rs, note), W)
     files = style.save(fig, path, dpi=dpi)
     plt.close(fig)
