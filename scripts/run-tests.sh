@@ -4,7 +4,8 @@
 # kernel function exceeds 80 lines or 8 parameters (scripts/kernel-limits.py),
 # that every file, section and anchor README.md and docs/ link to exists
 # (scripts/check-links.py), that the README's headline is the one its committed
-# results give (scripts/readme-headline.py --check), builds, and runs the whole test suite on the default OpenCL device (PoCL).
+# results give (scripts/readme-headline.py --check), builds, and runs the whole
+# test suite on the default OpenCL device (PoCL).
 # Tests that need a device fail rather than skip.
 set -euo pipefail
 cd "$(dirname "$0")/.."
