@@ -27,7 +27,8 @@ import textwrap
 import matplotlib.pyplot as plt
 
 import style
-from results_io import baseline_of, equal_time, interval, is_curve, is_partner, mc_spec, written_spec
+from results_io import (PER_RECORD_PARAMS, baseline_of, equal_time, interval, is_curve, is_partner, mc_spec,
+                        written_spec)
 
 
 def finite(v):
@@ -72,8 +73,16 @@ def curve_of(r, known):
         return baseline_of(r, known)[0]
     if r.get("role", "method") == "method" and r.get("method") == "mc" and not is_partner(r):
         spec = mc_spec(r.get("params"), "mc")
-        return known.get(spec) if spec in known else None
+        return next((label for s, label in known.items() if _without_per_record(s) == spec), None)
     return None
+
+
+def _without_per_record(spec):
+    """A baseline's spec without the parameters that vary within it (a spec
+    that names its seed is the same baseline at another seed)."""
+    name, _, rest = spec.partition(":")
+    kept = [kv for kv in rest.split(",") if kv and kv.split("=", 1)[0] not in PER_RECORD_PARAMS]
+    return name + (":" + ",".join(sorted(kept, key=lambda kv: kv.split("=", 1)[0])) if kept else "")
 
 
 def series(r, known):
