@@ -707,8 +707,8 @@ ReportContent reportContent(const std::string& dir, const results::Results& doc,
     const std::vector<std::string> cols = columns(doc, &c.summary);
     const std::string pooledNote =
         "Each cell is the error of the rotations' images stitched into one, as in the thesis: squared errors summed "
-        "over all rotations' pixels, against the pooled means (`metrics::pooled`; docs/studies/thesis-sct-vs-mci.md), not "
-        "the mean of the rotations' values, which one nearly dark rotation can dominate. ";
+        "over all rotations' pixels, against the pooled means (`metrics::pooled`; docs/studies/thesis-sct-vs-mci.md), "
+        "not the mean of the rotations' values, which one nearly dark rotation can dominate. ";
     c.tables = {
         mainTable(doc, cols, "nmse", "NMSE per luminaire and height (rotations stitched)", pooledNote),
         mainTable(doc, cols, "grad_nmse", "grad_nmse per luminaire and height (rotations stitched)",
