@@ -115,7 +115,7 @@ def headline(records, context, source):
         "intervals over seeds overlap; off-time pairs, whose times differ by more than the tolerance, counted "
         "apart), and the geometric mean over those scenes of NMSE method / NMSE baseline:",
         "",
-        "| method | " + " | ".join(b for b in labels) + " |",
+        "| method | " + " | ".join(_cell_text(b) for b in labels) + " |",
         "|---|" + "---|" * len(labels),
     ]
     for m in order:
@@ -124,11 +124,16 @@ def headline(records, context, source):
             rs = ratios[(m, b)]
             gm = ", {:.3g}x".format(math.exp(sum(map(math.log, rs)) / len(rs))) if rs else ""
             row.append(cell(counts[(m, b)]) + gm)
-        lines.append("| `{}` | {} |".format(m, " | ".join(row)))
+        lines.append("| `{}` | {} |".format(_cell_text(m), " | ".join(row)))
     lines += ["", "The baselines' full specs: " + "; ".join("{}: `{}`".format(b, s) for s, b in known.items()) + "."]
     lines += ["", "![NMSE against kernel time, geometric mean over the main job's scenes: every baseline's curve "
               "over N, every method a point]({})".format(FIGURE)]
     return "\n".join(lines)
+
+
+def _cell_text(s):
+    """A name inside a Markdown table cell: its '|' escaped, no line breaks."""
+    return " ".join(str(s).split()).replace("|", "\\|")
 
 
 def _sq(values):
