@@ -64,9 +64,16 @@ def role(r):
     return r.get("role", "method")
 
 
+def baseline_label(r):
+    """The label of a partner's baseline ("MCI" for records of before baselines had names)."""
+    b = r.get("baseline")
+    return (b.get("label") if isinstance(b, dict) else b) or "MCI"
+
+
 def label(r):
+    """A grid row's name: the method's spec, or <baseline>=<method> for a partner."""
     if "equal_time_to" in r:
-        return "MCI=" + equal_time(r)["label"]
+        return "{}={}".format(baseline_label(r), equal_time(r)["label"])
     return r.get("spec", r["method"])
 
 
@@ -98,7 +105,7 @@ def value(r, key):
     return v if finite(v) and v > 0 else None
 
 
-def metric_per_height(records, out, dpi, key, name):
+def metric_per_height(records, out, dpi, key, name, known=None):
     """A metric per luminaire at one height, the rotations pooled as one
     stitched image (results_io.pooled, the report's metrics::pooled, not the
     mean of the rotations' values): luminaires are categories on x, each
@@ -108,7 +115,7 @@ def metric_per_height(records, out, dpi, key, name):
     for r in records:
         if role(r) == "mci_curve" or not finite(r.get(key)):
             continue
-        acc[(r["height"], r["precision"], style.series_of(r), wrapped(lum_name(r)))].append(r)
+        acc[(r["height"], r["precision"], error_time.series(r, known or {}), wrapped(lum_name(r)))].append(r)
     files = []
     for h, prec in sorted({(k[0], k[1]) for k in acc}):
         lums = sorted({k[3] for k in acc if k[0] == h and k[1] == prec})
@@ -127,7 +134,7 @@ def metric_per_height(records, out, dpi, key, name):
                 if finite(v) and v > 0:
                     xs.append(x - 0.4 + slot * (j + 0.5))
                     ys.append(v)
-            ax.plot(xs, ys, **style.plot_kw(s, label=style.wrap(s)))
+            ax.plot(xs, ys, **style.plot_kw(s, label=error_time.legend_labels([s], known or {}, {})[0]))
         ax.set_xticks(range(len(lums)))
         ax.set_xticklabels(lums, rotation=30, ha="right")
         ax.set_xlim(-0.5, len(lums) - 0.5)
@@ -148,8 +155,12 @@ def grid_rows(scene, rs, dir_):
     """image_grid.py's rows LABEL=PREFIX of a scene's method and partner cells with pictures."""
     rows = []
     for r in rs:
-        cell = safe(r.get("spec", r["method"])) if role(r) == "method" else \
-            "mci_eq_" + safe(equal_time(r)["label"] if "equal_time_to" in r else "")
+        if role(r) == "method":
+            cell = safe(r.get("spec", r["method"]))
+        else:  # the runner's cellImageName: _vs_<baseline> for every baseline but MCI
+            b = baseline_label(r)
+            cell = "mci_eq_" + safe(equal_time(r)["label"] if "equal_time_to" in r else "") + \
+                ("" if b == "MCI" else "_vs_" + safe(b))
         prefix = os.path.join(dir_, "images", scene, cell)
         if os.path.exists(prefix + "_err.png"):
             name = label(r) + (" N={}".format(r["n"]) if "n" in r else "")
@@ -218,7 +229,7 @@ def main(argv=None):
             files += error_time.metric_time(records, out, args.dpi, key, name, known)
             files += error_time.pooled_time(records, out, args.dpi, key, name, known, per_luminaire=False)
             files += error_time.pooled_time(records, out, args.dpi, key, name, known)
-            files += metric_per_height(records, out, args.dpi, key, name)
+            files += metric_per_height(records, out, args.dpi, key, name, known)
     files += grids(records, args.dir, out, args.max_grids, args.dpi, args.jobs)
     print("experiment.py: {} figures in {}".format(len(files), out))
 

@@ -18,7 +18,8 @@ import sys
 
 # CSV columns that hold text even when they look like a number.
 TEXT = {"role", "series", "method", "spec", "scene", "luminaire", "precision", "device", "driver",
-        "equal_time_label", "luminaire_name", "baseline", "baseline_spec", "verdict", "verdict_flip", "off_time"}
+        "equal_time_label", "baseline", "baseline_spec", "verdict", "verdict_flip", "off_time", "luminaire_name",
+        "unit"}
 # Metric keys: an empty field is an undefined value (null in the JSON), kept as None.
 METRICS = {"nmse", "nrmse", "relmse", "ueb", "leb", "mean_ref", "mean_test", "grad_nmse", "flip"}
 # CSV columns named with their unit: the record key each stands for.
@@ -59,11 +60,23 @@ def _partner(r):
     if isinstance(r.get("n"), (int, float)):
         r["equal_time_n"] = r["n"]
         r["n"] = int(r["n"])
+    # off_time holds the reason of a pair outside the tolerance, empty at equal time
+    r["equal_time_ok"] = not r.get("off_time")
+    r["equal_time_bracketed"] = "no integer N closer" in r.get("off_time", "")
+    ratio, ms = r.get("equal_time_ratio"), (r.get("time_ms") or {}).get("median")
+    if isinstance(ratio, (int, float)) and isinstance(ms, (int, float)) and ratio > 0:
+        r["equal_time_method_ms"] = ms / ratio  # the CSV has the MC's paired median and the ratio
+
+
+def _params(spec):
+    """The parameters of a canonical SPEC ("name:key=value,...") as a dict."""
+    _, _, rest = (spec or "").partition(":")
+    return {k: _value(v) for k, v in (kv.split("=", 1) for kv in rest.split(",") if "=" in kv)}
 
 
 def _record(row):
     r, time_ms = {}, {}
-    params = json.loads(row["params"]) if row.get("params") else {}
+    params = json.loads(row["params"]) if row.get("params") else _params(row.get("spec"))
     for col, s in row.items():
         if col is None or col in ("series", "params") or col.startswith("param_"):
             continue
@@ -81,11 +94,15 @@ def _record(row):
             continue  # MC's n outside a partner is its parameter, in params
         else:
             r[key] = s if key in TEXT else _value(s)
+    r["time_ms"] = time_ms
+    if r.get("role", "method") == "method" and row.get("series"):
+        r["spec"] = row["series"]  # the SPEC as the experiment wrote it, as results.json's `spec`
     if "n" not in params and row.get("n") not in (None, "") and r.get("role") != "equal_time":
         params["n"] = _value(row["n"])  # a CSV without a params column: MC's n is its column
     _partner(r)
     r["params"] = params
-    r["time_ms"] = time_ms
+    if r.get("baseline"):
+        r["baseline"] = {"label": r["baseline"], "spec": r.pop("baseline_spec", "")}
     return r
 
 
