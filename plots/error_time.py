@@ -27,7 +27,7 @@ import textwrap
 import matplotlib.pyplot as plt
 
 import style
-from results_io import (PER_RECORD_PARAMS, baseline_of, equal_time, interval, is_curve, is_partner, mc_spec,
+from results_io import (baseline_of, equal_time, interval, is_curve, is_partner, mc_spec, without_per_record,
                         written_spec)
 
 
@@ -73,16 +73,8 @@ def curve_of(r, known):
         return baseline_of(r, known)[0]
     if r.get("role", "method") == "method" and r.get("method") == "mc" and not is_partner(r):
         spec = mc_spec(r.get("params"), "mc")
-        return next((label for s, label in known.items() if _without_per_record(s) == spec), None)
+        return next((label for s, label in known.items() if without_per_record(s) == spec), None)
     return None
-
-
-def _without_per_record(spec):
-    """A baseline's spec without the parameters that vary within it (a spec
-    that names its seed is the same baseline at another seed)."""
-    name, _, rest = spec.partition(":")
-    kept = [kv for kv in rest.split(",") if kv and kv.split("=", 1)[0] not in PER_RECORD_PARAMS]
-    return name + (":" + ",".join(sorted(kept, key=lambda kv: kv.split("=", 1)[0])) if kept else "")
 
 
 def series(r, known):
@@ -228,15 +220,23 @@ def short_spec(spec, known):
 
 def figure_legend(fig, width_in, known, curve_ns, marks_back):
     """One legend for every panel, below them (outside the data): the methods,
-    each followed by its equal-time partners, then the baselines' curves."""
+    each followed by its equal-time partners (one entry for all of them where
+    the run has several baselines), then the baselines' curves."""
     handles = {}
     for ax in fig.axes:
         for hd, lb in zip(*ax.get_legend_handles_labels()):
             if not lb.startswith("_"):
                 handles.setdefault(lb, hd)
     names = sorted(handles, key=style.order)
+    partners = len(known) > 1 and any(style.is_partner(n) for n in names)
+    if partners:  # one entry for them all, not one per method and baseline
+        names = [n for n in names if not style.is_partner(n)]
     labels = legend_labels(names, known, curve_ns)
     hs = [handles[n] for n in names]
+    if partners:
+        hs.append(plt.Line2D([], [], linestyle="none", marker="o", markerfacecolor="none", markeredgecolor="0.3",
+                             markeredgewidth=1.2))
+        labels.append("hollow: a baseline at a method's time\n(the method's colour and marker)")
     if marks_back:
         hs.append(plt.Line2D([], [], linestyle="none", marker="o", markersize=7, markerfacecolor="none",
                              markeredgecolor="0.3", markeredgewidth=0.8))

@@ -291,15 +291,24 @@ def mc_spec(params, method="mc"):
     return method + (":" + rest if rest else "")
 
 
+def without_per_record(spec):
+    """A baseline's SPEC without the parameters that vary within it (n, seed,
+    extra), its parameters sorted by name: one spelling of one baseline."""
+    name, _, rest = (spec or "").partition(":")
+    kept = [kv for kv in rest.split(",") if kv and kv.split("=", 1)[0] not in PER_RECORD_PARAMS]
+    return name + (":" + ",".join(sorted(kept, key=lambda kv: kv.split("=", 1)[0])) if kept else "")
+
+
 def _explicit_baseline(r):
     """(label, spec) as a record names its baseline, or (None, None): a
     "baseline" object {label, spec} or string, or flat baseline_label /
-    baseline_spec keys (results.csv)."""
+    baseline_spec keys (results.csv); the spec without_per_record."""
     b = r.get("baseline")
     if isinstance(b, dict):
-        return b.get("label"), b.get("spec")
-    label = b if isinstance(b, str) and b else r.get("baseline_label")
-    return label or None, r.get("baseline_spec") or None
+        label, spec = b.get("label"), b.get("spec")
+    else:
+        label, spec = (b if isinstance(b, str) and b else r.get("baseline_label")), r.get("baseline_spec")
+    return label or None, (without_per_record(spec) if spec else None)
 
 
 def is_curve(r):
@@ -317,12 +326,14 @@ def baselines(records, context=None):
     but n, seed and extra). An unlabelled baseline is named by the
     experiment's `mc` (a string) or "MC" where it is the only one unlabelled,
     else by the parameters that tell them apart ("domain=solid,sequence=sobol")."""
-    found, labels = {}, {}
+    found, labels, specs_of = {}, {}, {}
     for r in records:
         if not (is_curve(r) or is_partner(r)):
             continue
         label, spec = _explicit_baseline(r)
         spec = spec or mc_spec(r.get("params"), r.get("method", "mc"))
+        if label and specs_of.setdefault(label, spec) != spec:
+            spec = specs_of[label]  # one label, one baseline: its first spelling
         found.setdefault(spec, None)
         if label and not labels.get(spec):
             labels[spec] = label
@@ -346,6 +357,8 @@ def baseline_of(r, known):
         return None
     label, spec = _explicit_baseline(r)
     spec = spec or mc_spec(r.get("params"), r.get("method", "mc"))
+    if label:
+        spec = next((s for s, lb in known.items() if lb == label), spec)
     return label or known.get(spec, spec), spec
 
 

@@ -75,11 +75,11 @@ CURVE_STYLE = (_C["black"], ".")
 PARTNER = "MCI="     # prefix of an equal-time partner's series
 # One curve per Monte Carlo baseline ("curve:<label>"): colour and line style
 # by the baseline's place in the run (set_baselines), dots at the points; the
-# first is CURVE_STYLE's black. Paul Tol's dark colours, which no family of
-# FAMILIES has, with markers no hashed family gets ('.').
+# first is CURVE_STYLE's black. Dark colours that neither FAMILIES nor the
+# hashed families (TOL_MUTED) use, with a marker no family gets ('.').
 CURVE_PREFIX = "curve:"
-CURVE_STYLES = [(_C["black"], "-"), ("#332288", "--"), ("#882255", "-."), ("#117733", ":"),
-                ("#999933", (0, (5, 1, 1, 1))), ("#44AA99", (0, (1, 1)))]
+CURVE_STYLES = [(_C["black"], "-"), ("#4B0082", "--"), ("#8C510A", "-."), ("#01665E", ":"),
+                ("#B2182B", (0, (5, 1, 1, 1))), ("#5A5A5A", (0, (1, 1)))]
 _baselines = []  # labels in the order of the run (set_baselines)
 # Markers a variant or an unknown family may draw from.
 MARKERS = ["o", "s", "D", "^", "v", "<", ">", "p", "h", "X", "P", "d", "8", "H"]

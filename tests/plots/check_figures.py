@@ -293,6 +293,11 @@ for name in list(style.FAMILIES) + list(style.VARIANTS) + [style.CURVE]:
     cm = style.colour_marker(name)
     expect(cm not in pairs, f"{name} and {pairs.get(cm)} share {cm}")
     pairs[cm] = name
+# A baseline's curve after the first (black, as the MCI curve) has a colour no
+# family has, fixed or hashed, so that it is not read as a method's.
+taken = {c.lower() for c, _ in style.FAMILIES.values()} | {c.lower() for c in style.TOL_MUTED}
+for colour, _ in style.CURVE_STYLES[1:]:
+    expect(colour.lower() not in taken, f"curve colour {colour} is a method family's")
 # A partner has its method's colour and marker; an unknown family the same in
 # every process (CRC-32, not Python's salted hash()).
 expect(style.colour_marker("MCI=voronoi") == style.colour_marker("voronoi"), "MCI=voronoi not voronoi's colour")
