@@ -97,19 +97,25 @@ def headline(records, context, source):
     n_scenes = len({scene_key(r) for r in records if r.get("role", "method") == "method"})
     commit = (context.get("commit") or "?")[:7] + (" (modified)" if context.get("commit_dirty") else "")
     date = (context.get("date") or "?")[:10]
-    # the strongest baseline: the one the methods win against least often; the best method against it
+    # the strongest baseline: of those with pairs at equal time, the one the methods win the smallest
+    # share of those pairs against; the best method against it
     wins = {b: sum(counts[(m, b)]["win"] for m in order) for b in labels}
-    strongest = min(labels, key=lambda b: (wins[b], labels.index(b)))
+    timed = {b: sum(counts[(m, b)][v] for m in order for v in ("win", "tie", "loss")) for b in labels}
+    candidates = [b for b in labels if timed[b]] or labels
+    strongest = min(candidates, key=lambda b: (wins[b] / max(timed[b], 1), labels.index(b)))
+    never = [b for b in labels if not timed[b]]
     best = max(order, key=lambda m: (counts[(m, strongest)]["win"], -order.index(m)))
     c = counts[(best, strongest)]
     at_time = sum(c[v] for v in ("win", "tie", "loss"))
     lines = [
         "**Headline result** (the main job, `bash scripts/run-main.sh`: commit {}, {}, on {}; {} scenes, "
         "{} pixels each, timed at {} pixels; made by `scripts/readme-headline.py` from `{}`). At equal time "
-        "{} wins {} of the {} scenes timed equal against {}{}{}.".format(
+        "{} wins {} of the {} scenes timed equal against {}{}{}".format(
             commit, date, "; ".join(devices), n_scenes, _sq(res), _sq(tres), RESULTS, best, c["win"], at_time,
-            strongest, ", the baseline the methods win against least often" if len(labels) > 1 else "",
-                          " ({} more pairs off-time)".format(c["off-time"]) if c["off-time"] else ""),
+            strongest, ", the baseline the methods win against least often" if len(candidates) > 1 else "",
+            " ({} more pairs off-time)".format(c["off-time"]) if c["off-time"] else "")
+        + ("; against {} every pair was off-time (no verdict)".format(" and ".join(never)) if never else "")
+        + ".",
         "",
         "Wins / ties / losses of each method against each baseline at equal time (a tie where the 95 % "
         "intervals over seeds overlap; off-time pairs, whose times differ by more than the tolerance, counted "
