@@ -303,7 +303,13 @@ std::string offTimeClass(const Record& partner)
     if (!partner.equalTime || partner.equalTime->ok) return "";
     const EqualTime& e = *partner.equalTime;
     const double n = partner.n ? double(*partner.n) : e.n;
-    if (e.ratio > 1 && n <= 1) return "floor";
+    bool oneTooSlow = n <= 1;  // MC at N = 1 timed slower than the tolerance allows
+    if (e.candidates.is_array())
+        for (const auto& c : e.candidates)
+            if (c.is_object() && c.value("n", 0L) == 1 && !c.contains("extra") &&
+                c.value("ratio", 0.0) > 1 + e.tolerance)
+                oneTooSlow = true;
+    if (e.ratio > 1 && oneTooSlow) return "floor";
     if (e.ratio < 1 && n >= double(equaltime::kMaxN)) return "ceiling";
     if (e.bracketed) return "step";
     return "unmatched";

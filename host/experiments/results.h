@@ -140,7 +140,8 @@ Verdict verdict(const Record& method, const Record& partner, const std::string& 
 const char* verdictName(Verdict v);  // "win", "tie", "loss", "off-time", "n/a"
 
 // Why a partner is off-time, "" where it is at equal time: MC at N = 1
-// already slower than the method (its floor), MC at the largest N still
+// already slower than the method (its floor: N_eq = 1, or N = 1 among the
+// candidates timed, slower than the tolerance allows), MC at the largest N still
 // faster, no integer N closer (N and N + 1 bracket the method's time), or
 // the search found none within the tolerance; each with the paired ratio.
 std::string offTimeReason(const Record& partner);

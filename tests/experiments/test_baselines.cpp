@@ -167,6 +167,12 @@ TEST(Baselines, OffTimePairsAreNoVerdictAndSayWhy)
     EXPECT_EQ(results::offTimeClass(floor), "floor");
     EXPECT_NE(results::offTimeReason(floor).find("N = 1 floor exceeds the method's time"), std::string::npos);
     EXPECT_NE(results::offTimeReason(floor).find("6.5"), std::string::npos) << results::offTimeReason(floor);
+    // N_eq = 2 by a hair, N = 1 timed slower than the tolerance too: still the floor
+    Record two = partnerRec("cubature", "strong", kStrong, 1, 2, 30);
+    two.equalTime->candidates = {{{"n", 1}, {"ratio", 30.5}, {"ms", 30.5}}, {{"n", 2}, {"ratio", 30}, {"ms", 30}}};
+    EXPECT_EQ(results::offTimeClass(two), "floor");
+    two.equalTime->candidates = {{{"n", 2}, {"ratio", 30}, {"ms", 30}}};
+    EXPECT_EQ(results::offTimeClass(two), "unmatched");
     Record ceiling = partnerRec("cubature", "strong", kStrong, 1, 1L << 20, 0.5);
     EXPECT_EQ(results::offTimeClass(ceiling), "ceiling");
     Record step = partnerRec("cubature", "strong", kStrong, 1, 7, 1.3);
