@@ -79,6 +79,10 @@ struct BaselineRef {
     std::string label, spec;
     bool operator==(const BaselineRef& o) const { return label == o.label && spec == o.spec; }
 };
+// A baseline's SPEC as records carry it: a canonical mc SPEC without its n
+// and extra ("mc:a=1,extra=0,n=24,z=2" -> "mc:a=1,z=2"), which the runner
+// chooses.
+std::string baselineSpec(const std::string& canonical);
 // The label a baseline given as a bare SPEC gets: "MCI" for the thesis' MC
 // (mc's defaults), else the SPEC as written.
 std::string defaultBaselineLabel(const std::string& written);

@@ -68,6 +68,11 @@ TEST(Baselines, McTakesASpecOrAListOfLabelledSpecs)
     EXPECT_NE(list.baselines[2].canonical.find("domain=solid"), std::string::npos) << list.baselines[2].canonical;
     EXPECT_NE(list.baselines[2].canonical.find("sequence=sobol"), std::string::npos);
     EXPECT_EQ(list.baselines[2].at(4), kStrong + ",n=4");
+    const std::string spec = results::baselineSpec(list.baselines[2].canonical);  // as records carry it
+    EXPECT_EQ(spec.find(",n="), std::string::npos) << spec;  // the runner chooses N: not part of the baseline
+    EXPECT_EQ(spec.find(",extra="), std::string::npos) << spec;
+    EXPECT_NE(spec.find(",min_solid="), std::string::npos) << spec;  // a key ending in n is kept
+    EXPECT_EQ(results::baselineSpec("mc:a=1,extra=0,n=24,z=2"), "mc:a=1,z=2");
 
     auto refused = [&](const json& mc, const std::string& part) {
         const std::string msg = test::inputErrorOf([&] { load(d, mc); });
