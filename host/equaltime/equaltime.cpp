@@ -171,6 +171,8 @@ Result search(const Sides& sides, const Options& options, const Curve& fit, doub
         if (cand.empty()) break;
         s.time(cand);
         if (std::abs(s.best.ratio - 1) <= options.tolerance) break;
+        // MC at N = 1 already slower than the tolerance allows: no N comes closer (its floor)
+        if (s.measured.count(1) && s.measured.at(1) > 1 + options.tolerance) break;
         const std::optional<long> aim = s.secantAim();
         if (!aim) break;
         next = *aim;

@@ -175,11 +175,12 @@ std::string headline(const results::Results& doc, const Tallies& t)
             best = m, bp = &p;
     }
     return fmt::format("**At equal time {}, `{}` wins {}, ties {} and loses {} of its {} pairs against the "
-                       "strongest Monte Carlo here, {} (`{}`), in NMSE;** {} of the {} pairs of {} method{} and {} "
-                       "baseline{} are at equal time, {} off-time and not counted.",
+                       "strongest Monte Carlo here, {}, in NMSE;** {} of the {} pairs of {} method{} and {} "
+                       "baseline{} are at equal time, {} off-time and not counted (the baselines' SPECs are under "
+                       "the verdict table).",
                        where, mdLiteral(best), bp->nmse.win, bp->nmse.tie, bp->nmse.loss, bp->nmse.onTime(),
-                       mdLiteral(strong), mdLiteral(baselineSpec(doc, strong)), on, on + off, t.methods.size(),
-                       t.methods.size() == 1 ? "" : "s", t.baselines.size(), t.baselines.size() == 1 ? "" : "s", off);
+                       mdLiteral(strong), on, on + off, t.methods.size(), t.methods.size() == 1 ? "" : "s",
+                       t.baselines.size(), t.baselines.size() == 1 ? "" : "s", off);
 }
 
 }  // namespace

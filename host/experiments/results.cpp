@@ -130,13 +130,13 @@ std::optional<BaselineRef> legacyBaseline(const Record& r)
 {
     std::string spec;
     if (r.equal_time_to && r.inputs.is_object() && r.inputs.contains("mc") && r.inputs["mc"].is_string()) {
-        spec = r.inputs["mc"].get<std::string>();
+        spec = baselineSpec(r.inputs["mc"].get<std::string>());
     } else if (!r.equal_time_to && r.method == "mc" && r.extra.is_object() &&
                r.extra.value("role", json("")) == "mci_curve") {
         Record base = r;
         base.params.erase("n");
         base.params.erase("extra");
-        spec = canonicalSpec(base);
+        spec = baselineSpec(canonicalSpec(base));
     }
     if (spec.empty()) return std::nullopt;
     return BaselineRef{defaultBaselineLabel(spec), spec};
@@ -235,6 +235,26 @@ const char* verdictName(Verdict v)
     }
 }
 
+std::string baselineSpec(const std::string& canonical)
+{
+    const size_t colon = canonical.find(':');
+    if (colon == std::string::npos) return canonical;
+    std::string out = canonical.substr(0, colon);
+    char sep = ':';
+    size_t from = colon + 1;
+    while (from <= canonical.size()) {
+        size_t to = canonical.find(',', from);
+        if (to == std::string::npos) to = canonical.size();
+        const std::string kv = canonical.substr(from, to - from);
+        if (!kv.empty() && kv.rfind("n=", 0) != 0 && kv.rfind("extra=", 0) != 0) {
+            out += sep + kv;
+            sep = ',';
+        }
+        from = to + 1;
+    }
+    return out;
+}
+
 std::string defaultBaselineLabel(const std::string& written)
 {
     static const std::string thesis = methods::parseSpec("mc").canonical();
@@ -303,7 +323,13 @@ std::string offTimeClass(const Record& partner)
     if (!partner.equalTime || partner.equalTime->ok) return "";
     const EqualTime& e = *partner.equalTime;
     const double n = partner.n ? double(*partner.n) : e.n;
-    if (e.ratio > 1 && n <= 1) return "floor";
+    bool oneTooSlow = n <= 1;  // MC at N = 1 timed slower than the tolerance allows
+    if (e.candidates.is_array())
+        for (const auto& c : e.candidates)
+            if (c.is_object() && c.value("n", 0L) == 1 && !c.contains("extra") &&
+                c.value("ratio", 0.0) > 1 + e.tolerance)
+                oneTooSlow = true;
+    if (e.ratio > 1 && oneTooSlow) return "floor";
     if (e.ratio < 1 && n >= double(equaltime::kMaxN)) return "ceiling";
     if (e.bracketed) return "step";
     return "unmatched";
@@ -438,7 +464,7 @@ void from_json(const json& j, Record& r)
     if (j.contains("baseline")) {
         const json b = field<json>(j, "baseline");
         try {
-            r.baseline = BaselineRef{field<std::string>(b, "label"), field<std::string>(b, "spec")};
+            r.baseline = BaselineRef{field<std::string>(b, "label"), baselineSpec(field<std::string>(b, "spec"))};
         } catch (const InputError& err) {
             throw InputError(fmt::format("key \"baseline\": {}", err.what()));
         }

@@ -79,6 +79,10 @@ struct BaselineRef {
     std::string label, spec;
     bool operator==(const BaselineRef& o) const { return label == o.label && spec == o.spec; }
 };
+// A baseline's SPEC as records carry it: a canonical mc SPEC without its n
+// and extra ("mc:a=1,extra=0,n=24,z=2" -> "mc:a=1,z=2"), which the runner
+// chooses.
+std::string baselineSpec(const std::string& canonical);
 // The label a baseline given as a bare SPEC gets: "MCI" for the thesis' MC
 // (mc's defaults), else the SPEC as written.
 std::string defaultBaselineLabel(const std::string& written);
@@ -140,7 +144,8 @@ Verdict verdict(const Record& method, const Record& partner, const std::string& 
 const char* verdictName(Verdict v);  // "win", "tie", "loss", "off-time", "n/a"
 
 // Why a partner is off-time, "" where it is at equal time: MC at N = 1
-// already slower than the method (its floor), MC at the largest N still
+// already slower than the method (its floor: N_eq = 1, or N = 1 among the
+// candidates timed, slower than the tolerance allows), MC at the largest N still
 // faster, no integer N closer (N and N + 1 bracket the method's time), or
 // the search found none within the tolerance; each with the paired ratio.
 std::string offTimeReason(const Record& partner);

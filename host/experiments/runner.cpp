@@ -61,7 +61,7 @@ struct Cell {
     const Baseline* baseline = nullptr;  // "mci_curve" and "equal_time": whose
 };
 
-results::BaselineRef refOf(const Baseline& b) { return {b.label, b.canonical}; }
+results::BaselineRef refOf(const Baseline& b) { return {b.label, results::baselineSpec(b.canonical)}; }
 
 std::vector<Cell> cellsOf(const Experiment& e)
 {
@@ -479,7 +479,8 @@ private:
     json baselinesJson() const
     {
         json out = json::array();
-        for (const auto& b : e_.baselines) out.push_back({{"label", b.label}, {"spec", b.canonical}});
+        for (const auto& b : e_.baselines)
+            out.push_back({{"label", b.label}, {"spec", results::baselineSpec(b.canonical)}});
         return out;
     }
 

@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 
 namespace lb {
@@ -68,6 +69,11 @@ TEST(Baselines, McTakesASpecOrAListOfLabelledSpecs)
     EXPECT_NE(list.baselines[2].canonical.find("domain=solid"), std::string::npos) << list.baselines[2].canonical;
     EXPECT_NE(list.baselines[2].canonical.find("sequence=sobol"), std::string::npos);
     EXPECT_EQ(list.baselines[2].at(4), kStrong + ",n=4");
+    const std::string spec = results::baselineSpec(list.baselines[2].canonical);  // as records carry it
+    EXPECT_EQ(spec.find(",n="), std::string::npos) << spec;  // the runner chooses N: not part of the baseline
+    EXPECT_EQ(spec.find(",extra="), std::string::npos) << spec;
+    EXPECT_NE(spec.find(",min_solid="), std::string::npos) << spec;  // a key ending in n is kept
+    EXPECT_EQ(results::baselineSpec("mc:a=1,extra=0,n=24,z=2"), "mc:a=1,z=2");
 
     auto refused = [&](const json& mc, const std::string& part) {
         const std::string msg = test::inputErrorOf([&] { load(d, mc); });
@@ -167,6 +173,12 @@ TEST(Baselines, OffTimePairsAreNoVerdictAndSayWhy)
     EXPECT_EQ(results::offTimeClass(floor), "floor");
     EXPECT_NE(results::offTimeReason(floor).find("N = 1 floor exceeds the method's time"), std::string::npos);
     EXPECT_NE(results::offTimeReason(floor).find("6.5"), std::string::npos) << results::offTimeReason(floor);
+    // N_eq = 2 by a hair, N = 1 timed slower than the tolerance too: still the floor
+    Record two = partnerRec("cubature", "strong", kStrong, 1, 2, 30);
+    two.equalTime->candidates = {{{"n", 1}, {"ratio", 30.5}, {"ms", 30.5}}, {{"n", 2}, {"ratio", 30}, {"ms", 30}}};
+    EXPECT_EQ(results::offTimeClass(two), "floor");
+    two.equalTime->candidates = {{{"n", 2}, {"ratio", 30}, {"ms", 30}}};
+    EXPECT_EQ(results::offTimeClass(two), "unmatched");
     Record ceiling = partnerRec("cubature", "strong", kStrong, 1, 1L << 20, 0.5);
     EXPECT_EQ(results::offTimeClass(ceiling), "ceiling");
     Record step = partnerRec("cubature", "strong", kStrong, 1, 7, 1.3);
@@ -332,6 +344,67 @@ TEST(Baselines, ReportOpensWithTheSentenceAndTheTable)
     EXPECT_NE(md.find("| cubature | 1.0000 | 1.00 |"), std::string::npos) << md;
     const std::string html = slurp(d / "report.html");
     EXPECT_NE(html.find("<p class=\"headline\"><b>At equal time on Test CPU"), std::string::npos);
+}
+
+// A run with two baselines on the device (8 x 8, one scene): a curve and a
+// partner per baseline, each naming its baseline; merge keeps two runs of
+// other baselines apart and refuses one of another experiment unless forced.
+TEST(Baselines, RunGivesAPartnerAndACurvePerBaselineAndMergeKeepsBoth)
+{
+    if (!test::runtime()) GTEST_SKIP() << "no OpenCL device";
+    const fs::path d = test::freshDir("baselines-run");
+    json e = experiment(json::array({"mc", {{"label", "strong"}, {"spec", kStrong}}}));
+    e["time_res"] = 16;
+    e["seeds"] = 2;
+    std::ofstream(d / "e.json") << e.dump();
+    auto r = test::runCli("run " + (d / "e.json").string() + " --out " + (d / "a").string() + " --no-report --quiet");
+    ASSERT_EQ(r.code, 0) << r.err;
+    const results::Results doc = results::load((d / "a" / "results.json").string());
+    std::map<std::string, int> partners, curves;
+    for (const auto& rec : doc.records) {
+        if (rec.equal_time_to) {
+            ASSERT_TRUE(rec.baseline);
+            ++partners[rec.baseline->label];
+            EXPECT_EQ(rec.extra["spec"].get<std::string>().rfind(rec.baseline->label == "strong" ? kStrong : "mc", 0),
+                      0u)
+                << rec.extra.dump();  // the baseline's SPEC at N, sampler and all
+        } else if (rec.extra.value("role", "") == "mci_curve") {
+            ASSERT_TRUE(rec.baseline);
+            ++curves[rec.baseline->label];
+        }
+    }
+    EXPECT_EQ(partners, (std::map<std::string, int>{{"MCI", 1}, {"strong", 1}}));
+    EXPECT_EQ(curves, (std::map<std::string, int>{{"MCI", 2}, {"strong", 2}}));  // N = 1, 4 each
+    const std::string csv = slurp(d / "a" / "results.csv");
+    EXPECT_NE(csv.find(",strong=cubature,"), std::string::npos) << csv;
+    EXPECT_NE(csv.find(",strong curve,"), std::string::npos) << csv;
+
+    // the same experiment with one baseline more, into another directory: merged, nothing replaced
+    e["mc"] =
+        json::array({"mc", {{"label", "strong"}, {"spec", kStrong}}, {{"label", "paper"}, {"spec", "mc:paper=1"}}});
+    e["equal_time"] = json::array({"cubature"});
+    std::ofstream(d / "e.json") << e.dump();
+    r = test::runCli("run " + (d / "e.json").string() + " --out " + (d / "b").string() + " --no-report --quiet");
+    ASSERT_EQ(r.code, 0) << r.err;
+    r = test::runCli("merge --no-report --out " + (d / "m").string() + " " + (d / "a").string() + " " +
+                     (d / "b").string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(results::load((d / "m" / "results.json").string()).records.size(),
+              results::load((d / "b" / "results.json").string()).records.size());  // b holds a's cells and more
+    // another experiment's results: refused, naming both, exit 2; --force merges and says what
+    results::Results other = results::load((d / "b" / "results.json").string());
+    other.context["experiment"] = "other";
+    fs::create_directories(d / "c");
+    results::save((d / "c" / "results.json").string(), other);
+    r = test::runCli("merge --no-report --out " + (d / "n").string() + " " + (d / "a").string() + " " +
+                     (d / "c").string());
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("experiment 'b' in"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("'other' in"), std::string::npos) << r.err;
+    r = test::runCli("merge --force --no-report --out " + (d / "n").string() + " " + (d / "a").string() + " " +
+                     (d / "c").string());
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("merge --force: experiment 'b'"), std::string::npos) << r.err;
 }
 
 }  // namespace
