@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The tables of docs/as-declared.md from the two runs of experiments/as-declared.json
+"""The tables of docs/studies/as-declared.md from the two runs of experiments/as-declared.json
 and experiments/as-declared-normalised.json (result directories or .json.xz files):
 
     experiments/as_declared_table.py DECLARED NORMALISED

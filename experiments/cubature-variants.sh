@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# cubature-variants.sh -- the table of docs/cubature-variants.md: every cubature variant and
+# cubature-variants.sh -- the table of docs/studies/cubature-variants.md: every cubature variant and
 # voronoi against the reference, next to MC at equal time (DESIGN section 6),
 # for ARCOS, PERLUCE, INTRO at h = 0.1 and 1.1, R = 3pi/4.
 #

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# visual-claims-closeup.sh -- the close-up image grid of docs/visual-claims.md (the
+# visual-claims-closeup.sh -- the close-up image grid of docs/studies/visual-claims.md (the
 # thesis' Fig. 6.11): ARCOS at h = 0.1, R = 3pi/4, the 2 m x 2 m square below the
 # light, for the reference, SCT, voronoi, Delaunay with extra points, MCI-24, MCI-40
 # and MCI at the time of SCT. One tone-mapping scale k for every row (that of the

@@ -6,10 +6,15 @@ writes DIR/plots/*.png (300 dpi) and a PDF beside each, in the suite's style
     /usr/bin/python3 plots/experiment.py DIR|DIR/results.json|DIR/results.csv [--max-grids K] [--jobs J]
 
 - nmse_time_<luminaire>_<precision>.png: NMSE against median kernel time,
-  log-log, one panel per height (rows) and rotation (columns): the MCI curve
-  (MC at N = 1..1024, `role` mci_curve) as a line with N beside its points,
-  every method as a point, equal-time MCI partners hollow in their method's
-  colour; one legend below the panels.
+  log-log, one panel per height (rows) and rotation (columns): every Monte
+  Carlo baseline's curve (MC at N = 1..1024, `role` mci_curve, one per
+  baseline) as a line with N beside its points and its 95 % band over seeds,
+  every method as a point with its intervals, equal-time partners hollow in
+  their method's colour; one legend below the panels, the device and the
+  timing resolution in the caption under it (plots/error_time.py).
+- nmse_all_time_<precision>.png, nmse_by_luminaire_time_<precision>.png:
+  the same pooled over scenes (geometric mean of the metric, its bounds and
+  the times), one panel over every scene, and one panel per luminaire.
 - nmse_h<height>_<precision>.png: NMSE per luminaire (categories on x), the
   rotations pooled into one stitched image as the report's tables do, each
   method a marker beside its hollow equal-time partner (thesis Figs.
@@ -43,9 +48,10 @@ except ImportError:
     sys.exit(3)
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import error_time  # noqa: E402
 import image_grid  # noqa: E402
 import style  # noqa: E402
-from results_io import equal_time, load_records, pooled  # noqa: E402
+from results_io import baselines, equal_time, load_context, load_records, pooled  # noqa: E402
 
 
 def finite(v):
@@ -58,9 +64,16 @@ def role(r):
     return r.get("role", "method")
 
 
+def baseline_label(r):
+    """The label of a partner's baseline ("MCI" for records of before baselines had names)."""
+    b = r.get("baseline")
+    return (b.get("label") if isinstance(b, dict) else b) or "MCI"
+
+
 def label(r):
+    """A grid row's name: the method's spec, or <baseline>=<method> for a partner."""
     if "equal_time_to" in r:
-        return "MCI=" + equal_time(r)["label"]
+        return "{}={}".format(baseline_label(r), equal_time(r)["label"])
     return r.get("spec", r["method"])
 
 
@@ -83,21 +96,6 @@ def safe(s):
     return "".join(c if c.isalnum() or c in ".-" else "_" for c in str(s))
 
 
-def rot_label(rad):
-    return "R={:.0f}°".format(math.degrees(rad))
-
-
-def on_curve(r, cell):
-    """An MCI-curve record, or a method record that is the same MC at some N
-    (the runner keeps one cell when a method equals a curve point)."""
-    if role(r) == "mci_curve":
-        return True
-    if role(r) != "method" or r["method"] != "mc":
-        return False
-    strip = lambda p: {k: v for k, v in p.items() if k != "n"}  # noqa: E731
-    return any(role(c) == "mci_curve" and strip(c["params"]) == strip(r["params"]) for c in cell)
-
-
 METRICS = (("nmse", "NMSE"), ("grad_nmse", "grad_nmse"), ("flip", "FLIP"))
 
 
@@ -107,91 +105,7 @@ def value(r, key):
     return v if finite(v) and v > 0 else None
 
 
-def curve_labels(ax, curve):
-    """N beside the MCI curve's points (every other one where more than six
-    would crowd the panel; the last always)."""
-    step = 2 if len(curve) > 6 else 1
-    for i, (n, t, v) in enumerate(curve):
-        last = i == len(curve) - 1
-        if i % step == 0 or last:
-            # the last one below-left of its point: inside the panel, not under the next one
-            ax.annotate(str(n), (t, v), xytext=(-2, -3) if last else (2, 2), textcoords="offset points",
-                        ha="right" if last else "left", va="top" if last else "bottom", fontsize=style.MIN_FONT_PT,
-                        color="0.25", gid="curve-label")
-
-
-def time_panel(ax, cell, key):
-    """One scene's panel: the MCI curve, each method as a point, each equal-time partner hollow."""
-    curve = sorted((r["params"]["n"], r["time_ms"]["median"], value(r, key))
-                   for r in cell if on_curve(r, cell) and value(r, key) and finite(r["time_ms"]["median"]))
-    if curve:
-        ax.plot([c[1] for c in curve], [c[2] for c in curve], **style.plot_kw(style.CURVE))
-        curve_labels(ax, curve)
-    for r in sorted(cell, key=lambda r: style.order(style.series_of(r))):
-        if not (value(r, key) and finite(r["time_ms"]["median"])) or role(r) not in ("method", "equal_time"):
-            continue
-        if on_curve(r, cell):
-            continue
-        ax.plot(r["time_ms"]["median"], value(r, key), **style.plot_kw(style.series_of(r)))
-    ax.set_xscale("log")
-    ax.set_yscale("log")
-    # no minor ticks: on log axes over many decades they were most of the drawing time
-    ax.minorticks_off()
-
-
-def figure_legend(fig, width_in, curve_ns):
-    """One legend for every panel, below them (outside the data): the MCI
-    curve first, then each method followed by its equal-time partner."""
-    handles = {}
-    for ax in fig.axes:
-        for hd, lb in zip(*ax.get_legend_handles_labels()):
-            handles.setdefault(lb, hd)
-    names = sorted(handles, key=style.order)
-    labels = [style.wrap(n if n != style.CURVE else "MCI curve (N {} at the points)".format(curve_ns))
-              for n in names]
-    ncol = style.legend_columns(labels, width_in)
-    fig.legend([handles[n] for n in names], labels, loc="upper center", bbox_to_anchor=(0.5, 0.0), ncol=ncol)
-
-
-def metric_time(records, out, dpi, key, name):
-    """One figure per luminaire and precision; a panel per (height, rotation)."""
-    by = collections.defaultdict(list)
-    for r in records:
-        by[(r["luminaire"], r["precision"])].append(r)
-    files = []
-    for (lum, prec), rs in sorted(by.items()):
-        shown = lum_name(rs[0])
-        heights = sorted({r["height"] for r in rs})
-        rots = sorted({r["rotation"] for r in rs})
-        # at most the text width: 0.75 in for the y labels, panels of at most 1.8 in
-        pw = min(1.8, (style.TEXT_WIDTH - 0.8) / len(rots))
-        W, H = 0.75 + pw * len(rots) + 0.05, 0.45 + 0.42 + 0.85 * pw * len(heights)
-        fig, axes = plt.subplots(len(heights), len(rots), figsize=(W, H), squeeze=False, sharex=True, sharey=True)
-        ns = sorted({r["params"]["n"] for r in rs if on_curve(r, rs)})
-        for i, h in enumerate(heights):
-            for j, rot in enumerate(rots):
-                ax = axes[i][j]
-                time_panel(ax, [r for r in rs if r["height"] == h and r["rotation"] == rot], key)
-                if i == 0:
-                    ax.set_title(rot_label(rot))
-                if j == 0:
-                    ax.set_ylabel("h={} m\n{}".format(h, name))
-                if i == len(heights) - 1:
-                    ax.set_xlabel("time (ms)")
-        figure_legend(fig, W, "{}..{}".format(ns[0], ns[-1]) if ns else "")
-        fig.suptitle("{} ({}): {} against kernel time".format(shown, prec, name))
-        # Fixed margins in inches instead of tight_layout, which took 70 % of
-        # the plotting time (it measures every tick label of every panel);
-        # the saved file's bounding box takes in the legend below.
-        fig.subplots_adjust(left=0.75 / W, right=1 - 0.05 / W, top=1 - 0.45 / H, bottom=0.42 / H,
-                            wspace=0.06, hspace=0.08)
-        path = os.path.join(out, "{}_time_{}_{}.png".format(key, safe(stem(lum)), prec))
-        files += style.save(fig, path, dpi=dpi)
-        plt.close(fig)
-    return files
-
-
-def metric_per_height(records, out, dpi, key, name):
+def metric_per_height(records, out, dpi, key, name, known=None):
     """A metric per luminaire at one height, the rotations pooled as one
     stitched image (results_io.pooled, the report's metrics::pooled, not the
     mean of the rotations' values): luminaires are categories on x, each
@@ -201,7 +115,7 @@ def metric_per_height(records, out, dpi, key, name):
     for r in records:
         if role(r) == "mci_curve" or not finite(r.get(key)):
             continue
-        acc[(r["height"], r["precision"], style.series_of(r), wrapped(lum_name(r)))].append(r)
+        acc[(r["height"], r["precision"], error_time.series(r, known or {}), wrapped(lum_name(r)))].append(r)
     files = []
     for h, prec in sorted({(k[0], k[1]) for k in acc}):
         lums = sorted({k[3] for k in acc if k[0] == h and k[1] == prec})
@@ -220,7 +134,7 @@ def metric_per_height(records, out, dpi, key, name):
                 if finite(v) and v > 0:
                     xs.append(x - 0.4 + slot * (j + 0.5))
                     ys.append(v)
-            ax.plot(xs, ys, **style.plot_kw(s, label=style.wrap(s)))
+            ax.plot(xs, ys, **style.plot_kw(s, label=error_time.legend_labels([s], known or {}, {})[0]))
         ax.set_xticks(range(len(lums)))
         ax.set_xticklabels(lums, rotation=30, ha="right")
         ax.set_xlim(-0.5, len(lums) - 0.5)
@@ -241,8 +155,12 @@ def grid_rows(scene, rs, dir_):
     """image_grid.py's rows LABEL=PREFIX of a scene's method and partner cells with pictures."""
     rows = []
     for r in rs:
-        cell = safe(r.get("spec", r["method"])) if role(r) == "method" else \
-            "mci_eq_" + safe(equal_time(r)["label"] if "equal_time_to" in r else "")
+        if role(r) == "method":
+            cell = safe(r.get("spec", r["method"]))
+        else:  # the runner's cellImageName: _vs_<baseline> for every baseline but MCI
+            b = baseline_label(r)
+            cell = "mci_eq_" + safe(equal_time(r)["label"] if "equal_time_to" in r else "") + \
+                ("" if b == "MCI" else "_vs_" + safe(b))
         prefix = os.path.join(dir_, "images", scene, cell)
         if os.path.exists(prefix + "_err.png"):
             name = label(r) + (" N={}".format(r["n"]) if "n" in r else "")
@@ -303,10 +221,15 @@ def main(argv=None):
         args.dir = os.path.dirname(os.path.abspath(args.dir))
     out = os.path.join(args.dir, "plots")
     os.makedirs(out, exist_ok=True)
+    known = baselines(records, load_context(args.dir))
+    style.set_baselines(known.values())
     files = []
     for key, name in METRICS:
         if any(value(r, key) for r in records):  # none: older records, or no flip-evaluator
-            files += metric_time(records, out, args.dpi, key, name) + metric_per_height(records, out, args.dpi, key, name)
+            files += error_time.metric_time(records, out, args.dpi, key, name, known)
+            files += error_time.pooled_time(records, out, args.dpi, key, name, known, per_luminaire=False)
+            files += error_time.pooled_time(records, out, args.dpi, key, name, known)
+            files += metric_per_height(records, out, args.dpi, key, name, known)
     files += grids(records, args.dir, out, args.max_grids, args.dpi, args.jobs)
     print("experiment.py: {} figures in {}".format(len(files), out))
 

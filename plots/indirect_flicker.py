@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Flicker and mean NMSE against the cluster count K from `lumibench sequence`
-outputs (docs/indirect.md): one line per method family (vpl by N, kmeans and
+outputs (docs/studies/indirect.md): one line per method family (vpl by N, kmeans and
 acrsm by K), one panel per metric.
 
     plots/indirect_flicker.py OUT.png SEQ.json [SEQ.json ...]

@@ -18,7 +18,8 @@ import sys
 
 # CSV columns that hold text even when they look like a number.
 TEXT = {"role", "series", "method", "spec", "scene", "luminaire", "precision", "device", "driver",
-        "equal_time_label"}
+        "equal_time_label", "baseline", "baseline_spec", "verdict", "verdict_flip", "off_time", "luminaire_name",
+        "unit"}
 # Metric keys: an empty field is an undefined value (null in the JSON), kept as None.
 METRICS = {"nmse", "nrmse", "relmse", "ueb", "leb", "mean_ref", "mean_test", "grad_nmse", "flip"}
 # CSV columns named with their unit: the record key each stands for.
@@ -59,11 +60,23 @@ def _partner(r):
     if isinstance(r.get("n"), (int, float)):
         r["equal_time_n"] = r["n"]
         r["n"] = int(r["n"])
+    # off_time holds the reason of a pair outside the tolerance, empty at equal time
+    r["equal_time_ok"] = not r.get("off_time")
+    r["equal_time_bracketed"] = "no integer N closer" in r.get("off_time", "")
+    ratio, ms = r.get("equal_time_ratio"), (r.get("time_ms") or {}).get("median")
+    if isinstance(ratio, (int, float)) and isinstance(ms, (int, float)) and ratio > 0:
+        r["equal_time_method_ms"] = ms / ratio  # the CSV has the MC's paired median and the ratio
+
+
+def _params(spec):
+    """The parameters of a canonical SPEC ("name:key=value,...") as a dict."""
+    _, _, rest = (spec or "").partition(":")
+    return {k: _value(v) for k, v in (kv.split("=", 1) for kv in rest.split(",") if "=" in kv)}
 
 
 def _record(row):
     r, time_ms = {}, {}
-    params = json.loads(row["params"]) if row.get("params") else {}
+    params = json.loads(row["params"]) if row.get("params") else _params(row.get("spec"))
     for col, s in row.items():
         if col is None or col in ("series", "params") or col.startswith("param_"):
             continue
@@ -81,9 +94,15 @@ def _record(row):
             continue  # MC's n outside a partner is its parameter, in params
         else:
             r[key] = s if key in TEXT else _value(s)
+    r["time_ms"] = time_ms
+    if r.get("role", "method") == "method" and row.get("series"):
+        r["spec"] = row["series"]  # the SPEC as the experiment wrote it, as results.json's `spec`
+    if "n" not in params and row.get("n") not in (None, "") and r.get("role") != "equal_time":
+        params["n"] = _value(row["n"])  # a CSV without a params column: MC's n is its column
     _partner(r)
     r["params"] = params
-    r["time_ms"] = time_ms
+    if r.get("baseline"):
+        r["baseline"] = {"label": r["baseline"], "spec": r.pop("baseline_spec", "")}
     return r
 
 
@@ -114,6 +133,19 @@ def load_records(path):
     if not isinstance(recs, list):
         raise ValueError("{}: no 'records' list (not a lumibench results file)".format(path))
     return recs
+
+
+def load_context(path):
+    """The run's context (device, commit, date, experiment_spec, ...) of a
+    results directory or .json[.xz] file; {} for a CSV or where the file has none."""
+    path = results_file(path)
+    if path.endswith(".csv"):
+        return {}
+    opener = lzma.open if path.endswith(".xz") else open
+    with opener(path, "rt") as f:
+        doc = json.load(f)
+    c = doc.get("context") if isinstance(doc, dict) else None
+    return c if isinstance(c, dict) else {}
 
 
 def pooled_nmse(recs):
@@ -238,3 +270,119 @@ def verdict(method, partner, metric="nmse"):
     if m[0] > p[1]:
         return "loss"
     return "tie"
+
+
+# MC parameters that vary within one baseline: its sample count, the seed of a
+# draw, and the fraction of tiles an equal-time partner gives N + 1 samples.
+PER_RECORD_PARAMS = ("n", "seed", "extra")
+
+
+def _param_text(v):
+    if isinstance(v, float) and v.is_integer() and abs(v) < 1e15:
+        return str(int(v))
+    return str(v)
+
+
+def mc_spec(params, method="mc"):
+    """The canonical SPEC of an MC record's baseline: its method and every
+    parameter but n, seed and extra, sorted by name ("mc:domain=solid,...")."""
+    rest = ",".join("{}={}".format(k, _param_text(v)) for k, v in sorted((params or {}).items())
+                    if k not in PER_RECORD_PARAMS)
+    return method + (":" + rest if rest else "")
+
+
+def without_per_record(spec):
+    """A baseline's SPEC without the parameters that vary within it (n, seed,
+    extra), its parameters sorted by name: one spelling of one baseline."""
+    name, _, rest = (spec or "").partition(":")
+    kept = [kv for kv in rest.split(",") if kv and kv.split("=", 1)[0] not in PER_RECORD_PARAMS]
+    return name + (":" + ",".join(sorted(kept, key=lambda kv: kv.split("=", 1)[0])) if kept else "")
+
+
+def _explicit_baseline(r):
+    """(label, spec) as a record names its baseline, or (None, None): a
+    "baseline" object {label, spec} or string, or flat baseline_label /
+    baseline_spec keys (results.csv); the spec without_per_record."""
+    b = r.get("baseline")
+    if isinstance(b, dict):
+        label, spec = b.get("label"), b.get("spec")
+    else:
+        label, spec = (b if isinstance(b, str) and b else r.get("baseline_label")), r.get("baseline_spec")
+    return label or None, (without_per_record(spec) if spec else None)
+
+
+def is_curve(r):
+    return r.get("role") == "mci_curve"
+
+
+def is_partner(r):
+    return r.get("role") == "equal_time" or "equal_time_to" in r
+
+
+def baselines(records, context=None):
+    """The Monte Carlo baselines of a run, in the order first met, as an
+    ordered dict {canonical spec: label}: from the records' own baseline
+    fields where they have them, else from their parameters (every parameter
+    but n, seed and extra). An unlabelled baseline is named by the
+    experiment's `mc` (a string) or "MC" where it is the only one unlabelled,
+    else by the parameters that tell them apart ("domain=solid,sequence=sobol")."""
+    found, labels, specs_of = {}, {}, {}
+    for r in records:
+        if not (is_curve(r) or is_partner(r)):
+            continue
+        label, spec = _explicit_baseline(r)
+        spec = spec or mc_spec(r.get("params"), r.get("method", "mc"))
+        if label and specs_of.setdefault(label, spec) != spec:
+            spec = specs_of[label]  # one label, one baseline: its first spelling
+        found.setdefault(spec, None)
+        if label and not labels.get(spec):
+            labels[spec] = label
+    unnamed = [s for s in found if not labels.get(s)]
+    if unnamed:
+        written = ((context or {}).get("experiment_spec") or {}).get("mc")
+        if len(unnamed) == 1:
+            labels[unnamed[0]] = written if isinstance(written, str) and written else "MC"
+        else:
+            parts = {s: dict(kv.split("=", 1) for kv in s.partition(":")[2].split(",") if "=" in kv) for s in found}
+            keys = sorted({k for p in parts.values() for k in p if len({q.get(k) for q in parts.values()}) > 1})
+            for s in unnamed:
+                labels[s] = ",".join("{}={}".format(k, parts[s][k]) for k in keys if k in parts[s]) or s
+    return {s: labels[s] for s in found}
+
+
+def baseline_of(r, known):
+    """(label, spec) of a curve point or equal-time partner, `known` being
+    baselines(records); None for any other record."""
+    if not (is_curve(r) or is_partner(r)):
+        return None
+    label, spec = _explicit_baseline(r)
+    spec = spec or mc_spec(r.get("params"), r.get("method", "mc"))
+    if label:
+        spec = next((s for s, lb in known.items() if lb == label), spec)
+    return label or known.get(spec, spec), spec
+
+
+def pair_verdict(method, partner, metric="nmse"):
+    """The equal-time verdict of a method against one partner: the partner
+    record's own `verdict` where the run wrote one (a string, or one per
+    metric), else "off-time" where the pair's
+    times differ by more than its tolerance (equal_time ok false), else
+    verdict()."""
+    v = partner.get("verdict")
+    if isinstance(v, dict):
+        v = v.get(metric)
+    if isinstance(v, str) and v:
+        return v
+    et = equal_time(partner) or {}
+    if et.get("ok") is False:
+        return "off-time"
+    return verdict(method, partner, metric)
+
+
+def written_spec(r):
+    """A method record's SPEC as the experiment wrote it (what a partner's
+    equal-time label names): results.csv's `series` where its `spec` is the
+    canonical one, else `spec`."""
+    if r.get("role", "method") == "method" and isinstance(r.get("series"), str) and r["series"]:
+        return r["series"]
+    return r.get("spec") or r.get("method")

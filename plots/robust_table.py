@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Tables of docs/robust.md from a results.json (or results.csv) of `lumibench run`.
+"""Tables of docs/studies/robust.md from a results.json (or results.csv) of `lumibench run`.
 
     plots/robust_table.py RESULTS [RESULTS ...] [--base point] [--out FILE.md]
 

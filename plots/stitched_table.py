@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Stitched-NMSE table of a `lumibench run` results.json (docs/thesis-sct-vs-mci.md).
+"""Stitched-NMSE table of a `lumibench run` results.json (docs/studies/thesis-sct-vs-mci.md).
 
 The thesis computes its figures and appendix B on the images of all rotations
 stitched into one. From each record, MSE = NMSE * mean_ref * mean_test (thesis

@@ -73,8 +73,48 @@ VARIANTS = {
 CURVE = "MCI curve"  # Monte Carlo over N: a black line with dots
 CURVE_STYLE = (_C["black"], ".")
 PARTNER = "MCI="     # prefix of an equal-time partner's series
+# One curve per Monte Carlo baseline ("curve:<label>"): colour and line style
+# by the baseline's place in the run (set_baselines), dots at the points; the
+# first is CURVE_STYLE's black. Dark colours that neither FAMILIES nor the
+# hashed families (TOL_MUTED) use, with a marker no family gets ('.').
+CURVE_PREFIX = "curve:"
+CURVE_STYLES = [(_C["black"], "-"), ("#4B0082", "--"), ("#8C510A", "-."), ("#01665E", ":"),
+                ("#B2182B", (0, (5, 1, 1, 1))), ("#5A5A5A", (0, (1, 1)))]
+_baselines = []  # labels in the order of the run (set_baselines)
 # Markers a variant or an unknown family may draw from.
 MARKERS = ["o", "s", "D", "^", "v", "<", ">", "p", "h", "X", "P", "d", "8", "H"]
+
+
+def set_baselines(labels):
+    """The run's baseline labels, in order: the i-th gets CURVE_STYLES[i]
+    (cycling), so that a baseline looks the same in every figure of a run."""
+    _baselines[:] = list(labels)
+
+
+def curve_series(label):
+    return CURVE_PREFIX + label
+
+
+def is_curve(series):
+    return series == CURVE or series.startswith(CURVE_PREFIX)
+
+
+def curve_style(series):
+    """(colour, line style) of a baseline's curve."""
+    if series == CURVE:
+        return CURVE_STYLES[0]
+    label = series[len(CURVE_PREFIX):]
+    i = _baselines.index(label) if label in _baselines else len(_baselines) + _hash(label)
+    return CURVE_STYLES[i % len(CURVE_STYLES)]
+
+
+def _method_of(series):
+    """'MCI=cubature [strong]' -> 'cubature': a partner's method (the
+    baseline's label in brackets where a run has several)."""
+    s = series[len(PARTNER):] if series.startswith(PARTNER) else series
+    if s.endswith("]") and " [" in s:
+        s = s[:s.rindex(" [")]
+    return s
 
 
 def use():
@@ -89,15 +129,16 @@ def _hash(s):
 
 def family(series):
     """'MCI=cubature:x=1' -> 'cubature'; 'voronoi' -> 'voronoi'; 'MCI curve' -> 'MCI curve'."""
-    s = series[len(PARTNER):] if series.startswith(PARTNER) else series
-    return s if s == CURVE else s.split(":")[0]
+    if is_curve(series):
+        return series
+    return _method_of(series).split(":")[0]
 
 
 def colour_marker(series):
     """The (hex colour, marker) of a series, from the table or a hash."""
-    if series == CURVE:
-        return CURVE_STYLE
-    s = series[len(PARTNER):] if series.startswith(PARTNER) else series
+    if is_curve(series):
+        return curve_style(series)[0], CURVE_STYLE[1]
+    s = _method_of(series)
     fam = family(s)
     if fam in FAMILIES:
         colour, marker = FAMILIES[fam]
@@ -124,13 +165,15 @@ def plot_kw(series, line=False, label=None, ms=None):
     hollow = is_partner(series)
     kw = {"color": colour, "marker": marker, "markeredgecolor": colour,
           "markerfacecolor": "none" if hollow else colour,
-          "linestyle": ("--" if hollow else "-") if (line or series == CURVE) else "none",
+          "linestyle": ("--" if hollow else "-") if line else "none",
           "gid": "series:" + series, "label": series if label is None else label}
+    if is_curve(series):
+        kw["linestyle"] = curve_style(series)[1]
     if hollow:
         kw["markeredgewidth"] = 1.2
     if ms is not None:
         kw["markersize"] = ms
-    elif series == CURVE:
+    elif is_curve(series):
         kw["markersize"] = 4
     return kw
 
@@ -151,9 +194,10 @@ def series_of(r):
 
 def order(series):
     """A sort key: methods by name, each partner right after its method, the curve last."""
-    if series == CURVE:
-        return ("~", 0, series)
-    s = series[len(PARTNER):] if is_partner(series) else series
+    if is_curve(series):
+        return ("~", _baselines.index(series[len(CURVE_PREFIX):]) if series[len(CURVE_PREFIX):] in _baselines
+                else len(_baselines), series)
+    s = _method_of(series)
     return (s, int(is_partner(series)), series)
 
 

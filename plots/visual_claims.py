@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Tables of docs/visual-claims.md from the results of experiments/visual-claims.json.
+"""Tables of docs/studies/visual-claims.md from the results of experiments/visual-claims.json.
 
     plots/visual_claims.py RESULTS [--out FILE.md]
 

@@ -47,7 +47,7 @@ else
   $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-# .venv: Debian's python3 with its site packages (matplotlib, numpy) plus the
+# .venv: Debian's python3 with its site packages (matplotlib, numpy, pandas) plus the
 # pinned PyPI packages: eulumdat-py (the LDT reader's peer test), pyradiance
 # (Radiance's ies2rad, oconv and rtrace: the reference's peer test) and
 # flip-evaluator (NVIDIA's FLIP, the `flip` metric: host/metrics/flip.h).
@@ -68,5 +68,6 @@ else
   echo "install-deps: WARNING: could not install ${PYPI[*]} into $VENV; the peer and FLIP tests will skip" \
        "and flip will be null" >&2
 fi
+"$VENV/bin/python" -c 'import pandas' || { echo "install-deps: $VENV cannot import pandas (python3-pandas)" >&2; exit 1; }
 # The Python module: build/python on .venv's path (filled by scripts/build.sh).
 bash scripts/python-path.sh

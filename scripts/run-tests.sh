@@ -2,7 +2,10 @@
 # Installs the dependencies, checks the C++ formatting (scripts/check-format.sh),
 # that no host function exceeds 80 lines (scripts/long-functions.py) and no
 # kernel function exceeds 80 lines or 8 parameters (scripts/kernel-limits.py),
-# builds, and runs the whole test suite on the default OpenCL device (PoCL): the
+# that every file, section and anchor README.md and docs/ link to exists
+# (scripts/check-links.py), that the README's headline is the one its committed
+# results give (scripts/readme-headline.py --check), builds, and runs the whole
+# test suite on the default OpenCL device (PoCL): the
 # GoogleTest suite, then the Python module's pytest suite (python/tests).
 # Tests that need a device fail rather than skip.
 set -euo pipefail
@@ -12,6 +15,10 @@ bash scripts/check-format.sh
 python3 scripts/long-functions.py --check 80 $(git ls-files 'host/*.cpp' 'host/*.h' 'python/*.cpp' 'python/*.h')
 python3 scripts/kernel-limits.py --self-test
 python3 scripts/kernel-limits.py $(git ls-files 'kernels/*.h' 'kernels/*.inc' 'kernels/*.cl')
+python3 scripts/check-links.py --self-test
+python3 scripts/check-links.py
+python3 scripts/readme-headline.py --self-test
+python3 scripts/readme-headline.py --check
 bash scripts/build.sh
 export LUMIBENCH_REQUIRE_DEVICE=1
 export POCL_MAX_PTHREAD_COUNT="${POCL_MAX_PTHREAD_COUNT:-$(nproc)}"

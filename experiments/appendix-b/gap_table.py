@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Tables of docs/appendix-b-gap.md from the results of experiments/appendix-b/*.json.
+"""Tables of docs/studies/appendix-b-gap.md from the results of experiments/appendix-b/*.json.
 
 Reads one results.json[.xz] per run, or a .tar.xz of the runs' DIR/results.json
 (experiments/results/appendix-b-gap-pocl-xeon.tar.xz: `lumibench merge` keeps one record
@@ -14,7 +14,7 @@ Usage: python3 experiments/appendix-b/gap_table.py FILE.json[.xz]|RUNS.tar.xz...
 import argparse, collections, json, lzma, os, re, sys, tarfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "plots"))
-from stitched_table import stitched  # noqa: E402  (the pooling of docs/thesis-sct-vs-mci.md)
+from stitched_table import stitched  # noqa: E402  (the pooling of docs/studies/thesis-sct-vs-mci.md)
 
 THESIS = {("ARCOS", 0.1): (565.1048, 160.25, -8.4375), ("ARCOS", 1.1): (27.9669, 27.125, -11.8125),
           ("PERLUCE", 0.1): (0.2382, 18.7969, -4.25), ("PERLUCE", 1.1): (0.0007229, 0.64453, -0.25391)}

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""docs/sh-engine.md: the tables of the sh-engine experiment from its results.json.
+"""docs/studies/sh-engine.md: the tables of the sh-engine experiment from its results.json.
 
     .venv/bin/python experiments/sh-engine/summary.py DIR/results.json [--markdown]
 

@@ -29,14 +29,18 @@ void addMergeCommand(CLI::App& app)
         "merge",
         "Merge result directories of shards into one. Records are kept one per cell (method, parameters, "
         "luminaire, height, rotation, res, precision, device); of several, the one from the later input "
-        "wins. An equal-time MCI partner's cell is its scene, device and matched method, so each method "
-        "keeps one partner per scene: the later input's.");
+        "wins. An equal-time partner's cell is its scene, device, matched method and baseline (its MC SPEC): each "
+        "method keeps one partner per scene and baseline, so runs with other baselines keep both. Inputs of different "
+        "experiments or commits, and a record replaced by "
+        "one computed from other inputs, are refused, naming both, unless --force.");
     cmd->add_option("inputs", o->inputs, "Result directories (with results.json) or results files")->required();
     cmd->add_option("--out", o->out, "Output directory (DIR/results.json, results.csv, report.md, report.html, plots/)")
         ->required()
         ->check(outDirPath());
     cmd->add_flag("--no-report", o->noReport, "Do not write report.md, report.html and plots");
-    cmd->add_flag("--force", o->force, "Write into a non-empty --out directory (its results.json is replaced)");
+    cmd->add_flag("--force", o->force,
+                  "Write into a non-empty --out directory (its results.json is replaced), and merge inputs of "
+                  "different experiments, commits or cell inputs (each difference and replacement is printed)");
     cmd->callback([o] {
         namespace fs = std::filesystem;
         std::error_code ec;
@@ -58,7 +62,8 @@ void addMergeCommand(CLI::App& app)
         for (const auto& in : o->inputs)
             files.push_back(fs::is_directory(in, ec) ? (fs::path(in) / "results.json").string() : in);
         results::MergeStats st;
-        auto doc = results::mergeResults(files, &st);
+        auto doc = results::mergeResults(files, &st, {o->force});
+        for (const auto& f : st.forced) std::cerr << "lumibench: warning: merge --force: " << f << '\n';
         fs::create_directories(o->out);
         util::removeStaleTemporaries(o->out);
         results::save((fs::path(o->out) / "results.json").string(), doc);
@@ -70,9 +75,11 @@ void addMergeCommand(CLI::App& app)
                 util::copyTreeAtomic(img.string(), (fs::path(o->out) / "images").string());
         }
         std::cerr << fmt::format("merged {} files: {} records in, {} out ({} replaced by a later one of the same "
-                                 "cell) -> {}/results.json\n",
-                                 st.files, st.records_in, st.records_out, st.replaced, o->out);
-        std::cerr << fmt::format("table: {}/results.csv\n", o->out);
+                                 "cell and inputs{}) -> {}/results.json\n",
+                                 st.files, st.records_in, st.records_out, st.replaced,
+                                 st.forced.empty() ? "" : fmt::format("; {} differences forced", st.forced.size()),
+                                 o->out);
+        std::cerr << fmt::format("table: {}/results.csv (intervals: results_long.csv)\n", o->out);
         if (!o->noReport) {
             std::string note = experiments::makePlots(o->out);
             if (!note.empty()) std::cerr << "lumibench: warning: plots not made: " << note << '\n';

@@ -49,12 +49,14 @@ void addRunCommand(CLI::App& app)
     cmd->add_flag("--quiet", o->quiet, "No progress lines on stderr");
     std::string keys;
     for (const auto& k : experiments::experimentKeys()) keys += (keys.empty() ? "" : ", ") + k;
-    cmd->footer("Experiment keys: " + keys +
-                ". Every key with its range and default: docs/experiments.md. Leaving out time_res times every "
-                "method at 512 x 512 whatever res is (the paper's scale; a small experiment then still takes the "
-                "time of 512^2 launches); seeds (default 8) renders methods with a seed that many times. The "
-                "report opens with the verdicts at equal time: per method, wins / ties / losses against MCI by "
-                "95 % intervals over the seeds.");
+    cmd->footer(
+        "Experiment keys: " + keys +
+        ". Every key with its range and default: docs/experiments.md. Leaving out time_res times every "
+        "method at 512 x 512 whatever res is (the paper's scale; a small experiment then still takes the "
+        "time of 512^2 launches); seeds (default 8) renders methods with a seed that many times. The "
+        "report opens with the answer in one sentence and the verdicts at equal time: per method and Monte Carlo "
+        "baseline (\"mc\": a SPEC or a list of {\"label\", \"spec\"}), wins / ties / losses by 95 % "
+        "intervals over the seeds, and the off-time pairs (outside equal_time_tolerance) apart, with why.");
     cmd->callback([o, cmd] {
         experiments::Overrides ov;  // range-checked by loadExperiment like the keys they replace
         ov.name = [](const std::string& key) {  // the flag: "time_res" -> "--time-res"
@@ -74,15 +76,16 @@ void addRunCommand(CLI::App& app)
         ro.device = deviceFlag(*cmd, o->device);
         ro.progress = !o->quiet;
         auto s = experiments::run(e, ro);
-        std::cerr << fmt::format("[{}] shard {}/{}: {} scenes, {} cells ({} computed, {} of them recomputed because "
-                                 "their inputs changed, {} already done), {} equal-time partners off, {:.1f} s -> "
-                                 "{}/results.json and results.csv{}\n",
-                                 e.name, ro.shardK, ro.shardN, s.scenes, s.cells, s.computed, s.stale, s.skipped,
-                                 s.equalTimeOff, s.seconds, o->out,
-                                 s.dropped ? fmt::format(" ({} records of cells no longer in the experiment moved to "
-                                                         "results.dropped.json)",
-                                                         s.dropped)
-                                           : "");
+        std::cerr << fmt::format(
+            "[{}] shard {}/{}: {} scenes, {} cells ({} computed, {} of them recomputed because "
+            "their inputs changed, {} already done), {} equal-time partners off-time (no verdict), {:.1f} s "
+            "-> {}/results.json and results.csv{}\n",
+            e.name, ro.shardK, ro.shardN, s.scenes, s.cells, s.computed, s.stale, s.skipped, s.equalTimeOff, s.seconds,
+            o->out,
+            s.dropped ? fmt::format(" ({} records of cells no longer in the experiment moved to "
+                                    "results.dropped.json)",
+                                    s.dropped)
+                      : "");
         if (!o->noReport) {
             experiments::ReportSteps steps;
             steps.tag = e.name;

@@ -12,7 +12,7 @@ long solveN(Curve pts, double targetMs)
 {
     std::sort(pts.begin(), pts.end());
     auto clampN = [](double n) {
-        return static_cast<long>(std::clamp(std::isfinite(n) ? std::round(n) : 1.0, 1.0, double(1 << 20)));
+        return static_cast<long>(std::clamp(std::isfinite(n) ? std::round(n) : 1.0, 1.0, double(kMaxN)));
     };
     if (pts.empty()) return 1;
     if (pts.size() == 1) return clampN(double(pts[0].first) * targetMs / pts[0].second);  // t proportional to N
@@ -126,7 +126,7 @@ struct Search {
         double slope = p1.first != p0.first ? (p1.second - p0.second) / double(p1.first - p0.first) : 0;
         long next = slope > 0 ? std::lround(double(p0.first) + (1 - p0.second) / slope)
                               : std::lround(double(p0.first) / p0.second);  // t proportional to N
-        return std::clamp(next, 1L, 1L << 20);
+        return std::clamp(next, 1L, kMaxN);
     }
     // The neighbour of N_eq on the other side of 1 was measured too (or
     // N_eq = 1 is too slow already).
@@ -171,6 +171,8 @@ Result search(const Sides& sides, const Options& options, const Curve& fit, doub
         if (cand.empty()) break;
         s.time(cand);
         if (std::abs(s.best.ratio - 1) <= options.tolerance) break;
+        // MC at N = 1 already slower than the tolerance allows: no N comes closer (its floor)
+        if (s.measured.count(1) && s.measured.at(1) > 1 + options.tolerance) break;
         const std::optional<long> aim = s.secantAim();
         if (!aim) break;
         next = *aim;

@@ -32,6 +32,9 @@
 
 namespace lb::equaltime {
 
+// The largest sample count the search sets (its clamp).
+constexpr long kMaxN = 1L << 20;
+
 // Measured (N, median ms) points of MC.
 using Curve = std::vector<std::pair<long, double>>;
 

@@ -1,6 +1,7 @@
 #include "experiments/experiment.h"
 
 #include "cl/runtime.h"
+#include "experiments/results.h"
 #include "methods/analytic.h"
 #include "methods/spec.h"
 #include "util/check.h"
@@ -109,6 +110,51 @@ void readLuminaires(const Reader& r, const Overrides& ov, Experiment& e)
     }
 }
 
+// Longest label of a baseline: a table's column head.
+constexpr size_t kMaxBaselineLabel = 64;
+
+// "mc": one SPEC or a list of SPECs and {"label", "spec"} objects, each an
+// mc SPEC without n or extra; labels and canonical SPECs distinct.
+template <class Check>
+void readBaselines(const Reader& r, Experiment& e, const Check& checkSpec)
+{
+    const json given = r.has("mc") ? r.at("mc") : json("mc");
+    const json list = given.is_array() ? given : json::array({given});
+    if (list.empty()) r.fail("mc", "expected a SPEC or a non-empty list of baselines, found []");
+    std::set<std::string> labels, specs;
+    for (size_t i = 0; i < list.size(); ++i) {
+        const json& b = list[i];
+        const std::string where = list.size() > 1 || given.is_array() ? fmt::format("entry {}: ", i) : "";
+        Baseline out;
+        if (b.is_string()) {
+            out.spec = b.get<std::string>();
+        } else if (b.is_object() && b.size() == 2 && b.contains("label") && b.contains("spec") &&
+                   b["label"].is_string() && b["spec"].is_string()) {
+            out.label = b["label"].get<std::string>();
+            out.spec = b["spec"].get<std::string>();
+        } else {
+            r.fail(
+                "mc",
+                fmt::format("{}expected an mc SPEC or {{\"label\": ..., \"spec\": ...}}, found {}", where, b.dump()));
+        }
+        const methods::MethodSpec s = checkSpec("mc", out.spec);
+        if (s.name != "mc") r.fail("mc", fmt::format("{}expected an mc SPEC, found '{}'", where, out.spec));
+        for (const char* k : {"n", "extra"})
+            if (s.given.count(k))
+                r.fail("mc", fmt::format("{}'{}' must not set {} (the runner chooses it)", where, out.spec, k));
+        out.canonical = s.canonical();
+        if (out.label.empty()) out.label = results::defaultBaselineLabel(out.spec);
+        if (out.label.size() > kMaxBaselineLabel || out.label.find_first_of("\n\r\t") != std::string::npos)
+            r.fail("mc",
+                   fmt::format("{}label '{}': expected at most {} characters, no tab or line break", where, out.label,
+                               kMaxBaselineLabel));
+        if (!specs.insert(out.canonical).second)
+            r.fail("mc", fmt::format("{}'{}' is the same MC as an earlier baseline", where, out.spec));
+        if (!labels.insert(out.label).second) r.fail("mc", fmt::format("{}label '{}' given twice", where, out.label));
+        e.baselines.push_back(out);
+    }
+}
+
 // The methods, equal_time, mc, reference and the MCI curve, each checked
 // against the registry now, not after an hour of references.
 void readMethods(const Reader& r, Experiment& e)
@@ -129,11 +175,7 @@ void readMethods(const Reader& r, Experiment& e)
             if (!canon.count(checkSpec("equal_time", m).canonical()))
                 r.fail("equal_time", fmt::format("'{}' is not one of \"methods\"", m));
     }
-    if (r.has("mc")) e.mc = r.string("mc");
-    if (checkSpec("mc", e.mc).name != "mc") r.fail("mc", fmt::format("expected an mc SPEC, found '{}'", e.mc));
-    for (const char* k : {"n", "extra"})
-        if (checkSpec("mc", e.mc).given.count(k))
-            r.fail("mc", fmt::format("must not set {} (the runner chooses it)", k));
+    readBaselines(r, e, checkSpec);
     if (r.has("reference")) e.reference = r.string("reference");
     checkSpec("reference", e.reference);
     if (r.has("mci_curve")) e.mciCurve = r.integers("mci_curve", 1, 1 << 20);
@@ -207,6 +249,13 @@ Experiment loadExperiment(const std::string& path, const Overrides& ov)
     readMethods(r, e);
     readSettings(r, ov, e);
     return e;
+}
+
+std::string Baseline::at(long n, double extra) const
+{
+    std::string s = spec + (spec.find(':') == std::string::npos ? ":" : ",") + "n=" + std::to_string(n);
+    if (extra > 0) s += fmt::format(",extra={:.3f}", extra);
+    return s;
 }
 
 Scene SceneId::scene() const

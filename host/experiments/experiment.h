@@ -5,9 +5,10 @@
 //    "luminaires": ["lambert.ldt", "spot.ldt"],   // or "*" for every .ldt/.ies there
 //    "heights": [0.1, 1.1], "rotations": ["pi/2", "3pi/4"],
 //    "methods": ["point", "mc:n=8", "cubature"],
-//    "equal_time": ["cubature"],             // methods that get an MCI partner at equal time
-//    "mci_curve": [1, 2, 4, ..., 1024],      // MC at these N on every scene (NMSE-time curve)
-//    "mc": "mc",                             // the MC SPEC used for the curve and equal time
+//    "equal_time": ["cubature"],             // methods that get an MC partner at equal time per baseline
+//    "mci_curve": [1, 2, 4, ..., 1024],      // each baseline at these N on every scene (error-time curve)
+//    "mc": "mc",                             // the MC baseline(s) of the curve and of equal time: a SPEC,
+//                                            // or a list of SPECs and {"label": ..., "spec": ...}
 //    "equal_time_fit": [8, 32, 128],         // N to fit t(N) on when mci_curve is empty
 //    "reference": "reference",               // the reference SPEC
 //    "res": 64, "precision": ["float"], "size": [1, 1], "extent": 5,   // size: [W, L] m or "file"
@@ -40,6 +41,18 @@
 
 namespace lb::experiments {
 
+// One Monte Carlo baseline: every equal-time method gets a partner of it, and
+// it has its own MC curve. The label names it in records, the report and the
+// CSV; a bare SPEC is labelled results::defaultBaselineLabel ("MCI" for
+// mc's defaults, else the SPEC as written).
+struct Baseline {
+    std::string label;
+    std::string spec;  // as written (without n and extra: the runner chooses them)
+    std::string canonical;  // methods::MethodSpec::canonical of spec
+    // MC of this baseline at n samples (n + extra: mc's fractional count).
+    std::string at(long n, double extra = 0) const;
+};
+
 struct Experiment {
     std::string path;  // the file it came from
     std::string name;
@@ -50,7 +63,8 @@ struct Experiment {
     std::vector<std::string> methods;  // SPEC strings
     std::vector<std::string> equalTime;  // subset of methods
     std::vector<long> mciCurve, equalTimeFit;
-    std::string mc = "mc", reference = "reference";
+    std::vector<Baseline> baselines;  // "mc": at least one, labels and SPECs distinct
+    std::string reference = "reference";
     int res = 64;
     std::vector<std::string> precisions{"float"};
     double width = 1, length = 1, extent = 5;

@@ -2,6 +2,8 @@
 
 #include "experiments/report_bounds.h"
 #include "experiments/report_page.h"
+#include "experiments/report_table.h"
+#include "experiments/report_verdicts.h"
 #include "experiments/results.h"
 #include "experiments/runner.h"
 #include "metrics/image.h"
@@ -45,11 +47,14 @@ std::string matched(const results::Record& r)
     return r.equalTime ? r.equalTime->label : r.equal_time_to.value_or("");
 }
 
+// A partner's or MC curve point's baseline label ("MCI" in files of before baselines had names).
+std::string baselineOf(const results::Record& r) { return r.baseline ? r.baseline->label : "MCI"; }
+
 // The column a record belongs to: the SPEC as the experiment wrote it, and
-// "MCI=<spec>" for the equal-time partner of <spec>.
+// "<baseline>=<spec>" for the equal-time partner of <spec>.
 std::string label(const results::Record& r)
 {
-    if (r.equal_time_to) return "MCI=" + matched(r);
+    if (r.equal_time_to) return baselineOf(r) + "=" + matched(r);
     return str(r.extra, "spec", r.method);
 }
 
@@ -64,14 +69,20 @@ std::string role(const results::Record& r) { return cellRole(r); }
 
 std::string sci(double v) { return std::isfinite(v) ? fmt::format("{:.3e}", v) : "n/a"; }
 
-// The scene kind and its values ("specular alpha=0.1 eye=[0,4,2]"), "" for
-// the diffuse scene, whose records carry none.
+// The scene kind and its values ("specular alpha=0.1 eye=[0,4,2]", "disk
+// 0.08 x 0.08 m"), "" for the diffuse scene of a 1 x 1 m rectangle, whose
+// records carry none.
 std::string kindText(const results::Record& r)
 {
     if (!r.sceneKeys.is_object() || r.sceneKeys.empty()) return "";
-    std::string t = str(r.sceneKeys, "scene_kind", "?");
-    for (auto it = r.sceneKeys.begin(); it != r.sceneKeys.end(); ++it)
-        if (it.key() != "scene_kind") t += " " + it.key() + "=" + it.value().dump();
+    std::string t = str(r.sceneKeys, "scene_kind");
+    const json& k = r.sceneKeys;
+    if (k.contains("shape")) t += (t.empty() ? "" : " ") + str(k, "shape", k["shape"].dump());
+    if (k.contains("size") && k["size"].is_array() && k["size"].size() == 2)
+        t += fmt::format("{}{} x {} m", t.empty() ? "" : " ", k["size"][0].dump(), k["size"][1].dump());
+    for (auto it = k.begin(); it != k.end(); ++it)
+        if (it.key() != "scene_kind" && it.key() != "shape" && it.key() != "size")
+            t += (t.empty() ? "" : " ") + it.key() + "=" + it.value().dump();
     return t;
 }
 
@@ -81,20 +92,10 @@ std::string sceneKey(const results::Record& r)
                        kindText(r));
 }
 
-// One table of the report, rendered as Markdown and as HTML from the same
-// cells. A cell's `sort` is the number the HTML table sorts by (NaN: by text).
-struct Cell {
-    std::string text;
-    double sort = NAN;
-};
-struct Table {
-    std::string title, note;  // note: Markdown inline (`code`, **bold**)
-    std::vector<std::string> head;
-    std::vector<std::vector<Cell>> rows;
-    std::string empty;  // said instead of the table when it has no rows
-};
-
-Cell num(double v, std::string text) { return {std::move(text), std::isfinite(v) ? v : NAN}; }
+using report::Cell;
+using report::mdLiteral;
+using report::num;
+using report::Table;
 
 std::string htmlEscape(const std::string& s)
 {
@@ -116,25 +117,6 @@ std::string htmlEscape(const std::string& s)
         default:
             o += c;
         }
-    }
-    return o;
-}
-
-// Text from the records (luminaire names, SPECs, the run's context) as
-// literal Markdown: every character Markdown or HTML would read as markup
-// is backslash-escaped (CommonMark), line breaks become spaces (a table row
-// is one line). report.md shows it as written; inlineHtml() undoes the
-// escapes and HTML-escapes the character.
-std::string mdLiteral(const std::string& s)
-{
-    std::string o;
-    for (char c : s) {
-        if (c == '\n' || c == '\r') {
-            o += ' ';
-            continue;
-        }
-        if (std::strchr("\\`*_[]<>&|~#", c) && c != '\0') o += '\\';
-        o += c;
     }
     return o;
 }
@@ -285,6 +267,7 @@ json viewerData(const std::string& dir, const std::vector<results::Record>& recs
                                                                                                          : "lx"},
                    {"ref", floatsB64(ref)}};
         json methods = json::array(), mci = json::object();
+        std::string primary;  // the baseline of the view "MC at equal time"
         for (const auto* r : byScene[s]) {
             const bool eq = role(*r) == "equal_time";
             const std::string spec = eq ? matched(*r) : label(*r);
@@ -292,19 +275,24 @@ json viewerData(const std::string& dir, const std::vector<results::Record>& recs
             if (!fs::is_regular_file(exr)) continue;
             Image img = readExr(exr.string());
             if (img.width != ref.width || img.height != ref.height) continue;
+            const std::string base = eq ? baselineOf(*r) : "";
             const std::string pairText = eq && r->equalTime
-                ? fmt::format("; paired: {} {:.4g} ms, MCI {:.4g} ms", spec, r->equalTime->method_ms,
-                              r->equalTime->partner_ms)
+                ? fmt::format("; paired: {} {:.4g} ms, {} {:.4g} ms{}", spec, r->equalTime->method_ms, base,
+                              r->equalTime->partner_ms, r->equalTime->ok ? "" : ", off-time")
                 : std::string();
-            json m = {{"label",
-                       eq ? fmt::format("MCI at the time of {} (N = {}{})", spec, r->n ? *r->n : 0, pairText) : spec},
-                      {"img", floatsB64(img)},
-                      {"caption", caption(r->error)},
-                      {"ms", r->time_ms.median}};
-            if (eq)
+            json m = {
+                {"label",
+                 eq ? fmt::format("{} at the time of {} (N = {}{})", base, spec, r->n ? *r->n : 0, pairText) : spec},
+                {"img", floatsB64(img)},
+                {"caption", caption(r->error)},
+                {"ms", r->time_ms.median}};
+            // the view "MC at equal time" shows the first baseline; the others are methods of the list
+            if (eq && (primary.empty() || primary == base) && !mci.contains(spec)) {
+                primary = base;
                 mci[spec] = m;
-            else
+            } else {
                 methods.push_back(m);
+            }
         }
         sc["methods"] = methods;
         sc["mci"] = mci;
@@ -317,6 +305,25 @@ json viewerData(const std::string& dir, const std::vector<results::Record>& recs
 }
 
 }  // namespace
+
+// Text from the records (luminaire names, SPECs, the run's context) as
+// literal Markdown: every character Markdown or HTML would read as markup
+// is backslash-escaped (CommonMark), line breaks become spaces (a table row
+// is one line). report.md shows it as written; inlineHtml() undoes the
+// escapes and HTML-escapes the character.
+std::string report::mdLiteral(const std::string& s)
+{
+    std::string o;
+    for (char c : s) {
+        if (c == '\n' || c == '\r') {
+            o += ' ';
+            continue;
+        }
+        if (std::strchr("\\`*_[]<>&|~#", c) && c != '\0') o += '\\';
+        o += c;
+    }
+    return o;
+}
 
 std::string makePlots(const std::string& dir)
 {
@@ -353,6 +360,13 @@ Table runInfo(const results::Results& doc)
     }
     if (c.contains("merged_from"))
         info.rows.push_back({{"merged from"}, {fmt::format("{} files", c["merged_from"].size())}});
+    if (c.contains("commits") && c["commits"].is_array()) {
+        std::set<std::string> commits;
+        for (const auto& x : c["commits"]) commits.insert(x.is_string() ? x.get<std::string>() : x.dump());
+        std::string t;
+        for (const auto& x : commits) t += (t.empty() ? "" : ", ") + x;
+        info.rows.push_back({{"commits of the inputs"}, {mdLiteral(t)}});
+    }
     return info;
 }
 
@@ -362,27 +376,28 @@ Table runInfo(const results::Results& doc)
 std::vector<std::string> columns(const results::Results& doc, std::string* summary)
 {
     std::vector<std::string> cols;
-    std::set<std::string> scenes;
+    std::set<std::string> scenes, partnerCols;
     size_t eqOk = 0, eqAll = 0, eqClosest = 0;
     for (const auto& r : doc.records) {
         scenes.insert(sceneKey(r));
         if (role(r) == "mci_curve") continue;
         if (std::find(cols.begin(), cols.end(), label(r)) == cols.end()) cols.push_back(label(r));
         if (r.equal_time_to) {
+            partnerCols.insert(label(r));
             ++eqAll;
             const bool ok = r.equalTime && r.equalTime->ok;
             eqOk += ok;
             eqClosest += ok || (r.equalTime && r.equalTime->bracketed);
         }
     }
-    std::stable_partition(cols.begin(), cols.end(), [](const std::string& s) { return s.rfind("MCI=", 0) != 0; });
+    std::stable_partition(cols.begin(), cols.end(), [&](const std::string& s) { return !partnerCols.count(s); });
     int res = doc.records.empty() ? 0 : doc.records.front().res;
     int timeRes = doc.records.empty() ? 0 : doc.records.front().time_ms.res;
     double tol = doc.context.value("equal_time_tolerance", NAN);
     *summary = fmt::format(
-        "{} records, {} scenes, {} x {} pixels{}; {} of {} equal-time MCI partners ({:.0f} %) within "
-        "{} of the matched method's time in their paired rounds (the `ratio` of the equal-time pairs), {} "
-        "({:.0f} %) within or at the closest integer N.\n"
+        "{} records, {} scenes, {} x {} pixels{}; {} of {} equal-time MC partners ({:.0f} %) within "
+        "{} of the matched method's time in their paired rounds (the `ratio` of the equal-time pairs): the "
+        "others are off-time and give no verdict; {} ({:.0f} %) within or at the closest integer N.\n"
         "Times are OpenCL profiling-event medians (DESIGN section 6); errors against the reference (section 5). "
         "The same records as a table: `results.csv`.\n",
         doc.records.size(), scenes.size(), res, res,
@@ -405,12 +420,15 @@ Table mainTable(const results::Results& doc, const std::vector<std::string>& col
     };
     std::map<std::tuple<std::string, std::string, std::string, double>, std::map<std::string, Acc>> rows;
     std::map<std::string, std::string> names;  // luminaire file -> the name shown
+    std::map<std::string, std::string> partnerOf;  // partner column -> its method
+    std::set<std::string> baselines;
     size_t carried = 0;
     bool kinds = false;  // records of a scene kind other than diffuse: a column for it
     for (const auto& r : doc.records) {
         if (role(r) == "mci_curve") continue;
         kinds = kinds || !kindText(r).empty();
         auto& a = rows[{r.luminaire, kindText(r), r.precision, r.height}][label(r)];
+        if (r.equal_time_to) partnerOf[label(r)] = matched(r), baselines.insert(baselineOf(r));
         names[r.luminaire] = lumName(r);
         a.parts.push_back(r.error);
         carried += std::isfinite(metrics::minimisable(r.error, key));
@@ -423,14 +441,15 @@ Table mainTable(const results::Results& doc, const std::vector<std::string>& col
                               key == "flip" ? ", or flip-evaluator was not available: scripts/install-deps.sh" : "");
         return t;
     }
-    t.note += "MCI=M is Monte Carlo at the time of method M (its mean N over the rotations in brackets); "
-              "M / MCI is the ratio of the two (below 1: M is better). The lowest of each row is bold.";
+    t.note += "B=M is Monte Carlo baseline B at the time of method M (its mean N over the rotations in brackets)";
+    t.note += baselines.size() == 1 ? "; M / B is the ratio of the two (below 1: M is better)." : ".";
+    t.note += " The lowest of each row is bold.";
     for (const auto& col : cols) t.head.push_back(mdLiteral(col));
-    std::vector<std::string> ratioOf;  // the methods with a partner column
-    for (const auto& col : cols)
-        if (col.rfind("MCI=", 0) == 0 && std::find(cols.begin(), cols.end(), col.substr(4)) != cols.end())
-            ratioOf.push_back(col.substr(4));
-    for (const auto& m : ratioOf) t.head.push_back(mdLiteral(m) + " / MCI");
+    std::vector<std::string> ratioOf;  // the methods with a partner column, where there is one baseline
+    for (const auto& [col, m] : partnerOf)
+        if (baselines.size() == 1 && std::find(cols.begin(), cols.end(), m) != cols.end()) ratioOf.push_back(m);
+    const std::string base = baselines.empty() ? "" : *baselines.begin();
+    for (const auto& m : ratioOf) t.head.push_back(mdLiteral(m) + " / " + mdLiteral(base));
     for (const auto& [k, m] : rows) {
         std::vector<Cell> row = {{mdLiteral(names[std::get<0>(k)])},
                                  {mdLiteral(std::get<2>(k))},
@@ -452,13 +471,13 @@ Table mainTable(const results::Results& doc, const std::vector<std::string>& col
             const double v = value[col];
             std::string text = sci(v);
             if (v == best) text = "**" + text + "**";
-            if (col.rfind("MCI=", 0) == 0)
+            if (partnerOf.count(col))
                 text += fmt::format(" ({:.0f})", it->second.nsum / double(it->second.parts.size()));
             row.push_back(num(v, text));
         }
         for (const auto& mname : ratioOf) {
-            const bool both = value.count(mname) && value.count("MCI=" + mname);
-            const double q = both ? value[mname] / value["MCI=" + mname] : NAN;
+            const bool both = value.count(mname) && value.count(base + "=" + mname);
+            const double q = both ? value[mname] / value[base + "=" + mname] : NAN;
             row.push_back(both ? num(q, std::isfinite(q) ? fmt::format("{:.3g}", q) : "n/a") : Cell{});
         }
         t.rows.push_back(std::move(row));
@@ -469,10 +488,14 @@ Table mainTable(const results::Results& doc, const std::vector<std::string>& col
 // Relative times (paper Table 1) and each method's kernel form.
 Table timesTable(const results::Results& doc, const std::vector<std::string>& cols)
 {
-    // geometric mean over scenes of the median over point's median
+    // geometric mean over scenes of the median over the reference method's
+    // median: `point` (paper Table 1), else the first method of the tables
+    const bool point =
+        std::any_of(doc.records.begin(), doc.records.end(), [](const auto& r) { return label(r) == "point"; });
+    const std::string refMethod = point || cols.empty() ? "point" : cols.front();
     std::map<std::string, double> pointMs;
     for (const auto& r : doc.records)
-        if (label(r) == "point") pointMs[sceneKey(r)] = r.time_ms.median;
+        if (label(r) == refMethod) pointMs[sceneKey(r)] = r.time_ms.median;
     std::map<std::string, std::pair<double, int>> rel, abs;
     std::map<std::string, std::pair<int, int>> forms;  // label -> (straight-line, general) records
     for (const auto& r : doc.records) {
@@ -490,14 +513,16 @@ Table timesTable(const results::Results& doc, const std::vector<std::string>& co
             ++a.second;
         }
     }
-    Table times{"Run time (paper Table 1)",
-                "Mean median kernel time over the scenes, and the geometric mean over the scenes of the time relative "
-                "to `point`. Kernel form: whether the timed kernel was the method's straight-line form or its general "
-                "kernel (records' `stats.form`; blank for methods with one form). An equal-time verdict is fair only "
-                "where the method ran its fastest form.",
-                {"method", "time (ms)", "relative to point", "kernel form"},
-                {},
-                ""};
+    Table times{
+        "Run time (paper Table 1)",
+        fmt::format("Mean median kernel time over the scenes, and the geometric mean over the scenes of the time "
+                    "relative to `{}`{}. Kernel form: whether the timed kernel was the method's straight-line "
+                    "form or its general kernel (records' `stats.form`; blank for methods with one form). An "
+                    "equal-time verdict is fair only where the method ran its fastest form.",
+                    mdLiteral(refMethod), point ? "" : " (these results have no `point`, the paper's reference)"),
+        {"method", "time (ms)", "relative to " + mdLiteral(refMethod), "kernel form"},
+        {},
+        ""};
     for (const auto& col : cols) {
         auto a = abs[col];
         auto rr = rel.find(col);
@@ -531,26 +556,6 @@ Table luminairesTable(const results::Results& doc)
     return t;
 }
 
-// An equal-time pair of the results: the partner and the method it was timed against.
-struct Pair {
-    const results::Record* method = nullptr;  // null: the method's record is missing
-    const results::Record* partner = nullptr;
-};
-
-std::vector<Pair> pairsOf(const results::Results& doc)
-{
-    std::map<std::string, const results::Record*> bySpec;  // scene|label -> the method's record
-    for (const auto& r : doc.records)
-        if (!r.equal_time_to) bySpec[sceneKey(r) + "|" + str(r.extra, "spec", r.method)] = &r;
-    std::vector<Pair> out;
-    for (const auto& r : doc.records) {
-        if (!r.equal_time_to) continue;
-        auto it = bySpec.find(sceneKey(r) + "|" + matched(r));
-        out.push_back({it == bySpec.end() ? nullptr : it->second, &r});
-    }
-    return out;
-}
-
 // A value with its 95 % interval where the record has one (seeds > 1).
 std::string withInterval(const results::Record& r, double v, const std::string& key)
 {
@@ -563,16 +568,17 @@ std::string withInterval(const results::Record& r, double v, const std::string& 
 Table pairsTable(const results::Results& doc)
 {
     Table pairs{"Equal-time pairs",
-                "t method and t MCI are the medians of the same alternating rounds (method, then MCI at N, round "
-                "after round); ratio is the median over those rounds of t MCI / t method, (!) where it lies outside "
-                "the tolerance. N is MCI's mean sample count (N + extra). MCI's errors are means over its seeds "
+                "t method and t MC are the medians of the same alternating rounds (method, then the baseline's MC at "
+                "N, round after round); ratio is the median over those rounds of t MC / t method, (!) where it lies "
+                "outside the tolerance: the pair is off-time and its verdict `off-time`. "
+                "N is the MC's mean sample count (N + extra). The MC's errors are means over its seeds "
                 "with their 95 % intervals in brackets; the verdict (NMSE) is a win where the method's interval "
-                "(or value) lies below MCI's, a loss where above, a tie where they overlap.",
-                {"luminaire", "h", "R (rad)", "method", "t method (ms)", "N", "t MCI (ms)", "ratio", "NMSE method",
-                 "NMSE MCI", "verdict", "grad_nmse method", "grad_nmse MCI", "FLIP method", "FLIP MCI"},
+                "(or value) lies below the MC's, a loss where above, a tie where they overlap.",
+                {"luminaire", "h", "R (rad)", "method", "baseline", "t method (ms)", "N", "t MC (ms)", "ratio",
+                 "NMSE method", "NMSE MC", "verdict", "grad_nmse method", "grad_nmse MC", "FLIP method", "FLIP MC"},
                 {},
                 ""};
-    for (const Pair& p : pairsOf(doc)) {
+    for (const results::Pair& p : results::pairsOf(doc.records)) {
         const results::Record& r = *p.partner;
         auto of = [&](double metrics::Metrics::*f, const char* key) {
             double v = p.method ? p.method->error.*f : NAN;
@@ -584,6 +590,7 @@ Table pairsTable(const results::Results& doc)
                               num(r.height, fmt::format("{}", r.height)),
                               num(r.rotation, fmt::format("{:.4f}", r.rotation)),
                               {mdLiteral(matched(r))},
+                              {mdLiteral(baselineOf(r))},
                               num(et.method_ms, fmt::format("{:.4f}", et.method_ms)),
                               num(et.n, fmt::format("{:g}", et.n)),
                               num(et.partner_ms, fmt::format("{:.4f}", et.partner_ms)),
@@ -599,78 +606,12 @@ Table pairsTable(const results::Results& doc)
     return pairs;
 }
 
-// Per method with an equal-time partner: wins, ties and losses in NMSE over
-// the scenes, the geometric mean of NMSE method / NMSE MCI, and the scenes it
-// loses (links to their pictures where the viewer has them).
-struct VerdictAcc {
-    int win = 0, tie = 0, loss = 0, undefined = 0, logs = 0;
-    double logSum = 0;
-    std::vector<std::string> lost;
-    int scenes() const { return win + tie + loss + undefined; }
-};
-
-std::string sceneLink(const results::Record& r, const std::map<std::string, size_t>& viewerIndex)
-{
-    const std::string scene = str(r.extra, "scene", r.luminaire);
-    auto vi = viewerIndex.find(scene);
-    return vi == viewerIndex.end() ? mdLiteral(scene)
-                                   : fmt::format("[{}](#scene={}&view=mci)", mdLiteral(scene), vi->second);
-}
-
-// The answer first: the report's opening table.
-Table verdictTable(const results::Results& doc, const std::map<std::string, size_t>& viewerIndex)
-{
-    std::vector<std::string> order;
-    std::map<std::string, VerdictAcc> by;
-    int seeds = 1;
-    for (const Pair& p : pairsOf(doc)) {
-        if (!p.method) continue;
-        const std::string m = matched(*p.partner);
-        if (!by.count(m)) order.push_back(m);
-        VerdictAcc& a = by[m];
-        seeds = std::max(seeds, p.partner->seeds);
-        const results::Verdict v = results::verdict(*p.method, *p.partner);
-        a.win += v == results::Verdict::Win;
-        a.tie += v == results::Verdict::Tie;
-        a.loss += v == results::Verdict::Loss;
-        a.undefined += v == results::Verdict::Undefined;
-        const double q = p.method->error.nmse / p.partner->error.nmse;
-        if (std::isfinite(q) && q > 0) {
-            a.logSum += std::log(q);
-            ++a.logs;
-        }
-        if (v == results::Verdict::Loss) a.lost.push_back(sceneLink(*p.partner, viewerIndex));
-    }
-    Table t{"Verdicts at equal time",
-            fmt::format("Each method against Monte Carlo at its own time, scene by scene, in NMSE: a win where the "
-                        "method's error (its 95 % interval where it has seeds) lies below MCI's (the mean over {} "
-                        "seed{}), a loss where above, a tie where they overlap. The ratio is the geometric mean over "
-                        "the scenes of NMSE method / NMSE MCI (below 1: the method is better).",
-                        seeds, seeds == 1 ? ", one draw: no interval" : "s with its 95 % interval"),
-            {"method", "scenes", "wins", "ties", "losses", "NMSE ratio (geometric mean)", "loses at"},
-            {},
-            "No equal-time pairs in these results."};
-    for (const auto& m : order) {
-        const VerdictAcc& a = by[m];
-        const double g = a.logs ? std::exp(a.logSum / a.logs) : NAN;
-        std::string lost;
-        for (size_t i = 0; i < a.lost.size(); ++i) lost += (i ? ", " : "") + a.lost[i];
-        t.rows.push_back({{mdLiteral(m)},
-                          num(a.scenes(), std::to_string(a.scenes())),
-                          num(a.win, std::to_string(a.win)),
-                          num(a.tie, std::to_string(a.tie)),
-                          num(a.loss, std::to_string(a.loss)),
-                          num(g, std::isfinite(g) ? fmt::format("{:.3g}", g) : "n/a"),
-                          {lost.empty() ? "none" : lost}});
-    }
-    return t;
-}
-
 // What report.md and report.html both show.
 struct ReportContent {
     std::string title;
     std::string description;  // the experiment's, Markdown literal
-    Table verdicts;  // the answer, first on the page
+    std::string headline;  // the answer in one sentence, first on the page
+    Table verdicts, details;  // the verdicts per method and baseline, then the off-time pairs and losses
     Table info;
     std::string summary;
     std::vector<Table> tables;
@@ -703,13 +644,16 @@ ReportContent reportContent(const std::string& dir, const results::Results& doc,
     c.title = "Experiment " + mdLiteral(str(doc.context, "experiment", "?"));
     if (doc.context.contains("experiment_spec") && doc.context["experiment_spec"].is_object())
         c.description = mdLiteral(str(doc.context["experiment_spec"], "description"));
-    c.verdicts = verdictTable(doc, viewerIndex);
+    VerdictReport v = verdictReport(doc, viewerIndex);
+    c.headline = v.headline;
+    c.verdicts = std::move(v.verdicts);
+    c.details = std::move(v.details);
     c.info = runInfo(doc);
     const std::vector<std::string> cols = columns(doc, &c.summary);
     const std::string pooledNote =
         "Each cell is the error of the rotations' images stitched into one, as in the thesis: squared errors summed "
-        "over all rotations' pixels, against the pooled means (`metrics::pooled`; docs/thesis-sct-vs-mci.md), not "
-        "the mean of the rotations' values, which one nearly dark rotation can dominate. ";
+        "over all rotations' pixels, against the pooled means (`metrics::pooled`; docs/studies/thesis-sct-vs-mci.md), "
+        "not the mean of the rotations' values, which one nearly dark rotation can dominate. ";
     c.tables = {
         mainTable(doc, cols, "nmse", "NMSE per luminaire and height (rotations stitched)", pooledNote),
         mainTable(doc, cols, "grad_nmse", "grad_nmse per luminaire and height (rotations stitched)",
@@ -749,8 +693,9 @@ std::string reportMarkdown(const ReportContent& c)
 {
     std::ostringstream o;
     o << "# " << c.title << "\n\n";
+    if (!c.headline.empty()) o << c.headline << "\n\n";
     if (!c.description.empty()) o << c.description << "\n";
-    o << mdTable(c.verdicts) << "\n## Run\n\n| | |\n|---|---|\n";
+    o << mdTable(c.verdicts) << mdTable(c.details) << "\n## Run\n\n| | |\n|---|---|\n";
     for (const auto& row : c.info.rows) o << "| " << row[0].text << " | " << row[1].text << " |\n";
     o << '\n' << c.summary;
     for (const auto& t : c.tables) o << mdTable(t);
@@ -785,8 +730,10 @@ std::string reportHtml(const ReportContent& c, const json& viewer, size_t shown,
     o << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>" << inlineHtml(c.title)
       << "</title>\n<style>" << report_page::kCss << "</style></head>\n<body>\n<h1>" << inlineHtml(c.title)
       << "</h1>\n";
+    if (!c.headline.empty()) o << "<p class=\"headline\">" << inlineHtml(c.headline) << "</p>\n";
     if (!c.description.empty()) o << "<p class=\"description\">" << inlineHtml(c.description) << "</p>\n";
-    o << "<section id=\"verdicts\">" << htmlTable(c.verdicts) << "</section>\n<h2>Run</h2>\n<table class=\"info\">";
+    o << "<section id=\"verdicts\">" << htmlTable(c.verdicts) << "</section>\n<section id=\"offtime\">"
+      << htmlTable(c.details) << "</section>\n<h2>Run</h2>\n<table class=\"info\">";
     for (const auto& row : c.info.rows)
         o << "<tr><th>" << inlineHtml(row[0].text) << "</th><td>" << inlineHtml(row[1].text) << "</td></tr>";
     o << "</table>\n<p>" << inlineHtml(c.summary) << " Click a column head to sort.</p>\n";

@@ -78,7 +78,7 @@ std::string cellStem(const results::Record& r)
     const std::string role = cellRole(r);
     const std::string spec =
         r.equal_time_to ? (r.equalTime ? r.equalTime->label : *r.equal_time_to) : jsonText(r.extra, "spec", r.method);
-    return cellImageName(role, spec);
+    return cellImageName(role, spec, r.baseline ? r.baseline->label : "");
 }
 
 void nameLuminaires(results::Results& doc)

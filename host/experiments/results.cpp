@@ -2,6 +2,8 @@
 
 #include "experiments/experiment.h"
 #include "scene/scene.h"
+#include "equaltime/equaltime.h"
+#include "methods/spec.h"
 #include "util/error.h"
 #include "util/fileio.h"
 #include "util/json_file.h"
@@ -22,6 +24,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <set>
 #include <cstring>
 #include <unordered_map>
@@ -71,10 +74,10 @@ double numField(const json& j, const char* key)
 }
 
 const std::set<std::string> kKnownKeys = {
-    "method", "params",        "luminaire", "height",   "rotation",   "res",       "precision",
-    "device", "driver",        "time_ms",   "nmse",     "nrmse",      "relmse",    "ueb",
-    "leb",    "nonfinite",     "pixels",    "mean_ref", "mean_test",  "grad_nmse", "grad_pairs",
-    "flip",   "equal_time_to", "n",         "inputs",   "equal_time", "seeds",     "ci95"};
+    "method", "params",     "luminaire", "height",    "rotation",   "res",  "precision",     "device",
+    "driver", "time_ms",    "nmse",      "nrmse",     "relmse",     "ueb",  "leb",           "nonfinite",
+    "pixels", "mean_ref",   "mean_test", "grad_nmse", "grad_pairs", "flip", "equal_time_to", "n",
+    "inputs", "equal_time", "seeds",     "ci95",      "baseline"};
 // The equal-time result's columns of the CSV (equal_time_<key>), its
 // candidates and fit (lists) left out.
 const char* const kEqualTimeCsv[] = {"label",     "n",          "ratio",      "ok",      "bracketed", "method_ms",
@@ -148,6 +151,26 @@ void checkRanges(const Record& r)
     }
 }
 
+// The baseline of a record written before baselines had names: a partner's
+// from its inputs.mc (the canonical SPEC it was found with), an MC curve
+// point's from its parameters without n and extra; none for other records
+// and where neither is there.
+std::optional<BaselineRef> legacyBaseline(const Record& r)
+{
+    std::string spec;
+    if (r.equal_time_to && r.inputs.is_object() && r.inputs.contains("mc") && r.inputs["mc"].is_string()) {
+        spec = baselineSpec(r.inputs["mc"].get<std::string>());
+    } else if (!r.equal_time_to && r.method == "mc" && r.extra.is_object() &&
+               r.extra.value("role", json("")) == "mci_curve") {
+        Record base = r;
+        base.params.erase("n");
+        base.params.erase("extra");
+        spec = baselineSpec(canonicalSpec(base));
+    }
+    if (spec.empty()) return std::nullopt;
+    return BaselineRef{defaultBaselineLabel(spec), spec};
+}
+
 }  // namespace
 
 void to_json(json& j, const EqualTime& e)
@@ -196,6 +219,7 @@ std::string Record::key() const
                           num(height), num(rotation), res, precision, device,
                           partner ? json(*equal_time_to) : json(nullptr)});
     if (!sceneKeys.empty()) k.push_back(sceneKeys);  // diffuse keys stay as they were
+    if (partner && baseline) k.push_back(json::array({"baseline", baseline->spec}));
     return k.dump();  // objects dump with sorted keys: a canonical string
 }
 
@@ -215,6 +239,7 @@ std::array<double, 2> minimisableRange(const Record& r, const std::string& key)
 
 Verdict verdict(const Record& method, const Record& partner, const std::string& metric)
 {
+    if (partner.equalTime && !partner.equalTime->ok) return Verdict::OffTime;
     const auto m = minimisableRange(method, metric), p = minimisableRange(partner, metric);
     for (double v : {m[0], m[1], p[0], p[1]})
         if (!std::isfinite(v)) return Verdict::Undefined;
@@ -232,9 +257,125 @@ const char* verdictName(Verdict v)
         return "tie";
     case Verdict::Loss:
         return "loss";
+    case Verdict::OffTime:
+        return "off-time";
     default:
         return "n/a";
     }
+}
+
+std::string baselineSpec(const std::string& canonical)
+{
+    const size_t colon = canonical.find(':');
+    if (colon == std::string::npos) return canonical;
+    std::string out = canonical.substr(0, colon);
+    char sep = ':';
+    size_t from = colon + 1;
+    while (from <= canonical.size()) {
+        size_t to = canonical.find(',', from);
+        if (to == std::string::npos) to = canonical.size();
+        const std::string kv = canonical.substr(from, to - from);
+        if (!kv.empty() && kv.rfind("n=", 0) != 0 && kv.rfind("extra=", 0) != 0) {
+            out += sep + kv;
+            sep = ',';
+        }
+        from = to + 1;
+    }
+    return out;
+}
+
+std::string defaultBaselineLabel(const std::string& written)
+{
+    static const std::string thesis = methods::parseSpec("mc").canonical();
+    try {
+        if (methods::parseSpec(written).canonical() == thesis) return "MCI";
+    } catch (const InputError&) {
+    }
+    return written;
+}
+
+std::string canonicalSpec(const Record& r)
+{
+    std::string text = r.method;
+    char sep = ':';
+    if (r.params.is_object())
+        for (auto it = r.params.begin(); it != r.params.end(); ++it) {  // sorted keys
+            text += sep + it.key() + "=" + (it->is_string() ? it->get<std::string>() : it->dump());
+            sep = ',';
+        }
+    const std::string kind =
+        r.sceneKeys.is_object() && r.sceneKeys.contains("scene_kind") && r.sceneKeys["scene_kind"].is_string()
+        ? r.sceneKeys["scene_kind"].get<std::string>()
+        : "diffuse";
+    static std::mutex mutex;
+    static std::map<std::string, std::string> cache;  // the report and the CSV ask for every record
+    std::lock_guard<std::mutex> lock(mutex);
+    const std::string key = kind + "|" + text;
+    auto hit = cache.find(key);
+    if (hit != cache.end()) return hit->second;
+    std::string out = text;  // a SPEC this version does not parse (for this scene kind): as the record gives it
+    try {
+        out = methods::parseSpec(text, parseSceneKind(kind)).canonical();
+    } catch (const std::exception&) {
+    }
+    return cache.emplace(key, out).first->second;
+}
+
+namespace {
+
+// What pairs a partner with its method: the scene, device and scene kind.
+std::string pairKey(const Record& r)
+{
+    return json::array({r.luminaire, num(r.height), num(r.rotation), r.res, r.precision, r.device, r.sceneKeys}).dump();
+}
+
+}  // namespace
+
+std::vector<Pair> pairsOf(const std::vector<Record>& records)
+{
+    std::map<std::string, const Record*> bySpec;  // scene|SPEC as written -> the method's record
+    for (const auto& r : records)
+        if (!r.equal_time_to && r.extra.is_object() && r.extra.value("role", json("method")) == "method")
+            bySpec[pairKey(r) + "|" + r.extra.value("spec", json(r.method)).get<std::string>()] = &r;
+    std::vector<Pair> out;
+    for (const auto& r : records) {
+        if (!r.equal_time_to) continue;
+        const std::string label = r.equalTime && !r.equalTime->label.empty() ? r.equalTime->label : *r.equal_time_to;
+        auto it = bySpec.find(pairKey(r) + "|" + label);
+        out.push_back({it == bySpec.end() ? nullptr : it->second, &r});
+    }
+    return out;
+}
+
+std::string offTimeClass(const Record& partner)
+{
+    if (!partner.equalTime || partner.equalTime->ok) return "";
+    const EqualTime& e = *partner.equalTime;
+    const double n = partner.n ? double(*partner.n) : e.n;
+    bool oneTooSlow = n <= 1;  // MC at N = 1 timed slower than the tolerance allows
+    if (e.candidates.is_array())
+        for (const auto& c : e.candidates)
+            if (c.is_object() && c.value("n", 0L) == 1 && !c.contains("extra") &&
+                c.value("ratio", 0.0) > 1 + e.tolerance)
+                oneTooSlow = true;
+    if (e.ratio > 1 && oneTooSlow) return "floor";
+    if (e.ratio < 1 && n >= double(equaltime::kMaxN)) return "ceiling";
+    if (e.bracketed) return "step";
+    return "unmatched";
+}
+
+std::string offTimeReason(const Record& partner)
+{
+    const std::string c = offTimeClass(partner);
+    if (c.empty()) return "";
+    const EqualTime& e = *partner.equalTime;
+    const std::string ratio = fmt::format("t MC / t method = {:.3g}", e.ratio);
+    if (c == "floor") return fmt::format("MC's N = 1 floor exceeds the method's time ({})", ratio);
+    if (c == "ceiling") return fmt::format("MC's largest N is still faster than the method ({})", ratio);
+    if (c == "step")
+        return fmt::format("no integer N closer: N = {:g} and its neighbour bracket the method's time ({})", e.n,
+                           ratio);
+    return fmt::format("the search found no N within +-{:g} % ({})", 100 * e.tolerance, ratio);
 }
 
 size_t dedupe(std::vector<Record>& records)
@@ -271,6 +412,7 @@ void to_json(json& j, const Record& r)
     if (r.equal_time_to) j["equal_time_to"] = *r.equal_time_to;
     if (r.n) j["n"] = *r.n;
     if (r.equalTime) j["equal_time"] = *r.equalTime;
+    if (r.baseline) j["baseline"] = {{"label", r.baseline->label}, {"spec", r.baseline->spec}};
     if (r.seeds > 1) {
         j["seeds"] = r.seeds;
         json ci = json::object();
@@ -355,6 +497,16 @@ void from_json(const json& j, Record& r)
         for (const char* k : kLegacyEqualTime) r.extra.erase(k);
     }
     checkRanges(r);
+    if (j.contains("baseline")) {
+        const json b = field<json>(j, "baseline");
+        try {
+            r.baseline = BaselineRef{field<std::string>(b, "label"), baselineSpec(field<std::string>(b, "spec"))};
+        } catch (const InputError& err) {
+            throw InputError(fmt::format("key \"baseline\": {}", err.what()));
+        }
+    } else {
+        r.baseline = legacyBaseline(r);
+    }
 }
 
 void to_json(json& j, const Results& d)
@@ -630,272 +782,6 @@ size_t update(const std::string& path, const std::function<bool(Record&)>& edit)
     for (auto& r : doc.records) changed += edit(r);
     if (changed) save(path, doc);
     return changed;
-}
-
-Results mergeResults(const std::vector<std::string>& paths, MergeStats* stats)
-{
-    Results out;
-    MergeStats s;
-    json sources = json::array();
-    for (const auto& p : paths) {
-        Results d = load(p);
-        if (s.files == 0) out.context = d.context;
-        sources.push_back({{"file", p}, {"context", d.context}});
-        ++s.files;
-        s.records_in += d.records.size();
-        for (auto& r : d.records) out.records.push_back(std::move(r));
-    }
-    s.replaced = dedupe(out.records);
-    out.context["merged_from"] = sources;
-    s.records_out = out.records.size();
-    if (stats) *stats = s;
-    return out;
-}
-
-namespace {
-
-// Text a spreadsheet would run as a formula: a cell starting with = + - @
-// (or a tab or carriage return) that is not a plain number. Prefixed with
-// ' (OWASP's advice), which spreadsheets show and do not evaluate.
-bool formulaLike(const std::string& s)
-{
-    if (s.empty() || std::string("=+-@\t\r").find(s[0]) == std::string::npos) return false;
-    double v;
-    auto r = std::from_chars(s.data() + (s[0] == '+'), s.data() + s.size(), v);
-    return !(r.ec == std::errc() && r.ptr == s.data() + s.size());
-}
-
-std::string csvField(const std::string& in)
-{
-    const std::string s = formulaLike(in) ? "'" + in : in;
-    if (s.find_first_of(",\"\r\n'") == std::string::npos) return s;
-    std::string q = "\"";
-    for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return q + '"';
-}
-
-// A JSON scalar as a CSV field: null and non-finite numbers empty, strings
-// as they are, booleans True / False (what pandas.read_csv reads as bool),
-// numbers in their shortest round-trip form.
-std::string csvValue(const json& v)
-{
-    if (v.is_null()) return "";
-    if (v.is_string()) return csvField(v.get<std::string>());
-    if (v.is_boolean()) return v.get<bool>() ? "True" : "False";
-    if (v.is_number_float()) {
-        double d = v.get<double>();
-        return std::isfinite(d) ? fmt::format("{}", d) : "";
-    }
-    return csvField(v.dump());
-}
-
-// A key beside the fixed columns: a single value, or a short list of numbers
-// (the specular scene's eye) written as its JSON text; objects and longer
-// lists stay out.
-bool flatValue(const json& v)
-{
-    if (!v.is_structured()) return true;
-    if (!v.is_array() || v.size() > 4) return false;
-    for (const auto& x : v)
-        if (!x.is_number()) return false;
-    return true;
-}
-
-// The unit of a record's image values: luminance in cd/m^2 for the specular
-// scene (docs/design.md section 8), irradiance in lux otherwise.
-std::string valueUnit(const Record& r)
-{
-    const bool specular = r.sceneKeys.is_object() && r.sceneKeys.value("scene_kind", json("")) == "specular";
-    return specular ? "cd_m2" : "lux";
-}
-
-// The CSV column of a metric key in a unit: the unit appended where the
-// metric has one (ueb_lux, ueb_cd_m2), the key alone where it has none.
-std::string metricColumn(const std::string& key, const std::string& unit = "lux")
-{
-    static const std::set<std::string> withUnit = {"ueb", "leb", "mean_ref", "mean_test"};
-    return withUnit.count(key) ? key + "_" + unit : key;
-}
-
-// The columns of results.csv beyond the fixed head: what some record has;
-// params only those whose value (or absence) differs between records.
-struct CsvColumns {
-    std::vector<std::string> metrics;
-    std::set<std::string> params, extras, intervals;
-    std::vector<std::string> units;  // of the records' values: "lux" first, then "cd_m2"
-};
-
-std::set<std::string> varyingParams(const Results& doc)
-{
-    std::map<std::string, std::set<std::string>> values;
-    for (const auto& r : doc.records)
-        for (auto it = r.params.begin(); it != r.params.end(); ++it) values[it.key()];
-    for (const auto& r : doc.records)
-        for (auto& [k, seen] : values) seen.insert(r.params.contains(k) ? r.params[k].dump() : "");
-    std::set<std::string> out;
-    for (const auto& [k, seen] : values)
-        if (seen.size() > 1) out.insert(k);
-    return out;
-}
-
-CsvColumns csvColumns(const Results& doc)
-{
-    CsvColumns c;
-    const json metricKeys = metrics::Metrics{};
-    for (auto it = metricKeys.begin(); it != metricKeys.end(); ++it) c.metrics.push_back(it.key());
-    for (const char* u : {"lux", "cd_m2"})
-        if (std::any_of(doc.records.begin(), doc.records.end(), [&](const Record& r) { return valueUnit(r) == u; }))
-            c.units.push_back(u);
-    if (c.units.empty()) c.units.push_back("lux");
-    for (const auto& r : doc.records) {
-        for (const auto& kv : r.ci95) c.intervals.insert(kv.first);
-        for (const json* o : {&r.extra, &r.sceneKeys})
-            if (o->is_object())
-                for (auto it = o->begin(); it != o->end(); ++it)
-                    if (flatValue(it.value()) && it.key() != "spec" && it.key() != "role" && it.key() != "scene")
-                        c.extras.insert(it.key());
-    }
-    c.params = varyingParams(doc);
-    // a key of `extra` named like a column of its own (a version 1 record's
-    // equal_time_ok, ...) is that column's, not a second one
-    for (const char* k : kEqualTimeCsv) c.extras.erase(std::string("equal_time_") + k);
-    c.extras.erase("seeds");
-    c.extras.erase("series");
-    return c;
-}
-
-std::string roleOf(const Record& r, const json& j)
-{
-    return j.value("role", json(r.equal_time_to ? "equal_time" : "method")).get<std::string>();
-}
-
-// The matched method of an equal-time partner as the experiment wrote it:
-// the equal-time label, else (a version 1 record without one) the canonical SPEC.
-std::string partnerLabel(const Record& r)
-{
-    if (r.equalTime && !r.equalTime->label.empty()) return r.equalTime->label;
-    return r.equal_time_to.value_or("");
-}
-
-// What a plot groups by: the SPEC as written for a method, MCI=<label> for an
-// equal-time partner, "MCI curve" for the curve's points.
-std::string seriesOf(const Record& r, const json& j)
-{
-    const std::string role = roleOf(r, j);
-    if (role == "equal_time") return "MCI=" + partnerLabel(r);
-    if (role == "mci_curve") return "MCI curve";
-    return j.value("spec", json(r.method)).get<std::string>();
-}
-
-// MC's sample count: N + extra of a partner's equal-time result, else the
-// record's N_eq, else the method's n parameter; null for other methods.
-json mcSamples(const Record& r)
-{
-    if (r.method != "mc") return nullptr;
-    if (r.equalTime) return num(r.equalTime->n);
-    if (r.n) return *r.n;
-    return r.params.contains("n") ? r.params["n"] : json(nullptr);
-}
-
-std::vector<std::string> csvHeader(const CsvColumns& c)
-{
-    std::vector<std::string> cols = {"role",         "series",      "method",         "spec",        "scene",
-                                     "luminaire",    "height_m",    "rotation_rad",   "res",         "precision",
-                                     "device",       "driver",      "time_ms_median", "time_ms_min", "time_ms_max",
-                                     "time_ms_reps", "time_ms_res", "time_ms_cv"};
-    // a metric with a unit gets a column per unit of the records: a column
-    // holds one unit, the other's is empty on that row
-    for (const auto& m : c.metrics)
-        for (const auto& u : c.units)
-            if (metricColumn(m, u) != m || u == c.units.front()) cols.push_back(metricColumn(m, u));
-    cols.push_back("seeds");
-    for (const auto& m : c.intervals)
-        for (const auto& u : c.units)
-            if (metricColumn(m, u) != m || u == c.units.front())
-                cols.insert(cols.end(), {metricColumn(m, u) + "_ci95_lo", metricColumn(m, u) + "_ci95_hi"});
-    cols.push_back("n");
-    for (const char* k : kEqualTimeCsv)
-        if (std::string(k) != "n") cols.push_back(std::string("equal_time_") + k);
-    for (const auto& p : c.params) cols.push_back("param_" + p);
-    cols.push_back("params");
-    cols.insert(cols.end(), c.extras.begin(), c.extras.end());
-    return cols;
-}
-
-std::vector<std::string> csvRow(const Record& r, const CsvColumns& c)
-{
-    json j = r;  // the record's JSON form: one serialisation of every field
-    const json& t = j["time_ms"];
-    const bool partner = roleOf(r, j) == "equal_time";
-    std::vector<std::string> f = {csvValue(roleOf(r, j)),
-                                  csvValue(seriesOf(r, j)),
-                                  csvValue(j["method"]),
-                                  csvValue(j.value("spec", json(nullptr))),
-                                  csvValue(j.value("scene", json(nullptr))),
-                                  csvValue(j["luminaire"]),
-                                  csvValue(j["height"]),
-                                  csvValue(j["rotation"]),
-                                  csvValue(j["res"]),
-                                  csvValue(j["precision"]),
-                                  csvValue(j["device"]),
-                                  csvValue(j["driver"])};
-    for (const char* k : {"median", "min", "max", "reps", "res", "cv"}) f.push_back(csvValue(t[k]));
-    const std::string unit = valueUnit(r);
-    for (const auto& m : c.metrics)
-        for (const auto& u : c.units)
-            if (metricColumn(m, u) != m || u == c.units.front())
-                f.push_back(u == unit || metricColumn(m, u) == m ? csvValue(j.value(m, json(nullptr))) : "");
-    f.push_back(csvValue(r.seeds));
-    for (const auto& m : c.intervals)
-        for (const auto& u : c.units) {
-            if (metricColumn(m, u) == m && u != c.units.front()) continue;
-            auto it = r.ci95.find(m);
-            const bool here = it != r.ci95.end() && (u == unit || metricColumn(m, u) == m);
-            f.push_back(here ? csvValue(num(it->second[0])) : "");
-            f.push_back(here ? csvValue(num(it->second[1])) : "");
-        }
-    f.push_back(csvValue(mcSamples(r)));
-    for (const char* k : kEqualTimeCsv) {
-        if (std::string(k) == "n") continue;
-        if (std::string(k) == "label")
-            f.push_back(partner ? csvField(partnerLabel(r)) : "");
-        else
-            f.push_back(r.equalTime ? csvValue(j["equal_time"][k]) : "");
-    }
-    for (const auto& p : c.params)
-        f.push_back(!r.params.contains(p)             ? ""
-                        : r.params[p].is_structured() ? csvField(r.params[p].dump())
-                                                      : csvValue(r.params[p]));
-    f.push_back(csvField(r.params.is_object() ? r.params.dump() : json::object().dump()));
-    for (const auto& x : c.extras) f.push_back(csvValue(j.contains(x) && flatValue(j[x]) ? j[x] : json(nullptr)));
-    return f;
-}
-
-}  // namespace
-
-std::string toCsv(const Results& doc)
-{
-    const CsvColumns c = csvColumns(doc);
-    const std::vector<std::string> cols = csvHeader(c);
-    std::string out;
-    for (size_t i = 0; i < cols.size(); ++i) out += (i ? "," : "") + csvField(cols[i]);
-    out += "\n";
-    for (const auto& r : doc.records) {
-        const std::vector<std::string> f = csvRow(r, c);
-        for (size_t i = 0; i < f.size(); ++i) out += (i ? "," : "") + f[i];
-        out += "\n";
-    }
-    return out;
-}
-
-std::string csvPathFor(const std::string& resultsJsonPath)
-{
-    return std::filesystem::path(resultsJsonPath).replace_extension(".csv").string();
-}
-
-void saveCsv(const std::string& resultsJsonPath, const Results& doc)
-{
-    util::writeFileAtomic(csvPathFor(resultsJsonPath), toCsv(doc));
 }
 
 }  // namespace lb::results

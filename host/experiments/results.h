@@ -10,7 +10,8 @@
 //                 "nonfinite": 0, "pixels": ..., "mean_ref": ..., "mean_test": ...,
 //                 "grad_nmse": ..., "grad_pairs": ..., "flip": ... (null: FLIP not available),
 //                 "seeds": 8, "ci95": {"nmse": [lo, hi], ...} (seed-dependent methods),
-//                 "equal_time_to": "cubature:...", "n": 40, "equal_time": {...}}, ...],
+//                 "equal_time_to": "cubature:...", "n": 40, "equal_time": {...},
+//                 "baseline": {"label": "strong MC", "spec": "mc:domain=solid,..."}}, ...],
 //    "schema_version": 2}
 //
 // One record is one cell of an experiment: a method with its parameters at
@@ -70,6 +71,22 @@ void from_json(const nlohmann::json& j, EqualTime& e);
 // fields lay in the record as equal_time_ratio, equal_time_ok, ...).
 constexpr int kResultsSchemaVersion = 2;
 
+// The Monte Carlo baseline an equal-time partner or an MC curve point belongs
+// to (an experiment's "mc": one SPEC or a list of labelled ones): its label as
+// the report and the CSV name it, and its canonical SPEC (every parameter,
+// without n and extra). On a record as "baseline": {"label", "spec"}.
+struct BaselineRef {
+    std::string label, spec;
+    bool operator==(const BaselineRef& o) const { return label == o.label && spec == o.spec; }
+};
+// A baseline's SPEC as records carry it: a canonical mc SPEC without its n
+// and extra ("mc:a=1,extra=0,n=24,z=2" -> "mc:a=1,z=2"), which the runner
+// chooses.
+std::string baselineSpec(const std::string& canonical);
+// The label a baseline given as a bare SPEC gets: "MCI" for the thesis' MC
+// (mc's defaults), else the SPEC as written.
+std::string defaultBaselineLabel(const std::string& written);
+
 struct Record {
     std::string method;  // docs/design.md section 4 name, e.g. "mc"
     nlohmann::json params = nlohmann::json::object();  // method parameters, e.g. {"n": 24}
@@ -83,6 +100,10 @@ struct Record {
     std::optional<std::string> equal_time_to;  // MC at equal time: the method spec it matches
     std::optional<int64_t> n;  // sample count where it is a result (N_eq), not a parameter
     std::optional<EqualTime> equalTime;  // with equal_time_to: how the partner was found
+    // Partners and MC curve points: their baseline. Records of files written
+    // before baselines had names get it on load (from the partner's
+    // inputs.mc, or the curve point's parameters without n).
+    std::optional<BaselineRef> baseline;
     // Seed-dependent methods (Experiment::seeds): `error` holds the means over
     // this many draws and ci95 their 95 % intervals by metric key
     // (metrics::overSeeds); 1 and empty for one draw.
@@ -102,8 +123,9 @@ struct Record {
 
     // The cell key: method, params, luminaire, height, rotation, res,
     // precision, device and equal_time_to; for an equal-time partner only
-    // the scene, device and equal_time_to (its N is a result, not part of
-    // the cell), so that a scene has one partner per method. Anything else
+    // the scene, device, equal_time_to and its baseline's SPEC (its N is a
+    // result, not part of the cell), so that a scene has one partner per
+    // method and baseline. Anything else
     // that tells two cells apart must go into params. `inputs` is not part
     // of it: a record whose inputs changed is the same cell, out of date.
     std::string key() const;
@@ -114,10 +136,21 @@ struct Record {
 // where it has one (seeds > 1), else its value: the method wins when its
 // upper end lies below the partner's lower end, loses when its lower end
 // lies above the partner's upper end, and ties when they overlap. Undefined
-// when either value is not finite.
-enum class Verdict { Win, Tie, Loss, Undefined };
+// when either value is not finite. A pair whose paired times differ by more
+// than the tolerance (equal_time.ok false) is no verdict: OffTime
+// (docs/design.md section 6), whatever its errors.
+enum class Verdict { Win, Tie, Loss, OffTime, Undefined };
 Verdict verdict(const Record& method, const Record& partner, const std::string& metric = "nmse");
-const char* verdictName(Verdict v);  // "win", "tie", "loss", "n/a"
+const char* verdictName(Verdict v);  // "win", "tie", "loss", "off-time", "n/a"
+
+// Why a partner is off-time, "" where it is at equal time: MC at N = 1
+// already slower than the method (its floor: N_eq = 1, or N = 1 among the
+// candidates timed, slower than the tolerance allows), MC at the largest N still
+// faster, no integer N closer (N and N + 1 bracket the method's time), or
+// the search found none within the tolerance; each with the paired ratio.
+std::string offTimeReason(const Record& partner);
+// Its short class: "floor", "ceiling", "step", "unmatched" ("" at equal time).
+std::string offTimeClass(const Record& partner);
 
 // Keeps one record per cell key: the last one (in file order), at the
 // position of the first. Returns how many were dropped. The rule of
@@ -198,46 +231,82 @@ size_t update(const std::string& path, const std::function<bool(Record&)>& edit)
 
 struct MergeStats {
     size_t files = 0, records_in = 0, records_out = 0, replaced = 0;
+    // With MergeOptions::force: each difference between the inputs that a
+    // merge without it refuses, and each record replaced by one computed
+    // from other inputs, commit or experiment, by name.
+    std::vector<std::string> forced;
+};
+
+struct MergeOptions {
+    bool force = false;  // merge despite differing experiments, commits or cell inputs (said in MergeStats::forced)
 };
 
 // Merges results files (e.g. the shards of one experiment) into one document.
 // Records are deduplicated by cell key (dedupe): of several with the same key
 // the one from the later file (in the order given) wins, also for equal-time
-// partners (one per scene, device and matched method). The merged context is the
-// first file's, with "merged_from": [{"file": ..., "context": ...}, ...] for
-// every input. Throws lb::InputError for an unreadable input.
-Results mergeResults(const std::vector<std::string>& paths, MergeStats* stats = nullptr);
+// partners (one per scene, device, matched method and baseline). Inputs whose
+// contexts name different experiments or commits, and a record replacing
+// one of the same cell with other `inputs`, are refused (InputError naming
+// both files and what differs) unless options.force. The merged context is
+// the first file's, with "merged_from": [{"file": ..., "context": ...}, ...]
+// and "commits" (every input's commit, in order) for every input. Throws
+// lb::InputError for an unreadable input.
+Results mergeResults(const std::vector<std::string>& paths, MergeStats* stats = nullptr,
+                     const MergeOptions& options = {});
+
+// An equal-time pair: a partner and the record of the method it was timed
+// against (same scene, device and scene kind; the method's `spec` as written
+// equal to the partner's equal_time label), null where that record is missing.
+struct Pair {
+    const Record* method = nullptr;
+    const Record* partner = nullptr;
+};
+std::vector<Pair> pairsOf(const std::vector<Record>& records);
+
+// A record's SPEC with every parameter (methods::MethodSpec::canonical of
+// its method and params; for a partner MC's SPEC at its N and extra).
+std::string canonicalSpec(const Record& r);
 
 // The records as CSV (RFC 4180 with \n line ends: a header line, then one
-// flat row per record;
-// fields with a comma, quote or line break are quoted, quotes doubled;
-// undefined numbers are empty fields; booleans True / False). Columns, in
-// this order:
-//   role, series (what a plot groups by: the SPEC as written for a method,
-//   MCI=<equal-time label> for a partner, "MCI curve" for the curve), method,
-//   spec, scene, luminaire, height_m, rotation_rad, res, precision, device,
-//   driver, time_ms_median, time_ms_min, time_ms_max, time_ms_reps,
-//   time_ms_res, time_ms_cv, the metrics of metrics::to_json (nmse, ...; ueb,
-//   leb, mean_ref, mean_test with the suffix _lux; means over the seeds where
-//   seeds > 1), seeds, <metric>_ci95_lo and _hi for every metric some record
-//   has an interval of, n (MC's sample count: N + extra for a partner, empty
-//   for other methods), equal_time_<key> for the keys of EqualTime but n,
-//   candidates and fit (equal_time_label the matched method as the
-//   experiment wrote it), param_<name> for each method parameter whose value
-//   (or absence) differs between records, params (every record's parameters
-//   as a JSON object), then every other key a record carries whose value is
-//   a number, string, boolean or null (build_s, the scene kind's scene_kind,
-//   alpha, albedo, ..., and keys of later versions), or a list of at most 4
-//   numbers (eye, as JSON text), sorted by name.
-// Other objects and arrays (inputs, stats, equal_time candidates) are left
-// out. docs/experiments.md ("Results as a table") documents them.
+// flat row per record; fields with a comma, quote or line break are quoted,
+// quotes doubled; text a spreadsheet would run as a formula prefixed with ';
+// undefined numbers are empty fields; booleans True / False). At most 45
+// columns (kMaxCsvColumns), in this order:
+//   role ("method", "mci_curve", "equal_time"), series (what a plot groups
+//   by: the SPEC as written for a method, <baseline>=<method> for a partner,
+//   "<baseline> curve" for an MC curve point), method, spec (canonicalSpec:
+//   every parameter), baseline and baseline_spec (the partner's or curve
+//   point's baseline: label and canonical SPEC), equal_time_label (the
+//   partner's method as the experiment wrote it), verdict and verdict_flip
+//   (a partner's verdict in NMSE and in FLIP: win, tie, loss, off-time, n/a),
+//   off_time (offTimeReason), scene, luminaire, luminaire_name, height_m,
+//   rotation_rad, res, precision, device, driver, time_ms_median, _min,
+//   _max, _reps, _res, _cv, the metrics nmse, nrmse, relmse, ueb, leb,
+//   nonfinite, mean_ref, mean_test, grad_nmse, flip (means over the seeds
+//   where seeds > 1; ueb, leb, mean_ref and mean_test with the unit of the
+//   values as suffix, _lux or _cd_m2, where every record has the one unit,
+//   else without suffix and a column `unit`), seeds, n (MC's sample count: N
+//   + extra for a partner; empty for other methods), equal_time_ratio (the
+//   paired rounds' median of t MC / t method), then the scene-kind keys
+//   some record has (scene_kind, alpha, eye as JSON text, albedo, shape,
+//   size as JSON text).
+// Every other field stays in results.json; the 95 % intervals are in
+// toLongCsv. docs/experiments.md ("Results as a table") documents them.
 std::string toCsv(const Results& doc);
+constexpr size_t kMaxCsvColumns = 45;
+
+// The metrics in long form, one row per record and metric (results_long.csv):
+// record (the row of the record in toCsv, from 0), metric (nmse, nrmse,
+// relmse, ueb, leb, grad_nmse, flip), mean (the value; the mean over the
+// seeds where seeds > 1), lo and hi (its 95 % interval; empty for one draw).
+std::string toLongCsv(const Results& doc);
 
 // DIR/results.csv beside DIR/results.json: the path with its extension
 // replaced by .csv.
 std::string csvPathFor(const std::string& resultsJsonPath);
 
-// Writes toCsv(doc) atomically to csvPathFor(resultsJsonPath).
+// Writes toCsv(doc) atomically to csvPathFor(resultsJsonPath), and
+// toLongCsv(doc) beside it as results_long.csv.
 void saveCsv(const std::string& resultsJsonPath, const Results& doc);
 
 }  // namespace lb::results

@@ -34,11 +34,16 @@ namespace lb::experiments {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-std::string cellImageName(const std::string& role, const std::string& spec)
+std::string cellImageName(const std::string& role, const std::string& spec, const std::string& baseline)
 {
-    std::string out = role == "equal_time" ? "mci_eq_" : "";
-    for (char c : spec) out += (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-') ? c : '_';
-    return util::shortName(out);  // a long SPEC (a preset's path) still names a file
+    auto safe = [](const std::string& s) {
+        std::string out;
+        for (char c : s) out += (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-') ? c : '_';
+        return out;
+    };
+    // a long SPEC (a preset's path) still names a file
+    if (role != "equal_time") return util::shortName(safe(spec));
+    return util::shortName("mci_eq_" + safe(spec) + (baseline.empty() || baseline == "MCI" ? "" : "_vs_" + safe(baseline)));
 }
 
 namespace {
@@ -57,21 +62,25 @@ struct Cell {
     std::string role;  // "method" | "mci_curve" | "equal_time"
     std::string spec;  // the SPEC rendered ("method", "mci_curve") or matched ("equal_time")
     methods::MethodSpec parsed;
+    const Baseline* baseline = nullptr;  // "mci_curve" and "equal_time": whose
 };
+
+results::BaselineRef refOf(const Baseline& b) { return {b.label, results::baselineSpec(b.canonical)}; }
 
 std::vector<Cell> cellsOf(const Experiment& e)
 {
     std::vector<Cell> cells;
     std::set<std::string> seen;  // canonical SPECs: "mc:n=8" and the curve's N = 8 are one cell
-    auto add = [&](const std::string& role, const std::string& spec) {
+    auto add = [&](const std::string& role, const std::string& spec, const Baseline* b) {
         methods::MethodSpec p = methods::parseSpec(spec, e.kind());
         if (!seen.insert(p.canonical()).second) return;
-        cells.push_back({role, spec, p});
+        cells.push_back({role, spec, p, b});
     };
-    for (const auto& m : e.methods) add("method", m);
-    std::string mcBase = e.mc.find(':') == std::string::npos ? e.mc + ":" : e.mc + ",";
-    for (long n : e.mciCurve) add("mci_curve", mcBase + "n=" + std::to_string(n));
-    for (const auto& m : e.equalTime) cells.push_back({"equal_time", m, methods::parseSpec(m, e.kind())});
+    for (const auto& m : e.methods) add("method", m, nullptr);
+    for (const auto& b : e.baselines)
+        for (long n : e.mciCurve) add("mci_curve", b.at(n), &b);
+    for (const auto& b : e.baselines)
+        for (const auto& m : e.equalTime) cells.push_back({"equal_time", m, methods::parseSpec(m, e.kind()), &b});
     return cells;
 }
 
@@ -119,14 +128,6 @@ results::Record baseRecord(const SceneId& sid, ocl::Runtime& rt)
     r.extra["scene"] = sid.label();
     r.sceneKeys = SceneKindKeys::recordKeys(sid.scene());
     return r;
-}
-
-// "mc:n=N" or "mc:n=N,extra=F" (the equal-time MCI's sample count).
-std::string mcLabel(const methods::MethodSpec& s)
-{
-    std::string label = "mc:n=" + std::to_string(s.integer("n"));
-    if (s.has("extra") && s.num("extra") > 0) label += ",extra=" + s.values.at("extra");
-    return label;
 }
 
 struct SceneRun {
@@ -177,7 +178,11 @@ struct SceneRun {
             r.seeds = s.seeds;
             r.ci95 = s.ci95;
         }
-        r.extra["spec"] = cell.role == "equal_time" ? mcLabel(spec) : cell.spec;
+        // a partner: its baseline's SPEC at N as written ("mc:domain=solid,sequence=sobol,n=4")
+        r.extra["spec"] = cell.role == "equal_time"
+            ? cell.baseline->at(spec.integer("n"), spec.has("extra") ? spec.num("extra") : 0)
+            : cell.spec;
+        if (cell.baseline) r.baseline = refOf(*cell.baseline);
         r.extra["role"] = cell.role;
         r.extra["build_s"] = rr.buildSeconds;
         if (!rr.stats.empty()) r.extra["stats"] = rr.stats;
@@ -233,12 +238,10 @@ std::string whyNoPictures(const Image& ref)
     return "";
 }
 
-// MC's SPEC of the experiment at N samples (N + extra: mc's fractional count).
-methods::MethodSpec mcAt(const Experiment& e, long n, double extra = 0)
+// A baseline's SPEC at N samples (N + extra: mc's fractional count).
+methods::MethodSpec mcAt(const Experiment& e, const Baseline& b, long n, double extra = 0)
 {
-    std::string s = e.mc + (e.mc.find(':') == std::string::npos ? ":" : ",") + "n=" + std::to_string(n);
-    if (extra > 0) s += fmt::format(",extra={:.3f}", extra);
-    return methods::parseSpec(s, e.kind());
+    return methods::parseSpec(b.at(n, extra), e.kind());
 }
 
 // The equal-time MCI partner of cell c, whose method took tM ms in its own
@@ -249,9 +252,10 @@ methods::MethodSpec mcAt(const Experiment& e, long n, double extra = 0)
 results::Record equalTimePartner(const SceneRun& sr, const Cell& c, double tM, equaltime::Curve pts)
 {
     const Experiment& e = sr.e;
+    const Baseline& b = *c.baseline;
     if (pts.size() < 2) {
         pts.clear();
-        for (long n : e.equalTimeFit) pts.emplace_back(n, sr.render(mcAt(e, n)).timing.median_ms);
+        for (long n : e.equalTimeFit) pts.emplace_back(n, sr.render(mcAt(e, b, n)).timing.median_ms);
     }
     Scene ts = sr.scene;  // the scene at the experiment's time_res
     if (e.timeRes > 0) ts.res = e.timeRes;
@@ -259,21 +263,21 @@ results::Record equalTimePartner(const SceneRun& sr, const Cell& c, double tM, e
     equaltime::Sides sides;
     sides.method = [method] { return method->launchMs(); };  // whole frames: a multi-pass method's passes count
     sides.mc = [&](long n, double extra) -> equaltime::Launch {
-        auto p = std::make_shared<methods::Prepared>(sr.rt, sr.table, ts, mcAt(e, n, extra), sr.prec);
+        auto p = std::make_shared<methods::Prepared>(sr.rt, sr.table, ts, mcAt(e, b, n, extra), sr.prec);
         return [p] { return p->launchMs(); };
     };
-    sides.fractional = mcAt(e, 1).has("extra");
+    sides.fractional = mcAt(e, b, 1).has("extra");
     equaltime::Options opt;
     opt.tolerance = e.equalTimeTolerance;
     opt.rounds = e.equalTimeRounds;
     const equaltime::Result q = equaltime::search(sides, opt, pts, tM);
-    auto s1 = mcAt(e, q.n, q.extra);
+    auto s1 = mcAt(e, b, q.n, q.extra);
     methods::RenderOptions imageOnly;
     imageOnly.reps = 1;
     auto r1 = methods::render(sr.rt, sr.table, sr.scene, s1, sr.prec, imageOnly);
     r1.timing = q.partner;
     r1.timeRes = ts.res;
-    results::Record r = sr.record(s1, r1, c, cellImageName(c.role, c.spec));
+    results::Record r = sr.record(s1, r1, c, cellImageName(c.role, c.spec, b.label));
     r.equal_time_to = c.parsed.canonical();
     r.n = q.n;
     results::EqualTime et;
@@ -333,7 +337,7 @@ public:
         if (c.role == "equal_time") {
             in["kernel"] = kernel("mc");
             in["target_kernel"] = kernel(c.parsed.name);
-            in["mc"] = methods::parseSpec(e_.mc, e_.kind()).canonical();
+            in["mc"] = c.baseline->canonical;
             in["equal_time_tolerance"] = e_.equalTimeTolerance;
             in["equal_time_rounds"] = e_.equalTimeRounds;  // the pairing's rounds decide its N
             in["equal_time_fit"] = e_.equalTimeFit;
@@ -343,8 +347,7 @@ public:
         }
         // The draws over seeds (Experiment::seeds) of a seed-dependent cell:
         // MC's for a partner. Absent at one draw, as before the key existed.
-        const bool seeded =
-            c.role == "equal_time" ? methods::parseSpec(e_.mc, e_.kind()).has("seed") : c.parsed.has("seed");
+        const bool seeded = c.role == "equal_time" ? mcAt(e_, *c.baseline, 1).has("seed") : c.parsed.has("seed");
         if (seeded && e_.seeds > 1) in["seeds"] = e_.seeds;
         // A presets file is an input too: the SPEC its entry for this
         // luminaire resolves to (an edited entry is a different input; the
@@ -382,6 +385,7 @@ std::string cellKey(const SceneId& sid, ocl::Runtime& rt, const Cell& c)
     if (c.role == "equal_time") {
         r.method = "mc";
         r.equal_time_to = c.parsed.canonical();
+        r.baseline = refOf(*c.baseline);
     } else {
         r.method = c.parsed.name;
         r.params = c.parsed.paramsJson();
@@ -418,23 +422,25 @@ ScenePlan planScene(const SceneId& sid, const std::vector<Cell>& cells, const Do
 }
 
 // The medians of a scene's cells (this run or an earlier one), by canonical
-// SPEC, and the points of the experiment's MC pattern among them: the t(N)
-// curve the equal-time partners aim on.
+// SPEC, and the points of each baseline among them: the t(N) curve its
+// equal-time partners aim on.
 struct SceneTimes {
     const Experiment& e;
     std::map<std::string, double> times;
-    std::vector<std::pair<long, double>> curve;
+    std::map<const Baseline*, equaltime::Curve> curves;
 
     void remember(const methods::MethodSpec& s, double ms)
     {
         times[s.canonical()] = ms;
-        if (s.name == "mc" && s.given.count("n")) {
-            // Only curve points of the experiment's MC pattern enter the fit.
-            methods::MethodSpec base = methods::parseSpec(e.mc, e.kind());
-            json pa = s.paramsJson(), pb = base.paramsJson();
-            pa.erase("n");
+        if (s.name != "mc" || !s.given.count("n") || (s.has("extra") && s.num("extra") > 0)) return;
+        json pa = s.paramsJson();
+        pa.erase("n");
+        pa.erase("extra");
+        for (const auto& b : e.baselines) {  // a baseline's points only enter its own fit
+            json pb = mcAt(e, b, 1).paramsJson();
             pb.erase("n");
-            if (pa == pb) curve.emplace_back(s.integer("n"), ms);
+            pb.erase("extra");
+            if (pa == pb) curves[&b].emplace_back(s.integer("n"), ms);
         }
     }
 };
@@ -491,7 +497,16 @@ private:
                                      {"reps", e_.reps},
                                      {"time_res", e_.timeRes},
                                      {"equal_time_tolerance", e_.equalTimeTolerance},
+                                     {"baselines", baselinesJson()},
                                      {"shard", fmt::format("{}/{}", opt_.shardK, opt_.shardN)}});
+    }
+
+    json baselinesJson() const
+    {
+        json out = json::array();
+        for (const auto& b : e_.baselines)
+            out.push_back({{"label", b.label}, {"spec", results::baselineSpec(b.canonical)}});
+        return out;
     }
 
     // Every shard's cells count: shards may share one directory.
@@ -603,18 +618,17 @@ private:
         if (c.role != "equal_time") {
             auto rr = sr.render(c.parsed);
             st.remember(c.parsed, rr.timing.median_ms);
-            return sr.record(c.parsed, rr, c, cellImageName(c.role, c.spec));
+            return sr.record(c.parsed, rr, c, cellImageName(c.role, c.spec, ""));
         }
         const std::string target = c.parsed.canonical();
         if (!st.times.count(target))
             throw Error(fmt::format("equal time: no time of '{}' at scene {}", c.spec, sr.sid.label()));
-        results::Record r = equalTimePartner(sr, c, st.times[target], st.curve);
+        results::Record r = equalTimePartner(sr, c, st.times[target], st.curves[c.baseline]);
         if (!r.equalTime->ok) {
             ++sum_.equalTimeOff;
-            std::cerr << fmt::format("lumibench: warning: {}: MCI at equal time to {}: N = {}, {:.4g} ms vs "
-                                     "{:.4g} ms (ratio {:.3f}, outside +-{:.0f}%)\n",
-                                     sr.sid.label(), c.spec, *r.n, r.equalTime->partner_ms, r.equalTime->method_ms,
-                                     r.equalTime->ratio, 100 * e_.equalTimeTolerance);
+            if (opt_.progress)
+                std::cerr << fmt::format("[{}] {}: {} at the time of {} is off-time (no verdict): {}\n", e_.name,
+                                         sr.sid.label(), c.baseline->label, c.spec, results::offTimeReason(r));
         }
         return r;
     }

@@ -25,8 +25,10 @@
 // every method, the MCI curve and the equal-time partners, compared in memory.
 //
 // Each record carries, besides the results.h keys, `spec` (the SPEC as the
-// experiment wrote it, or "mc:n=<N>" for the curve), `role` ("method",
+// experiment wrote it; for the curve and a partner the baseline's SPEC with
+// n=<N> added), `baseline` (curve points and partners), `role` ("method",
 // "mci_curve" or "equal_time"), `scene` (the scene label) and `build_s`.
+// Every equal-time method gets one partner per baseline of the experiment.
 // Equal-time partners are found by equaltime::search (equaltime.h) and carry
 // its result as results::EqualTime; methods with a seed are rendered with the
 // experiment's `seeds` (their metrics the mean, with a 95 % interval).
@@ -63,8 +65,9 @@ RunSummary run(const Experiment& e, const RunOptions& opt);
 
 // The file name stem of a cell's saved pictures in DIR/images/<scene>/:
 // the SPEC as the experiment wrote it with every character but letters,
-// digits, '.' and '-' replaced by '_'; "mci_eq_" + that of the matched
-// SPEC for an equal-time partner (role "equal_time").
-std::string cellImageName(const std::string& role, const std::string& spec);
+// digits, '.' and '-' replaced by '_'; for an equal-time partner (role
+// "equal_time") "mci_eq_" + that of the matched SPEC, + "_vs_" + that of its
+// baseline's label unless the label is "MCI" (or empty).
+std::string cellImageName(const std::string& role, const std::string& spec, const std::string& baseline);
 
 }  // namespace lb::experiments

@@ -14,7 +14,7 @@
 
 namespace lb::methods {
 
-// Default of area_q (docs/robust.md): the area rule alone from half a light
+// Default of area_q (docs/studies/robust.md): the area rule alone from half a light
 // size on, where the 3 x 3 rule's derived bound 2/700 (a/rho)^6 is 18 % at
 // worst and falls to 0.3 % at one light size; the cubature alone within a
 // quarter. Measured best of 0.1, 0.5 and 1 on the published luminaires.

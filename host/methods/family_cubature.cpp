@@ -13,7 +13,7 @@
 
 namespace lb::methods {
 
-// The defaults `robust` changes (docs/robust.md).
+// The defaults `robust` changes (docs/studies/robust.md).
 const std::map<std::string, std::string> kRobustDefaults = {{"area", "gauss3"}};
 // `tuned`: robust with what `lumibench tune experiments/tune-all-cv-geomean-res32.json` recommends (docs/tuning.md).
 const std::map<std::string, std::string> kTunedDefaults = {
@@ -170,13 +170,13 @@ Plan robustPlan(const Scene& scene, const photometry::Table& table, const ocl::D
 
 // robust: the cubature where it is best (near the light, in front of it) and
 // the area form where it is not (far field, the light's own plane): the
-// recommended variant of docs/robust.md. Every cubature parameter applies;
+// recommended variant of docs/studies/robust.md. Every cubature parameter applies;
 // only the defaults differ. With it `tuned`, robust's defaults changed again.
 void registerRobust(Registry& r)
 {
     Family f = cubatureFamily();
     f.name = "robust";
-    f.summary = "cubature blended with the area-form Gauss rule away from the light (docs/robust.md)";
+    f.summary = "cubature blended with the area-form Gauss rule away from the light (docs/studies/robust.md)";
     const std::map<std::string, std::string> defaults = kRobustDefaults;
     for (auto& p : f.params)
         if (auto it = defaults.find(p.name); it != defaults.end()) p.def = it->second;

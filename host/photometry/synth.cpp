@@ -87,7 +87,7 @@ const std::map<std::string, Kind>& kinds()
               double cc = std::cos(c * kDeg);
               return 0.35 * cosPlus(g) * (1 - 0.3 * (1 - cc * cc)) + bump(g, 140, 12) * (1 + 0.2 * cc * cc);
           }}},
-        // Stress cases (docs/robust.md): emission in the light's own plane, a
+        // Stress cases (docs/studies/robust.md): emission in the light's own plane, a
         // beam narrower than a degree, no mirror symmetry at all.
         {"grazing",
          {"stress: wall washer, a fan of light in the light's plane (peak at gamma 90, sigma 10 deg) over a "

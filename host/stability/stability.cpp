@@ -107,7 +107,7 @@ void addLuminaireCases(std::vector<Case>& v)
     // Extremely narrow spot: sigma 0.5 degrees.
     add(v, "pencil", "extremely narrow spot (Gaussian sigma 0.5 deg, measured to 10 deg)", 1, kPi, 1, 1, "stab:pencil",
         Expect::Finite, true);
-    // The suite's stress luminaires (luminaires/, docs/robust.md): a fan of
+    // The suite's stress luminaires (luminaires/, docs/studies/robust.md): a fan of
     // light in the light's own plane seen from that plane, a sub-degree
     // beam, a quadrant-only distribution tilted, a direct/indirect light
     // tilted so that its up-light grazes the receiver.

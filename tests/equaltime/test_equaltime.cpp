@@ -108,6 +108,7 @@ TEST(EqualTime, AMethodFasterThanOneSampleGetsNOne)
     EXPECT_NEAR(r.ratio, 2.2, 1e-9);
     EXPECT_FALSE(r.ok);
     EXPECT_TRUE(r.bracketed);
+    EXPECT_EQ(m.mcBuilds, 1);  // N = 1 too slow: the search stops there (no N is faster), no N = 2 timed
 }
 
 TEST(EqualTime, SolveAndInterpolateOnTheMeasuredCurve)

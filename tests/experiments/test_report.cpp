@@ -39,6 +39,14 @@ int sh(const std::string& cmd)
     return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
 }
 
+// The Python the README sets up (scripts/install-deps.sh: .venv of the
+// source tree), else /usr/bin/python3.
+std::string venvPython()
+{
+    const std::string venv = test::sourceDir() + "/.venv/bin/python";
+    return access(venv.c_str(), X_OK) == 0 ? venv : "/usr/bin/python3";
+}
+
 struct Report : ::testing::Test {
     fs::path dir;
     void SetUp() override
@@ -91,9 +99,9 @@ Image ramp(int n, double scale)
 }
 
 // results.csv: one tidy row per record: unit-suffixed columns, a series to
-// group by, one n, the partner's matched method as its short label, only the
-// parameters that vary as columns (all in `params`), booleans that pandas
-// reads as bool; odd strings quoted; pandas reads it back.
+// group by, one n, the partner's matched method as its short label and its
+// verdict, the parameters in one canonical `spec` column (no param_*),
+// booleans that pandas reads as bool; odd strings quoted; pandas reads it back.
 TEST_F(Report, CsvHasOneFlatRowPerRecordAndLoadsWithPandas)
 {
     Image ref = ramp(8, 1), a = ramp(8, 1.25);
@@ -101,7 +109,7 @@ TEST_F(Report, CsvHasOneFlatRowPerRecordAndLoadsWithPandas)
     doc.records = {rec("cubature", "method", 1.5, ref, a), rec("mc:n=4", "equal_time", 1.5, ref, ramp(8, 0.5)),
                    rec("mc:n=4", "mci_curve", 1.5, ref, ramp(8, 0.75))};
     doc.records[0].extra["stats"] = {{"form", "straight-line"}};  // objects stay out of the table
-    doc.records[1].seeds = 8;  // a mean over seeds: its interval as two columns
+    doc.records[1].seeds = 8;  // a mean over seeds: its interval goes to results_long.csv
     doc.records[1].ci95["nmse"] = {0.25, 0.75};
     doc.records[1].error.flip = NAN;  // undefined: an empty field
     // the canonical SPEC stays in the JSON; the CSV names the method by its label
@@ -110,58 +118,32 @@ TEST_F(Report, CsvHasOneFlatRowPerRecordAndLoadsWithPandas)
     doc.records[0].sceneKeys = {{"scene_kind", "specular"}, {"alpha", 0.25}, {"eye", {0, 4, 2}}};  // columns too
     const std::string csv = results::toCsv(doc);
     const std::string head = csv.substr(0, csv.find('\n'));
-    EXPECT_EQ(head.rfind("role,series,method,spec,scene,luminaire,height_m,rotation_rad,res,precision,device,driver,"
-                         "time_ms_median,time_ms_min,time_ms_max,time_ms_reps,time_ms_res,",
+    EXPECT_EQ(head.rfind("role,series,method,spec,baseline,baseline_spec,equal_time_label,verdict,verdict_flip,"
+                         "off_time,scene,luminaire,luminaire_name,height_m,rotation_rad,res,precision,device,driver,"
+                         "time_ms_median,time_ms_min,time_ms_max,time_ms_reps,time_ms_res,time_ms_cv,",
                          0),
               0u)
         << head;
-    for (const char* c : {",nmse,",
-                          ",flip,",
-                          ",grad_nmse,",
-                          ",ueb_lux,",
-                          ",leb_lux,",
-                          ",mean_ref_lux,",
-                          ",mean_test_lux,",
-                          ",n,",
-                          ",param_n,",
-                          ",param_pattern,",
-                          ",param_triangulation,",
-                          ",params,",
-                          ",equal_time_ratio",
-                          ",equal_time_ok",
-                          ",equal_time_label,",
-                          ",scene_kind",
-                          ",alpha,",
-                          ",eye,",
-                          ",seeds,",
-                          ",nmse_ci95_lo,nmse_ci95_hi,",
-                          ",equal_time_partner_ms,",
-                          ",time_ms_cv,"})
-        EXPECT_NE(head.find(c), std::string::npos) << c << " in " << head;
-    for (const char* c : {"stats", ",ueb,", ",height,", ",equal_time_to,", ",equal_time_n,", "series,series"})
+    for (const char* c : {",nmse,", ",flip,", ",grad_nmse,", ",ueb,", ",leb,", ",mean_ref,", ",mean_test,", ",unit,",
+                          ",n,", ",equal_time_ratio,", ",scene_kind,", ",alpha,", ",eye", ",seeds,", ",time_ms_cv,"})
+        EXPECT_NE((head + ",").find(c), std::string::npos) << c << " in " << head;
+    for (const char* c : {"stats", "param", ",height,", ",equal_time_to,", "ci95", "series,series"})
         EXPECT_EQ(head.find(c), std::string::npos) << c << " in " << head;
-    EXPECT_EQ(head.find("equal_time_ok"), head.rfind("equal_time_ok")) << "one column per field: " << head;
-    EXPECT_EQ(csv.find("radiance=cubature"), std::string::npos) << "no canonical SPEC: " << csv;
+    EXPECT_EQ(csv.find("radiance=cubature"), std::string::npos) << "the partner's method by its label: " << csv;
     EXPECT_NE(csv.find("\"A, \"\"quoted\"\".ldt\""), std::string::npos) << csv;
-    EXPECT_NE(csv.find(",\"[0,4,2]\","), std::string::npos) << csv;  // a short list: its JSON text
+    EXPECT_NE(csv.find(",\"[0,4,2]\""), std::string::npos) << csv;  // a short list: its JSON text
     EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 4);
 
-    // a parameter with one value in every record is no column of its own
-    results::Results same;
-    same.records = {rec("mc:n=4", "mci_curve", 1.5, ref, a), rec("mc:n=4", "mci_curve", 3.0, ref, a)};
-    const std::string sameHead = results::toCsv(same).substr(0, results::toCsv(same).find('\n'));
-    EXPECT_EQ(sameHead.find("param_"), std::string::npos) << sameHead;
-    EXPECT_EQ(sameHead.substr(sameHead.size() - 7), ",params") << sameHead;  // the last column
-
-    // written beside results.json by saveCsv; pandas (python3-pandas, scripts/install-deps.sh) reads it
+    // written beside results.json by saveCsv with results_long.csv; pandas reads them
     const std::string jsonPath = (dir / "results.json").string();
     results::save(jsonPath, doc);
     results::saveCsv(jsonPath, doc);
     ASSERT_TRUE(fs::exists(dir / "results.csv"));
     EXPECT_EQ(slurp(dir / "results.csv"), csv);
-    if (sh("/usr/bin/python3 -c 'import pandas' 2>/dev/null") != 0)
-        GTEST_SKIP() << "/usr/bin/python3 has no pandas (Debian: apt-get install python3-pandas; "
-                        "scripts/install-deps.sh installs it)";
+    EXPECT_EQ(slurp(dir / "results_long.csv"), results::toLongCsv(doc));
+    const std::string py = venvPython();
+    if (sh(py + " -c 'import pandas' 2>/dev/null") != 0)
+        GTEST_SKIP() << py << " has no pandas (scripts/install-deps.sh installs python3-pandas)";
     std::ofstream(dir / "check.py") << R"PY(
 import json, math, sys
 import pandas as pd
@@ -170,41 +152,34 @@ assert len(df) == 3, len(df)
 assert list(df["role"]) == ["method", "equal_time", "mci_curve"], list(df["role"])
 assert list(df["series"]) == ["cubature", "MCI=cubature", "MCI curve"], list(df["series"])
 assert list(df["method"]) == ["cubature", "mc", "mc"], list(df["method"])
+assert df["spec"][0] == "cubature:triangulation=fan", df["spec"][0]  # no cubature on the specular scene: as recorded
 assert df["luminaire"][0] == 'A, "quoted".ldt', df["luminaire"][0]
 assert df["nmse"].dtype.kind == "f" and (df["nmse"] > 0).all()
-assert df["ueb_lux"].dtype.kind == "f" and df["height_m"][0] == 1.1 and df["rotation_rad"][0] == 1.5
+assert df["unit"].tolist() == ["cd_m2", "lux", "lux"], df["unit"].tolist()
+assert df["ueb"].dtype.kind == "f" and df["height_m"][0] == 1.1 and df["rotation_rad"][0] == 1.5
 assert df["time_ms_median"][1] == 2.5 and df["time_ms_res"][0] == 128
-assert df["param_n"][1] == 4 and math.isnan(df["param_n"][0])
-assert df["param_triangulation"][0] == "fan"
-assert json.loads(df["params"][0]) == {"triangulation": "fan"}, df["params"][0]
-assert json.loads(df["params"][2]) == {"n": 4, "pattern": "poisson"}, df["params"][2]
 assert math.isnan(df["flip"][1])
 assert math.isnan(df["n"][0]) and df["n"][1] == 4.25 and df["n"][2] == 4, list(df["n"])
 assert df["equal_time_label"][1] == "cubature"
-# True / False: bool where every row has a value; the partners' columns once restricted to them
-et = pd.read_csv(sys.argv[1])[lambda d: d.role == "equal_time"]
-assert et["equal_time_ok"].tolist() == [True], et["equal_time_ok"].tolist()
-assert df["equal_time_ok"][1] == True
-assert df["seeds"].tolist() == [1, 8, 1] and df["nmse_ci95_lo"][1] == 0.25 and math.isnan(df["nmse_ci95_hi"][0])
+assert pd.isna(df["verdict"][1])  # "n/a" (pandas reads NaN): the method's record is at another scene, unpaired
+assert df["equal_time_ratio"][1] == 1.02
+assert df["seeds"].tolist() == [1, 8, 1]
 assert df["scene_kind"][0] == "specular" and df["alpha"][0] == 0.25 and df["eye"][0] == "[0,4,2]"
-ok = pd.read_csv(sys.argv[2])
-assert ok["flag"].dtype == bool, ok["flag"].dtype
+lng = pd.read_csv(sys.argv[2])
+row = lng[(lng.record == 1) & (lng.metric == "nmse")]
+assert row["lo"].tolist() == [0.25] and row["hi"].tolist() == [0.75], row
+assert len(lng) == 3 * 7, len(lng)
 print("pandas ok", df.shape)
 )PY";
-    // a column where every row has a boolean: dtype bool
-    results::Results flags;
-    flags.records = {rec("cubature", "method", 1.5, ref, a), rec("cubature", "method", 3.0, ref, a)};
-    flags.records[0].extra["flag"] = true;
-    flags.records[1].extra["flag"] = false;
-    std::ofstream(dir / "flags.csv") << results::toCsv(flags);
-    EXPECT_EQ(sh("/usr/bin/python3 " + (dir / "check.py").string() + " " + (dir / "results.csv").string() + " " +
-                 (dir / "flags.csv").string()),
+    EXPECT_EQ(sh(py + " " + (dir / "check.py").string() + " " + (dir / "results.csv").string() + " " +
+                 (dir / "results_long.csv").string()),
               0);
 }
 
 // The python blocks of docs/experiments.md's "Results as a table" (a pivot
-// by scene and series, a seaborn relplot) run on a CSV of hand-made records,
-// as out/main/results.csv, so the documented examples keep working.
+// of the verdicts by method and baseline, a seaborn relplot) run with the
+// interpreter the README sets up (.venv/bin/python) on a CSV of hand-made
+// records, as out/main/results.csv, so the documented examples keep working.
 TEST_F(Report, DocExamplesRunOnTheCsv)
 {
     const std::string md = slurp(fs::path(test::sourceDir()) / "docs" / "experiments.md");
@@ -219,23 +194,28 @@ TEST_F(Report, DocExamplesRunOnTheCsv)
         p = e + 3;
     }
     ASSERT_EQ(blocks.size(), 2u) << "a pivot and a seaborn example";
-    if (sh("/usr/bin/python3 -c 'import pandas' 2>/dev/null") != 0)
-        GTEST_SKIP() << "/usr/bin/python3 has no pandas (scripts/install-deps.sh installs python3-pandas)";
+    EXPECT_LE(std::count(blocks[0].begin(), blocks[0].end(), '\n'), 5) << "five lines: " << blocks[0];
+    const std::string py = venvPython();
+    if (sh(py + " -c 'import pandas' 2>/dev/null") != 0)
+        GTEST_SKIP() << py << " has no pandas (scripts/install-deps.sh installs python3-pandas)";
     Image ref = ramp(8, 1);
     results::Results doc;
     doc.records = {rec("cubature", "method", 1.5, ref, ramp(8, 1.25)),
                    rec("mc:n=4", "equal_time", 1.5, ref, ramp(8, 0.5)),
                    rec("mc:n=4", "mci_curve", 1.5, ref, ramp(8, 0.75))};
+    doc.records[1].extra["scene"] = doc.records[0].extra["scene"];  // the method's partner
+    doc.records[1].baseline = results::BaselineRef{"strong MC", "mc:domain=solid"};
+    doc.records[2].baseline = doc.records[1].baseline;
     fs::create_directories(dir / "out" / "main");
     std::ofstream(dir / "out" / "main" / "results.csv") << results::toCsv(doc);
-    std::ofstream(dir / "pivot.py") << blocks[0] << "assert table.loc[('A, \"quoted\".ldt', 1.1), 'MCI=cubature'] > 0\n"
-                                    << "assert 'MCI curve' not in table.columns\n";
-    EXPECT_EQ(sh("cd " + dir.string() + " && /usr/bin/python3 pivot.py"), 0) << blocks[0];
-    if (sh("/usr/bin/python3 -c 'import seaborn' 2>/dev/null") != 0)
+    // MC at 0.5 x the reference has the larger error: cubature wins its one pair
+    std::ofstream(dir / "pivot.py") << blocks[0] << "assert table.loc['cubature', ('strong MC', 'win')] == 1, table\n";
+    EXPECT_EQ(sh("cd " + dir.string() + " && " + py + " pivot.py"), 0) << blocks[0];
+    if (sh(py + " -c 'import seaborn' 2>/dev/null") != 0)
         GTEST_SKIP() << "/usr/bin/python3 has no seaborn (Debian: apt-get install python3-seaborn; "
                         "scripts/install-deps.sh installs it); the pivot example ran";
     std::ofstream(dir / "relplot.py") << blocks[1];
-    EXPECT_EQ(sh("cd " + dir.string() + " && MPLBACKEND=Agg /usr/bin/python3 relplot.py"), 0) << blocks[1];
+    EXPECT_EQ(sh("cd " + dir.string() + " && MPLBACKEND=Agg " + py + " relplot.py"), 0) << blocks[1];
     EXPECT_TRUE(fs::exists(dir / "nmse_time.png"));
 }
 
@@ -446,10 +426,10 @@ TEST_F(Report, ReportStepPrintsAProgressLinePerStage)
 namespace lb {
 namespace {
 
-// A column holds one unit: the specular scene's values (luminance, cd/m^2)
-// go to ueb_cd_m2, leb_cd_m2, mean_ref_cd_m2, mean_test_cd_m2, the others'
-// (lux) to *_lux, each empty on the other's rows; plots/results_io.py reads
-// either back under the record's key.
+// A column names the unit of its values: records of one unit get ueb_lux
+// (or ueb_cd_m2, the specular scene's luminance), ...; where the units mix,
+// ueb, leb, mean_ref and mean_test have no suffix and a column `unit` says
+// each row's; plots/results_io.py reads either back under the record's key.
 TEST_F(Report, CsvColumnsNameTheUnitOfTheirValues)
 {
     Image ref = ramp(4, 1), test = ramp(4, 1.5);
@@ -466,10 +446,11 @@ TEST_F(Report, CsvColumnsNameTheUnitOfTheirValues)
 sys.path.insert(0, "{}/plots")
 from results_io import load_records
 rows = list(csv.DictReader(open("{}/results.csv")))
+assert [r["unit"] for r in rows] == ["lux", "cd_m2"], rows
 for k in ("ueb", "leb", "mean_ref", "mean_test"):
-    assert rows[0][k + "_lux"] != "" and rows[0][k + "_cd_m2"] == "", (k, rows[0])
-    assert rows[1][k + "_lux"] == "" and rows[1][k + "_cd_m2"] != "", (k, rows[1])
-assert float(rows[1]["ueb_cd_m2"]) == 7.25
+    assert rows[0][k] != "" and rows[1][k] != "", (k, rows)
+    assert k + "_lux" not in rows[0] and k + "_cd_m2" not in rows[0], rows[0]
+assert float(rows[1]["ueb"]) == 7.25
 a, b = load_records("{}/results.csv")
 assert b["ueb"] == 7.25 and a["ueb"] > 0, (a["ueb"], b["ueb"])
 assert isinstance(a["mean_ref"], float) and isinstance(b["mean_ref"], float)
@@ -483,6 +464,9 @@ assert isinstance(a["mean_ref"], float) and isinstance(b["mean_ref"], float)
     const std::string csv = results::toCsv(doc);
     EXPECT_NE(csv.find("ueb_lux"), std::string::npos);
     EXPECT_EQ(csv.find("cd_m2"), std::string::npos);
+    EXPECT_EQ(csv.find(",unit,"), std::string::npos);
+    doc.records = {specular};  // specular alone: cd/m^2 in the names
+    EXPECT_NE(results::toCsv(doc).find("ueb_cd_m2"), std::string::npos);
 }
 
 }  // namespace

@@ -551,13 +551,15 @@ TEST_F(ExperimentRun, SmokeExperimentProducesResultsPlotsAndReport)
     size_t pngs = 0, grids = 0;
     for (auto& f : fs::directory_iterator(out / "plots")) pngs += f.path().extension() == ".png";
     for (auto& f : fs::directory_iterator(out / "plots" / "grids")) grids += f.path().extension() == ".png";
-    // Per metric 2 metric-time figures (one per luminaire) and 2 per-height
-    // figures: NMSE, grad_nmse and, with flip-evaluator, FLIP; an image grid
-    // for every scene in plots/grids.
+    // Per metric 2 metric-time figures (one per luminaire), 2 pooled over
+    // scenes (all, and a panel per luminaire) and 2 per-height figures: NMSE,
+    // grad_nmse and, with flip-evaluator, FLIP; an image grid for every scene
+    // in plots/grids.
     const size_t metricsPlotted = metrics::flipAvailable() ? 3 : 2;
-    EXPECT_EQ(pngs, metricsPlotted * (2u + 2u));
+    EXPECT_EQ(pngs, metricsPlotted * (2u + 2u + 2u));
     EXPECT_EQ(grids, experiments::scenes(e).size());
-    for (const char* f : {"grad_nmse_h0.1_float.png", "nmse_h0.1_float.png"})
+    for (const char* f : {"grad_nmse_h0.1_float.png", "nmse_h0.1_float.png", "nmse_all_time_float.png",
+                          "nmse_by_luminaire_time_float.png"})
         EXPECT_TRUE(fs::exists(out / "plots" / f)) << f;
     for (const char* t : {"## grad_nmse per luminaire and height", "## FLIP per luminaire and height"})
         EXPECT_NE(report.find(t), std::string::npos) << t;

@@ -306,7 +306,7 @@ TEST(CubatureFamily, StaticSamplesPickTheirKernelAndNeedDelaunay)
 // near-singular integrand, where the reference's adaptive refinement stops at
 // its split budget short of tol (measured NMSE 2.0e-7 there, 4.4e-9 at
 // 3pi/4, 2.6e-11 unclipped): bound 1e-6 for all three; voronoi is asserted to be much worse clipped than
-// unclipped (measured: docs/cubature-variants.md) and finite.
+// unclipped (measured: docs/studies/cubature-variants.md) and finite.
 TEST(CubatureFamily, VoronoiWithClippedLight)
 {
     LB_REQUIRE_RUNTIME(rt);

@@ -123,7 +123,7 @@ TEST(RadiancePeer, ReferenceAgreesWithRtraceOnRectangles)
 
 TEST(RadiancePeer, ReferenceAgreesWithRtraceOnDisks)
 {
-    // The round openings at their declared diameters (docs/as-declared.md) and a
+    // The round openings at their declared diameters (docs/studies/as-declared.md) and a
     // 1 m disk of the suite's quadrant luminaire, near (h 0.1) and mid-range,
     // facing down and tilted; Radiance's disk is 2048 polygons of the 128-gon
     // scaled to the disk's area (radiance_peer.py).

@@ -101,7 +101,7 @@ TEST(Lut, ErrorWithinDerivedBoundForEveryLuminaire)
         EXPECT_LE(err, lut.errorBound + 1e-5 * maxCd) << f;
         // The pencil stress luminaire (a 0.4-degree beam) is narrower than a
         // LUT cell; its error (3.5 % of the peak) is within its derived bound,
-        // checked above, but not the resolution claim below (docs/robust.md).
+        // checked above, but not the resolution claim below (docs/studies/robust.md).
         const bool subCell = fs::path(f).stem() == "pencil";
         if (!subCell && err / maxCd > worstRel) worstRel = err / maxCd, worstFile = f;
         std::printf("  %-60s max err %.2e of max cd (bound %.2e)%s\n", fs::path(f).filename().c_str(), err / maxCd,

@@ -159,13 +159,16 @@ shutil.copy(os.path.join(DATA, "results.json"), exp_dir)
 import experiment  # noqa: E402
 figs = run_kind("experiment", lambda: experiment.main([exp_dir]))
 names = sorted(os.path.basename(p[0]) for _, _, p in figs)
-expect(names == ["nmse_h0.1_float.png", "nmse_h1.1_float.png", "nmse_time_ARCOS3_60712332_float.png",
-                 "nmse_time_PANOS_60813872_float.png"], f"experiment: figures {names}")
+expect(names == ["nmse_all_time_float.png", "nmse_by_luminaire_time_float.png", "nmse_h0.1_float.png",
+                 "nmse_h1.1_float.png", "nmse_time_ARCOS3_60712332_float.png", "nmse_time_PANOS_60813872_float.png"],
+       f"experiment: figures {names}")
 for _, fig, paths in figs:
     base = os.path.basename(paths[0])
     _, n = colour_problems(fig)
-    expect(n >= 7, f"{base}: {n} series artists (cubature, its variant, voronoi, point, partners, curve)")
-    if base.startswith("nmse_time_"):
+    # pooled figures have no partners (each scene's lies on its curve)
+    want = 5 if base.startswith(("nmse_all", "nmse_by")) else 7
+    expect(n >= want, f"{base}: {n} series artists (cubature, its variant, voronoi, point, partners, curve)")
+    if "_time_" in base:
         labels = {t.get_text() for t in fig.findobj(Text) if t.get_gid() == "curve-label"}
         expect({"1", "64"} <= labels, f"{base}: N labels on the MCI curve {sorted(labels)}")
 
@@ -191,6 +194,63 @@ many = [dict(r, luminaire=f"L{k}_{r['luminaire']}") for k in range(4)
 wide_dir = os.path.join(WORK, "wide")
 os.makedirs(wide_dir, exist_ok=True)
 run_kind("experiment (8 luminaires)", lambda: experiment.metric_per_height(many, wide_dir, style.DPI, "nmse", "NMSE"))
+
+# Two Monte Carlo baselines (the test's curve and partners again as a second,
+# labelled baseline at half the error, with a 95 % band over seeds, and N = 2
+# timed below N = 1 on one scene as a filter's fixed cost makes it): every
+# figure of error against time draws both curves, each band, the ring where
+# the time steps back, and the device and timing resolution in the caption.
+import error_time  # noqa: E402
+from results_io import baselines  # noqa: E402
+two = load_records(os.path.join(DATA, "results.json"))
+second = []
+for r in two:
+    if r["role"] in ("mci_curve", "equal_time"):
+        c = json.loads(json.dumps(r))
+        c["params"]["domain"] = "solid"
+        c["baseline"] = {"label": "strong", "spec": "mc:domain=solid"}
+        c["nmse"] = r["nmse"] / 2
+        c["seeds"] = 8
+        c["ci95"] = {"nmse": [r["nmse"] / 3, r["nmse"] / 1.5]}
+        c["time_ms"] = dict(r["time_ms"], res=128)
+        second.append(c)
+first_scene = second[0]["scene"]
+t1 = next(c["time_ms"]["median"] for c in second if c["scene"] == first_scene and c["params"]["n"] == 1
+          and c["role"] == "mci_curve")
+for c in second:
+    if c["scene"] == first_scene and c["role"] == "mci_curve" and c["params"]["n"] == 2:
+        c["time_ms"]["median"] = t1 * 0.95
+    if c["scene"] == second[-1]["scene"] != first_scene and c["role"] == "mci_curve" and c["params"]["n"] == 1:
+        c["nmse"] = None  # undefined (a black image): the pooled N = 1 is over the other scenes, marked 1*
+two += second
+known = baselines(two)
+expect(list(known.values()) == ["MC", "strong"], f"baselines {known}")
+style.set_baselines(known.values())
+two_dir = os.path.join(WORK, "two")
+os.makedirs(two_dir, exist_ok=True)
+figs = run_kind("error_time (two baselines)", lambda: (
+    error_time.metric_time(two, two_dir, style.DPI, "nmse", "NMSE", known),
+    error_time.pooled_time(two, two_dir, style.DPI, "nmse", "NMSE", known, per_luminaire=False),
+    error_time.pooled_time(two, two_dir, style.DPI, "nmse", "NMSE", known)))
+expect(len(figs) == 4, f"error_time: {len(figs)} figures of two baselines, not 4")
+for _, fig, paths in figs:
+    base = os.path.basename(paths[0])
+    gids = {a.get_gid() for a in fig.findobj() if a.get_gid()}
+    for want in ("series:curve:MC", "series:curve:strong", "band:strong"):
+        expect(want in gids, f"{base}: no {want}")
+    expect("band:MC" not in gids, f"{base}: a band where the baseline has no seeds")
+    if base.startswith("nmse_time_ARCOS"):
+        rings = [a for a in fig.findobj(Line2D) if a.get_gid() == "time-steps-back"]
+        expect(any(abs(x / (t1 * 0.95) - 1) < 1e-9 for a in rings for x in a.get_xdata()),
+               f"{base}: no ring on the second baseline where its N = 2 is timed below N = 1")
+    if base.startswith("nmse_all"):
+        ns = {t.get_text() for t in fig.findobj(Text) if t.get_gid() == "curve-label"}
+        expect("1*" in ns, f"{base}: N = 1 of the second baseline not marked as over fewer scenes: {sorted(ns)}")
+    cap = " ".join(" ".join(t.get_text().split()) for t in fig.findobj(Text) if t.get_gid() == "caption")
+    for want in ("Xeon", "128 x 128", "over 8 seeds"):
+        expect(want in cap, f"{base}: the caption lacks {want!r}: {cap!r}")
+    legend = " ".join(t.get_text() for lg in fig.legends for t in lg.get_texts())
+    expect("strong over N" in legend and "mc:domain=solid" in legend, f"{base}: legend {legend!r}")
 
 # 2. specular.py --fig
 run_kind("specular", main_with_argv("specular", [os.path.join(DATA, "specular.json"),
@@ -223,12 +283,21 @@ with open(os.devnull, "w") as null:
     finally:
         sys.stdout = stdout
 
+# A scene label that reads as an option (a luminaire named -h.ldt) is the grid's title, not a flag.
+grid = experiment.one_grid(("-h_h0.1_rpi-2_float", ["cubature=" + pic], os.path.join(WORK, "grid-h.png"), 100))
+expect(os.path.exists(grid[0]), "image grid of a scene named -h...: no figure")
+
 # The table: no two entries share a (colour, marker) pair.
 pairs = {}
 for name in list(style.FAMILIES) + list(style.VARIANTS) + [style.CURVE]:
     cm = style.colour_marker(name)
     expect(cm not in pairs, f"{name} and {pairs.get(cm)} share {cm}")
     pairs[cm] = name
+# A baseline's curve after the first (black, as the MCI curve) has a colour no
+# family has, fixed or hashed, so that it is not read as a method's.
+taken = {c.lower() for c, _ in style.FAMILIES.values()} | {c.lower() for c in style.TOL_MUTED}
+for colour, _ in style.CURVE_STYLES[1:]:
+    expect(colour.lower() not in taken, f"curve colour {colour} is a method family's")
 # A partner has its method's colour and marker; an unknown family the same in
 # every process (CRC-32, not Python's salted hash()).
 expect(style.colour_marker("MCI=voronoi") == style.colour_marker("voronoi"), "MCI=voronoi not voronoi's colour")

@@ -32,7 +32,7 @@ TEST(Plots, FiguresFollowTheSuiteStyle)
                                                   "/plots' '" + src + "/tests/plots/data' '" + work.string() + "' 2>&1",
                                               &code);
     EXPECT_EQ(code, 0) << out;
-    EXPECT_NE(out.find("check_figures: 10 figures of 7 kinds pass"), std::string::npos) << out;
+    EXPECT_NE(out.find("check_figures: 17 figures of 8 kinds pass"), std::string::npos) << out;
     fs::remove_all(work);
 }
 

@@ -1,4 +1,4 @@
-// plots/robust_table.py: docs/robust.md's tables from results files, checked on
+// plots/robust_table.py: docs/studies/robust.md's tables from results files, checked on
 // hand-made records and on the committed run (no device needed).
 #include "testutil.h"
 
@@ -63,7 +63,7 @@ TEST(Plots, RobustTableLaterFilesReplaceTheirLuminaires)
     fs::remove_all(dir);
 }
 
-// The counts docs/robust.md quotes come from the committed runs (the pencil's
+// The counts docs/studies/robust.md quotes come from the committed runs (the pencil's
 // 256 x 256 rerun replacing its 32 x 32 rows): single draws of MC, so no tie.
 TEST(Plots, RobustTableReproducesTheCommittedRuns)
 {

@@ -69,7 +69,7 @@ TEST(Plots, StitchedTable)
     fs::remove_all(dir);
 }
 
-// The counts docs/thesis-sct-vs-mci.md quotes come from the committed results.
+// The counts docs/studies/thesis-sct-vs-mci.md quotes come from the committed results.
 TEST(Plots, StitchedTableReproducesTheCommittedRuns)
 {
     std::string script = test::sourceDir() + "/plots/stitched_table.py";

@@ -1,4 +1,4 @@
-// plots/visual_claims.py: the tables of docs/visual-claims.md from a results
+// plots/visual_claims.py: the tables of docs/studies/visual-claims.md from a results
 // file, checked on hand-made records (no device needed).
 #include "testutil.h"
 
@@ -61,7 +61,7 @@ TEST(Plots, VisualClaimsTables)
     fs::remove_all(dir);
 }
 
-// The counts docs/visual-claims.md quotes come from the committed run.
+// The counts docs/studies/visual-claims.md quotes come from the committed run.
 TEST(Plots, VisualClaimsReproducesTheCommittedRun)
 {
     int code = -1;
