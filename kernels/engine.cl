@@ -11,7 +11,7 @@
  */
 #include "common/lbmath.h"
 
-#define LB_ENG_CALL(s) lb_engine_rect##s(lum, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an)
+#define LB_ENG_CALL(s) lb_engine_rect##s(lum, P, ou, ov, on, au, av, an)
 
 #if defined(LB_ENG_RECT) && defined(LB_LANES) && LB_LANES == 8 && !defined(LB_DOUBLE)
 #include "common/lanes8.h"

@@ -103,13 +103,9 @@ void addConvert(CLI::App* cmd)
     });
 }
 
-}  // namespace
-
-void addLuminaireCommand(CLI::App& app)
+// luminaire info: the summary, optionally with the sh fit's error per L.
+void addInfo(CLI::App* cmd)
 {
-    auto* cmd = app.add_subcommand("luminaire", "Read, evaluate and synthesise luminaires (IES LM-63, EULUMDAT)");
-    cmd->require_subcommand(1);
-
     auto* info = cmd->add_subcommand("info", "Summary of a luminaire file (format, flux, max cd, symmetry, grid)");
     auto file = std::make_shared<std::string>();
     auto json = std::make_shared<bool>(false);
@@ -134,6 +130,16 @@ void addLuminaireCommand(CLI::App& app)
         }
         for (auto& [k, v] : j.items()) std::cout << fmt::format("{:<18} {}\n", k, v.dump());
     });
+}
+
+}  // namespace
+
+void addLuminaireCommand(CLI::App& app)
+{
+    auto* cmd = app.add_subcommand("luminaire", "Read, evaluate and synthesise luminaires (IES LM-63, EULUMDAT)");
+    cmd->require_subcommand(1);
+
+    addInfo(cmd);
 
     auto* eval = cmd->add_subcommand("eval", "Absolute candela at (gamma, C) pairs in degrees, one per line");
     auto efile = std::make_shared<std::string>();

@@ -171,6 +171,18 @@ std::optional<BaselineRef> legacyBaseline(const Record& r)
     return BaselineRef{defaultBaselineLabel(spec), spec};
 }
 
+// A record's baseline: its "baseline" key, or the legacy one of its inputs.
+std::optional<BaselineRef> readBaseline(const json& j, const Record& r)
+{
+    if (!j.contains("baseline")) return legacyBaseline(r);
+    const json b = field<json>(j, "baseline");
+    try {
+        return BaselineRef{field<std::string>(b, "label"), baselineSpec(field<std::string>(b, "spec"))};
+    } catch (const InputError& err) {
+        throw InputError(fmt::format("key \"baseline\": {}", err.what()));
+    }
+}
+
 }  // namespace
 
 void to_json(json& j, const EqualTime& e)
@@ -497,16 +509,7 @@ void from_json(const json& j, Record& r)
         for (const char* k : kLegacyEqualTime) r.extra.erase(k);
     }
     checkRanges(r);
-    if (j.contains("baseline")) {
-        const json b = field<json>(j, "baseline");
-        try {
-            r.baseline = BaselineRef{field<std::string>(b, "label"), baselineSpec(field<std::string>(b, "spec"))};
-        } catch (const InputError& err) {
-            throw InputError(fmt::format("key \"baseline\": {}", err.what()));
-        }
-    } else {
-        r.baseline = legacyBaseline(r);
-    }
+    r.baseline = readBaseline(j, r);
 }
 
 void to_json(json& j, const Results& d)

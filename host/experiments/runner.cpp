@@ -43,7 +43,8 @@ std::string cellImageName(const std::string& role, const std::string& spec, cons
     };
     // a long SPEC (a preset's path) still names a file
     if (role != "equal_time") return util::shortName(safe(spec));
-    return util::shortName("mci_eq_" + safe(spec) + (baseline.empty() || baseline == "MCI" ? "" : "_vs_" + safe(baseline)));
+    return util::shortName("mci_eq_" + safe(spec) +
+                           (baseline.empty() || baseline == "MCI" ? "" : "_vs_" + safe(baseline)));
 }
 
 namespace {
