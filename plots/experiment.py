@@ -25,8 +25,11 @@ writes DIR/plots/*.png (300 dpi) and a PDF beside each, in the suite's style
 - grids/grid_<scene>.png: reference | method | error for each method of a
   scene, from the PNG triples the runner saves with "save_images"
   (plots/image_grid.py), the error pictures on the scene's one bound with its
-  colour bar (`lumibench report` draws them so); every scene (or the first
-  --max-grids), drawn by as many processes as there are CPUs.
+  colour bar (`lumibench report` draws them so), with the equal-time partners
+  of one baseline (--grid-baseline; default the first the records name: a row
+  per partner of every baseline made a grid of 20-40 cells and the report's
+  longest step); every scene (or the first --max-grids), drawn by as many
+  processes as there are CPUs.
 
 Only the JSON is read, so figures can be redone without re-running. Exits 3
 when matplotlib is missing (lumibench then still writes report.md).
@@ -151,14 +154,17 @@ def metric_per_height(records, out, dpi, key, name, known=None):
     return files
 
 
-def grid_rows(scene, rs, dir_):
-    """image_grid.py's rows LABEL=PREFIX of a scene's method and partner cells with pictures."""
+def grid_rows(scene, rs, dir_, baseline=None):
+    """image_grid.py's rows LABEL=PREFIX of a scene's method cells and the partner cells of
+    one baseline (None: every baseline's) with pictures."""
     rows = []
     for r in rs:
         if role(r) == "method":
             cell = safe(r.get("spec", r["method"]))
         else:  # the runner's cellImageName: _vs_<baseline> for every baseline but MCI
             b = baseline_label(r)
+            if baseline is not None and b != baseline:
+                continue
             cell = "mci_eq_" + safe(equal_time(r)["label"] if "equal_time_to" in r else "") + \
                 ("" if b == "MCI" else "_vs_" + safe(b))
         prefix = os.path.join(dir_, "images", scene, cell)
@@ -181,16 +187,19 @@ def one_grid(job):
     return [path, os.path.splitext(path)[0] + ".pdf"]
 
 
-def grids(records, dir_, out, max_grids, dpi, jobs=0):
+def grids(records, dir_, out, max_grids, dpi, jobs=0, baseline=None):
     """reference | method | error per scene from DIR/images/<scene>/<cell>_{ref,test,err}.png,
-    into OUT/grids/ (max_grids 0: every scene; jobs 0: one process per CPU)."""
+    into OUT/grids/ (max_grids 0: every scene; jobs 0: one process per CPU), with the
+    partners of the baseline labelled `baseline` (None: the first one the records name)."""
     by = collections.OrderedDict()
     for r in records:
         if role(r) != "mci_curve" and "scene" in r:
             by.setdefault(r["scene"], []).append(r)
+    if baseline is None:
+        baseline = next((baseline_label(r) for r in records if role(r) == "equal_time"), None)
     todo = []
     for scene, rs in list(by.items())[:max_grids or None]:
-        rows = grid_rows(scene, rs, dir_)
+        rows = grid_rows(scene, rs, dir_, baseline)
         if rows:
             todo.append((scene, rows, os.path.join(out, "grids", "grid_{}.png".format(safe(scene))), dpi))
     if not todo:
@@ -210,6 +219,8 @@ def main(argv=None):
                     "the figures go to plots/ beside it")
     ap.add_argument("--max-grids", type=int, default=0, help="image grids for at most this many scenes (0: all)")
     ap.add_argument("--jobs", type=int, default=0, help="processes drawing the grids (0: one per CPU)")
+    ap.add_argument("--grid-baseline", default=None, metavar="LABEL",
+                    help="the baseline whose equal-time partners the image grids show (default: the first)")
     ap.add_argument("--dpi", type=int, default=style.DPI, help="PNG resolution (default %(default)s)")
     args = ap.parse_args(argv)
     style.use()
@@ -230,7 +241,7 @@ def main(argv=None):
             files += error_time.pooled_time(records, out, args.dpi, key, name, known, per_luminaire=False)
             files += error_time.pooled_time(records, out, args.dpi, key, name, known)
             files += metric_per_height(records, out, args.dpi, key, name, known)
-    files += grids(records, args.dir, out, args.max_grids, args.dpi, args.jobs)
+    files += grids(records, args.dir, out, args.max_grids, args.dpi, args.jobs, args.grid_baseline)
     print("experiment.py: {} figures in {}".format(len(files), out))
 
 
