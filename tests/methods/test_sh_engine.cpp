@@ -114,7 +114,7 @@ TEST(Sh, LambertianIsExactAtDegreeZero)
 }
 
 // A cos^3 emitter has the radiance A g = I0 cos^2: exact from L = 2 on (the
-// issue's L >= n + 1 = 4 included), within the tabulated cos3's interpolation
+// bound L >= n + 1 = 4 included), within the tabulated cos3's interpolation
 // (4e-7 n^2 (1 + tan^2) relative: 2e-4 at the 80 deg a pixel of these scenes
 // sees at most, on a small value) and float rounding: 2e-4 of the peak; at
 // L = 1 the fit cannot hold cos^2 and misses by more than 20 times that, so
