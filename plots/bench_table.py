@@ -26,6 +26,13 @@ def num(x):
     return f"{x:.3g}"
 
 
+def mc_curve(fit):
+    """MC's t(N): the line the run carries (t0_ms, ms_per_sample), else its points."""
+    if "t0_ms" in fit:
+        return f"{num(fit['t0_ms'])} ms + {num(fit['ms_per_sample'])} ms per sample"
+    return ", ".join(f"t({n}) = {num(t)} ms" for n, t in fit["points"])
+
+
 def groups_of(args):
     groups, cur = [], []
     for a in args:
@@ -86,8 +93,7 @@ def main():
     row("cubature's equal-time MC N",
         [f"{d['cubature']['equal_time_n']} (t = {num(d['cubature']['verify_ms'])} ms vs "
          f"{num(d['cubature']['time_ms'])} ms)" for d in ds])
-    row("MC t(N) fit",
-        [f"{num(d['mc_fit']['t0_ms'])} ms + {num(d['mc_fit']['ms_per_sample'])} ms per sample" for d in ds])
+    row("MC t(N) fit", [mc_curve(d["mc_fit"]) for d in ds])
     # the fair-equal-time goals (runs that have them; "-" elsewhere)
     goals = []
     for d in ds:

@@ -30,6 +30,7 @@ struct Bench {
     const photometry::Table& table;
     const Scene& scene;
     const Options& opt;
+    const equaltime::Protocol& protocol;
 
     struct Timed {
         double ms = 0;
@@ -48,7 +49,7 @@ struct Bench {
 
     // t(a) / t(b) as the median of per-round ratios, the two launched in
     // alternation (Runtime::timeInterleaved): a drift of the machine's speed
-    // hits both sides of every ratio alike. At least 11 rounds.
+    // hits both sides of every ratio alike. The protocol's rounds.
     double ratio(const std::string& a, const std::string& b) { return paired(scene, a, scene, b).ratio; }
 
     struct Paired {
@@ -63,7 +64,7 @@ struct Bench {
         methods::Prepared pb(rt, table, sb, methods::parseSpec(b, sb.kind), methods::Precision::Float);
         pa.setLocal(opt.lx, opt.ly);
         pb.setLocal(opt.lx, opt.ly);
-        const int rounds = std::max(opt.reps, 11);
+        const int rounds = protocol.rounds;
         auto t = rt.timeInterleaved({[&] { return pa.launchMs(); }, [&] { return pb.launchMs(); }}, rounds, 1);
         return {equaltime::medianRatio({t[1], t[0]}, 1), t[0].median_ms, t[1].median_ms, rounds};  // t(a) / t(b)
     }
@@ -160,31 +161,26 @@ nlohmann::json samplesPerSecond(Bench& b)
             {"ok", ratio >= 10}};
 }
 
-// 2. MC time against N (near linear, docs/design.md section 6): least-squares line.
+// 2. The partner's time against N at the protocol's fit (docs/design.md
+// section 6: not linear in N on every device; the search interpolates it).
 struct McFit {
-    double t0 = 0, slope = 0;
-    double mc8 = 0;  // t(8), measured
+    double mc8 = 0;  // t(8) of mc:n=8, measured
     equaltime::Curve points;  // (N, ms) as measured
     nlohmann::json json;
 };
 
 McFit mcFit(Bench& b)
 {
-    std::vector<int> ns = b.opt.quick ? std::vector<int>{1, 8, 32} : std::vector<int>{1, 4, 8, 16, 32, 64, 128};
     nlohmann::json pts = nlohmann::json::array();
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
     McFit f;
-    for (int k : ns) {
-        double t = b.mc(k);
-        if (k == 8) f.mc8 = t;
+    for (long k : b.protocol.fit) {
+        double t = b.spec(equaltime::specAt(b.protocol.mc, k)).ms;
+        if (k == 8 && b.protocol.mc == "mc") f.mc8 = t;
         pts.push_back({k, t});
         f.points.emplace_back(k, t);
-        sx += k, sy += t, sxx += double(k) * k, sxy += k * t;
     }
-    double m = double(ns.size());
-    f.slope = (m * sxy - sx * sy) / (m * sxx - sx * sx);
-    f.t0 = (sy - f.slope * sx) / m;
-    f.json = {{"points", pts}, {"t0_ms", f.t0}, {"ms_per_sample", f.slope}};
+    if (f.mc8 == 0) f.mc8 = b.mc(8);
+    f.json = {{"points", pts}};
     return f;
 }
 
@@ -216,40 +212,13 @@ double methodTimes(Bench& b, double naiveMs, const McFit& fit, nlohmann::json& d
     return ms.at("cubature");
 }
 
-// 4. Cubature against MC 8, and its equal-time sample count by the runner's
-// search (equaltime::search): aimed on the measured t(N), decided by the
-// paired rounds of cubature and MC, whose two medians are the pair's times.
+// 4. Cubature against MC 8, and its equal-time sample count by the
+// protocol's search (cubatureEqualTime).
 nlohmann::json cubatureAgainstMc(Bench& b, double cub, const McFit& fit)
 {
-    methods::Prepared pc(b.rt, b.table, b.scene, methods::parseSpec("cubature"), methods::Precision::Float);
-    pc.setLocal(b.opt.lx, b.opt.ly);
-    equaltime::Sides sides;
-    sides.method = [&] { return pc.launchMs(); };
-    sides.mc = [&](long n, double extra) -> equaltime::Launch {
-        std::string spec = fmt::format("mc:n={}", n) + (extra > 0 ? fmt::format(",extra={:.3f}", extra) : "");
-        auto p = std::make_shared<methods::Prepared>(b.rt, b.table, b.scene, methods::parseSpec(spec),
-                                                     methods::Precision::Float);
-        p->setLocal(b.opt.lx, b.opt.ly);
-        return [p] { return p->launchMs(); };
-    };
-    sides.fractional = methods::parseSpec("mc").has("extra");
-    equaltime::Options o;
-    o.rounds = std::max(b.opt.reps, 11);
-    const equaltime::Result q = equaltime::search(sides, o, fit.points, cub);
-    const double cr = cub / fit.mc8;
-    return {{"time_ms", cub},
-            {"mc8_ms", fit.mc8},
-            {"ratio", cr},
-            {"target", 1.0},
-            {"ok", cr <= 1.0},
-            {"equal_time_n", q.n},
-            {"equal_time_extra", q.extra},
-            {"verify_ms", q.partner.median_ms},
-            {"paired_ms", q.method.median_ms},
-            {"equal_time_ratio", q.ratio},
-            {"equal_time_ok", q.ok},
-            {"equal_time_bracketed", q.bracketed},
-            {"equal_time_candidates", q.candidates}};
+    return cubatureEqualTime(
+        b.protocol, equaltime::preparedFrames(b.rt, b.table, b.scene, methods::Precision::Float, b.opt.lx, b.opt.ly),
+        fit.points, cub, fit.mc8);
 }
 
 // 5. The fair-equal-time goals: every variant in its fastest form before
@@ -274,7 +243,7 @@ nlohmann::json goals(Bench& b)
                        {"numerator", g.num},
                        {"denominator", g.den},
                        {"ratio", r},
-                       {"rounds", std::max(b.opt.reps, 11)},
+                       {"rounds", b.protocol.rounds},
                        {"target", g.target},
                        {"ok", r <= g.target}});
     }
@@ -433,7 +402,7 @@ nlohmann::json filterTimes(Bench& b)
         const std::string spec = fmt::format("mc:n=1,domain=solid,sequence=sobol,denoise={}", filter);
         methods::Prepared p(b.rt, b.table, b.scene, methods::parseSpec(spec), methods::Precision::Float);
         p.setLocal(b.opt.lx, b.opt.ly);
-        const auto t = p.time(std::max(b.opt.reps, 11));
+        const auto t = p.time(b.protocol.rounds);
         const auto st = p.stageMs();
         nlohmann::json passes = nlohmann::json::array();
         double sum = 0;
@@ -465,12 +434,47 @@ nlohmann::json filterTimes(Bench& b)
 
 }  // namespace
 
+equaltime::Protocol benchProtocol(bool quick, int reps)
+{
+    equaltime::Protocol p;
+    p.reps = reps;
+    p.rounds = std::max(reps, 11);
+    p.fit = quick ? std::vector<long>{1, 8, 32} : std::vector<long>{1, 4, 8, 16, 32, 64, 128};
+    return p;
+}
+
+nlohmann::json cubatureEqualTime(const equaltime::Protocol& p, const equaltime::Frames& frames,
+                                 const equaltime::Curve& fit, double cubMs, double mc8Ms)
+{
+    const equaltime::Result q = equaltime::pairUp(
+        p, frames, methods::parseSpec("cubature"),
+        [&](long n, double extra) { return methods::parseSpec(equaltime::specAt(p.mc, n, extra)); }, fit, cubMs);
+    const double cr = cubMs / mc8Ms;
+    return {{"time_ms", cubMs},
+            {"mc8_ms", mc8Ms},
+            {"ratio", cr},
+            {"target", 1.0},
+            {"ok", cr <= 1.0},
+            {"equal_time_n", q.n},
+            {"equal_time_extra", q.extra},
+            {"verify_ms", q.partner.median_ms},
+            {"paired_ms", q.method.median_ms},
+            {"equal_time_ratio", q.ratio},
+            {"equal_time_ok", q.ok},
+            {"equal_time_bracketed", q.bracketed},
+            {"equal_time_candidates", q.candidates}};
+}
+
 nlohmann::json run(ocl::Runtime& rt, const photometry::Table& table, const Scene& scene0, const Options& opt)
 {
     Scene scene = scene0;
     scene.res = opt.res;
-    Bench b{rt, table, scene, opt};
+    equaltime::Protocol protocol = opt.protocol ? *opt.protocol : benchProtocol(opt.quick, opt.reps);
+    protocol.reps = opt.reps;
+    protocol.timeRes = opt.res;
+    Bench b{rt, table, scene, opt, protocol};
     nlohmann::json doc = header(b);
+    doc["protocol"] = protocol.json();
     if (opt.filtersOnly) {
         doc["filters"] = filterTimes(b);
         return doc;
@@ -529,9 +533,10 @@ std::string format(const nlohmann::json& d)
     for (const auto& m : d["methods"])
         o << fmt::format("{:<62} {:>10.3f} {:>12.2f}\n", m["method"].get<std::string>(), m["time_ms"].get<double>(),
                          m["ns_per_pixel"].get<double>());
-    const auto& f = d["mc_fit"];
-    o << fmt::format("MC t(N) = {:.3f} ms + {:.4f} ms/sample\n", f["t0_ms"].get<double>(),
-                     f["ms_per_sample"].get<double>());
+    std::string curve;
+    for (const auto& p : d["mc_fit"]["points"])
+        curve += fmt::format(" N={} {:.3f} ms", p[0].get<long>(), p[1].get<double>());
+    o << "MC t(N):" << curve << "\n";
     const auto& c = d["cubature"];
     o << fmt::format("cubature / MC 8 = {:.2f} (target <= 1: {}); equal-time MC N = {:g} (paired: {:.3f} ms vs "
                      "cubature {:.3f} ms)\n",

@@ -6,11 +6,13 @@
 #include "methods/analytic.h"
 #include "util/check.h"
 #include "util/error.h"
+#include "util/json_file.h"
 
 #include <fmt/format.h>
 
 #include <iostream>
 #include <memory>
+#include <set>
 
 namespace lb::cli {
 
@@ -27,6 +29,25 @@ void parseLocal(const std::string& name, const std::string& text, size_t& lx, si
     if (lx < 1 || ly < 1 || lx * ly > 1024) throw InputError(fmt::format("{}: work-group {} out of range", name, text));
 }
 
+namespace {
+
+// --equal-time TEXT: the protocol's keys over bench::benchProtocol's.
+equaltime::Protocol protocolFlag(const std::string& text, bool quick, int reps)
+{
+    const nlohmann::json j = util::parseJson(text, "--equal-time");
+    if (!j.is_object()) throw InputError(fmt::format("--equal-time: expected a JSON object, found {}", j.dump()));
+    const util::JsonKeys r{"--equal-time", j};
+    const std::vector<std::string>& keys = equaltime::protocolKeys();
+    r.onlyKnown(std::set<std::string>(keys.begin(), keys.end()));
+    equaltime::ReadRules rules;
+    rules.elsewhere = {{"reps", "--reps"}, {"time_res", "--res"}};
+    equaltime::Protocol p = bench::benchProtocol(quick, reps);
+    equaltime::readProtocol(r, p, rules);
+    return p;
+}
+
+}  // namespace
+
 void addBenchCommand(CLI::App& app)
 {
     struct Opts {
@@ -35,6 +56,7 @@ void addBenchCommand(CLI::App& app)
         std::string rotation = "3pi/4";
         int res = 512, reps = 5, samples = 32, rounds = 3, device = -1;
         std::string local = "8x8";
+        std::string equalTime;
         bool quick = false, json = false, filters = false;
     };
     auto o = std::make_shared<Opts>();
@@ -51,6 +73,9 @@ void addBenchCommand(CLI::App& app)
     cmd->add_option("--local", o->local, "Work-group size WxH")->capture_default_str();
     cmd->add_option("--device", o->device, "OpenCL device index >= 0 (lumibench devices)");
     cmd->add_flag("--quick", o->quick, "Fewer methods and fit points (smoke tests)");
+    cmd->add_option("--equal-time", o->equalTime,
+                    "The equal-time protocol as a JSON object: rounds, tolerance, mc, fit, mode "
+                    "(docs/experiments.md; reps and time_res are --reps and --res)");
     cmd->add_flag("--filters", o->filters, "Only the image filters' rows (mc:denoise=...; the header and one section)");
     cmd->add_flag("--json", o->json, "Print one JSON document to stdout");
     cmd->callback([o, cmd] {
@@ -66,6 +91,7 @@ void addBenchCommand(CLI::App& app)
         opt.samples = o->samples;
         opt.rounds = o->rounds;
         opt.quick = o->quick;
+        if (!o->equalTime.empty()) opt.protocol = protocolFlag(o->equalTime, o->quick, o->reps);
         opt.filtersOnly = o->filters;
         photometry::Table table = methods::loadLuminaire(o->luminaire);
         ocl::Runtime rt(device);

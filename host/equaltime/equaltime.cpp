@@ -166,6 +166,11 @@ Result search(const Sides& sides, const Options& options, const Curve& fit, doub
     if (options.rounds < 1) throw Error("equaltime::search: rounds must be >= 1");
     Search s{sides, options, {}, {}, {}};
     long next = solveN(fit, targetMs);  // first aim: the curve
+    if (options.mode == Mode::Aim) {
+        s.time({next});
+        s.best.ok = std::abs(s.best.ratio - 1) <= options.tolerance;
+        return s.best;
+    }
     for (int attempt = 0; attempt < options.tries; ++attempt) {
         const std::vector<long> cand = triesAround(next, attempt, fit, targetMs, s.measured);
         if (cand.empty()) break;

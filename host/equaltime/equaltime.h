@@ -61,10 +61,17 @@ struct Sides {
     bool fractional = false;  // MC takes a fractional sample count
 };
 
+// Search: the aimed N and its neighbours until the ratio is within the
+// tolerance (above). Aim: MC at the N solveN aims at, paired once (one set of
+// rounds, no tolerance loop, no fraction): a cheaper time of the method on
+// the curve's clock, as tune's equal-time objective takes at every evaluation.
+enum class Mode { Search, Aim };
+
 struct Options {
     double tolerance = 0.10;  // |ratio - 1| that counts as equal time
     int rounds = 11;  // alternating rounds per timing (>= 5)
     int tries = 3;  // aims of the integer search
+    Mode mode = Mode::Search;
 };
 
 struct Result {
@@ -77,9 +84,10 @@ struct Result {
     nlohmann::json candidates = nlohmann::json::array();  // [{"n", "extra"?, "ratio", "ms"}, ...] as timed
 };
 
-// The search above, from the measured points `fit` (>= 1 point) and the
-// method's time `targetMs` measured apart (its own cell), which aims the
-// first candidates only: every verdict of the search is a paired ratio.
+// The search above (in options.mode), from the measured points `fit` (>= 1
+// point) and the method's time `targetMs` measured apart (its own cell),
+// which aims the first candidates only: every verdict of the search is a
+// paired ratio.
 Result search(const Sides& sides, const Options& options, const Curve& fit, double targetMs);
 
 // The median over the rounds of t(launches[k]) / t(launches[0]) (k >= 1),

@@ -170,7 +170,9 @@ void readMethods(const Reader& r, Experiment& e)
     std::set<std::string> canon;
     for (const auto& m : e.methods) canon.insert(checkSpec("methods", m).canonical());
     if (r.has("equal_time")) {
-        e.equalTime = r.strings("equal_time", false);
+        const bool object = r.at("equal_time").is_object();
+        const Reader q{r.path, r.at("equal_time"), "equal_time."};
+        e.equalTime = object ? q.strings("methods", false) : r.strings("equal_time", false);
         for (const auto& m : e.equalTime)
             if (!canon.count(checkSpec("equal_time", m).canonical()))
                 r.fail("equal_time", fmt::format("'{}' is not one of \"methods\"", m));
@@ -179,13 +181,40 @@ void readMethods(const Reader& r, Experiment& e)
     if (r.has("reference")) e.reference = r.string("reference");
     checkSpec("reference", e.reference);
     if (r.has("mci_curve")) e.mciCurve = r.integers("mci_curve", 1, 1 << 20);
-    e.equalTimeFit = r.has("equal_time_fit") ? r.integers("equal_time_fit", 1, 1 << 20) : std::vector<long>{8, 32, 128};
-    if (!e.equalTime.empty() && e.mciCurve.empty() && e.equalTimeFit.size() < 2)
-        r.fail("equal_time_fit", "expected at least two sample counts to fit t(N)");
 }
 
-// res, precision, size, extent, reps, time_res, tolerance, save_images; the
-// command line's overrides last.
+// The equal-time protocol (equaltime::readProtocol): "reps" and "time_res"
+// at the top level (they time every cell), the pairing's keys in the
+// "equal_time" object or as top-level equal_time_<key>, not both.
+void readProtocol(const Reader& r, const Overrides& ov, Experiment& e)
+{
+    equaltime::ReadRules rules;
+    rules.minReps = kMinExperimentReps;  // docs/design.md section 6: the median of at least 5 timed runs
+    rules.maxTimeRes = kMaxRes;
+    json top = json::object();
+    for (const char* k : {"reps", "time_res"})
+        if (r.has(k)) top[k] = r.at(k);
+    equaltime::readProtocol(Reader{r.path, top}, e.protocol, rules);
+    if (ov.reps) e.protocol.reps = util::checkRange(nameOf(ov, "reps"), *ov.reps, kMinExperimentReps, ocl::kMaxReps);
+    if (ov.timeRes) e.protocol.timeRes = util::checkRange(nameOf(ov, "time_res"), *ov.timeRes, 0, kMaxRes);
+    json flat = json::object();
+    for (const char* k : {"tolerance", "rounds", "fit"})
+        if (r.has(std::string("equal_time_") + k)) flat[k] = r.at(std::string("equal_time_") + k);
+    equaltime::readProtocol(Reader{r.path, flat, "equal_time_"}, e.protocol, rules);
+    if (!r.has("equal_time") || !r.at("equal_time").is_object()) return;
+    const Reader q{r.path, r.at("equal_time"), "equal_time."};
+    std::set<std::string> known = {"methods", "tolerance", "rounds", "fit", "mode", "time_res", "reps", "mc"};
+    q.onlyKnown(known);
+    rules.elsewhere = {{"time_res", "the top-level \"time_res\" (it times every cell)"},
+                       {"reps", "the top-level \"reps\" (it times every cell)"},
+                       {"mc", "the top-level \"mc\" (the baselines)"}};
+    for (const auto& [k, v] : flat.items())
+        if (q.has(k)) q.fail(k, fmt::format("also set by the top-level \"equal_time_{}\"", k));
+    equaltime::readProtocol(q, e.protocol, rules);
+}
+
+// res, precision, size, extent, save_images, seeds; the command line's
+// overrides last.
 void readSettings(const Reader& r, const Overrides& ov, Experiment& e)
 {
     if (r.has("res")) e.res = static_cast<int>(r.integer("res", 1, kMaxRes));
@@ -214,14 +243,6 @@ void readSettings(const Reader& r, const Overrides& ov, Experiment& e)
             r.fail("shape", err.what());
         }
     if (r.has("extent")) e.extent = r.number("extent", 1e-6, kMaxSceneLength);  // 1 um: anything smaller is a typo
-    // docs/design.md section 6: the median of at least 5 timed runs.
-    if (r.has("reps")) e.reps = static_cast<int>(r.integer("reps", kMinExperimentReps, ocl::kMaxReps));
-    if (ov.reps) e.reps = util::checkRange(nameOf(ov, "reps"), *ov.reps, kMinExperimentReps, ocl::kMaxReps);
-    if (r.has("time_res")) e.timeRes = static_cast<int>(r.integer("time_res", 0, kMaxRes));
-    if (ov.timeRes) e.timeRes = util::checkRange(nameOf(ov, "time_res"), *ov.timeRes, 0, kMaxRes);
-    if (r.has("equal_time_tolerance")) e.equalTimeTolerance = r.number("equal_time_tolerance", 0.001, 10);
-    if (r.has("equal_time_rounds"))
-        e.equalTimeRounds = static_cast<int>(r.integer("equal_time_rounds", kMinExperimentReps, ocl::kMaxReps));
     if (r.has("save_images")) e.saveImages = r.boolean("save_images");
     if (r.has("seeds")) e.seeds = static_cast<int>(r.integer("seeds", 1, kMaxSeeds));
     if (ov.seeds) e.seeds = util::checkRange(nameOf(ov, "seeds"), *ov.seeds, 1, kMaxSeeds);
@@ -248,15 +269,11 @@ Experiment loadExperiment(const std::string& path, const Overrides& ov)
     e.sceneKeys = SceneKindKeys::read(j, path);
     readMethods(r, e);
     readSettings(r, ov, e);
+    readProtocol(r, ov, e);
     return e;
 }
 
-std::string Baseline::at(long n, double extra) const
-{
-    std::string s = spec + (spec.find(':') == std::string::npos ? ":" : ",") + "n=" + std::to_string(n);
-    if (extra > 0) s += fmt::format(",extra={:.3f}", extra);
-    return s;
-}
+std::string Baseline::at(long n, double extra) const { return equaltime::specAt(spec, n, extra); }
 
 Scene SceneId::scene() const
 {

@@ -5,19 +5,23 @@
 //    "luminaires": ["lambert.ldt", "spot.ldt"],   // or "*" for every .ldt/.ies there
 //    "heights": [0.1, 1.1], "rotations": ["pi/2", "3pi/4"],
 //    "methods": ["point", "mc:n=8", "cubature"],
-//    "equal_time": ["cubature"],             // methods that get an MC partner at equal time per baseline
+//    "equal_time": {"methods": ["cubature"], // methods that get an MC partner at equal time per baseline,
+//                   "tolerance": 0.10, "rounds": 11, "fit": [8, 32, 128], "mode": "search"},
+//                                            // and the protocol's keys (equaltime/protocol.h; fit: the N
+//                                            // t(N) is fitted on when mci_curve is empty); a bare list:
+//                                            // the methods. Top-level equal_time_tolerance,
+//                                            // equal_time_rounds, equal_time_fit: the same keys.
 //    "mci_curve": [1, 2, 4, ..., 1024],      // each baseline at these N on every scene (error-time curve)
 //    "mc": "mc",                             // the MC baseline(s) of the curve and of equal time: a SPEC,
 //                                            // or a list of SPECs and {"label": ..., "spec": ...}
-//    "equal_time_fit": [8, 32, 128],         // N to fit t(N) on when mci_curve is empty
 //    "reference": "reference",               // the reference SPEC
 //    "res": 64, "precision": ["float"], "size": [1, 1], "extent": 5,   // size: [W, L] m or "file"
 //    "shape": "disk",                        // rect | disk; default rect, the file's with size "file"
-//    "reps": 5, "equal_time_tolerance": 0.10, "save_images": true,   // reps: 5 .. 1000
+//    "reps": 5, "save_images": true,         // reps: 5 .. 1000, the protocol's (every cell's timing)
 //    "seeds": 8,                             // seed-dependent methods (mc) rendered with seeds
 //                                            // seed, seed + 1, ...: metrics are means with 95 % intervals
-//    "time_res": 512,                        // every method is timed at time_res^2 pixels,
-//                                            // whatever res the error image has (docs/design.md section 6)
+//    "time_res": 512,                        // every method is timed at time_res^2 pixels, whatever
+//                                            // res the error image has: the protocol's (design.md section 6)
 //    "scene": "specular", "alpha": [0.1, 0.5], "eye": [0, 4, 2]}   // scene/scene_keys.h
 //
 // A scene is (luminaire, height, rotation, alpha, precision); its cells are the
@@ -28,6 +32,7 @@
 // order, and with it the shard assignment, is deterministic.
 #pragma once
 
+#include "equaltime/protocol.h"
 #include "methods/registry.h"
 #include "scene/scene.h"
 #include "scene/scene_keys.h"
@@ -62,7 +67,7 @@ struct Experiment {
     std::vector<std::string> rotationText;  // as written (labels)
     std::vector<std::string> methods;  // SPEC strings
     std::vector<std::string> equalTime;  // subset of methods
-    std::vector<long> mciCurve, equalTimeFit;
+    std::vector<long> mciCurve;
     std::vector<Baseline> baselines;  // "mc": at least one, labels and SPECs distinct
     std::string reference = "reference";
     int res = 64;
@@ -70,13 +75,12 @@ struct Experiment {
     double width = 1, length = 1, extent = 5;
     bool sizeFromFile = false;  // "size": "file": each luminaire's declared opening (methods::sizeFromFile)
     std::optional<LightShape> shape;  // "shape": rect | disk; unset: rect, or the file's with sizeFromFile
-    int reps = 5;
-    int timeRes = 512;  // methods are timed at time_res^2 pixels (docs/design.md section 6); 0 = at the image's res
-    double equalTimeTolerance = 0.10;
-    // Alternating rounds (method, MC candidates) per equal-time pairing; the
-    // ratio is the median of the rounds' ratios. More than `reps`: the pairing
-    // decides the verdict, and a round is a few launches.
-    int equalTimeRounds = 11;
+    // How every cell is timed (reps launches at time_res^2 pixels, 0 = at the
+    // image's res; docs/design.md section 6) and how equal-time partners are
+    // paired (rounds: more than reps, the pairing decides the verdict and a
+    // round is a few launches; tolerance; fit; mode). Its partner is each of
+    // `baselines` in turn.
+    equaltime::Protocol protocol;
     bool saveImages = false;
     // A method whose family has a "seed" parameter (MC of every sequence,
     // the shared set's draw included) is rendered this many times, seeds

@@ -156,8 +156,8 @@ struct SceneRun {
     methods::RenderResult render(const methods::MethodSpec& spec) const
     {
         methods::RenderOptions ro;
-        ro.reps = e.reps;
-        ro.timeRes = e.timeRes;
+        ro.reps = e.protocol.reps;
+        ro.timeRes = e.protocol.timeRes;
         return methods::render(rt, table, scene, spec, prec, ro);
     }
 
@@ -246,32 +246,18 @@ methods::MethodSpec mcAt(const Experiment& e, const Baseline& b, long n, double 
 }
 
 // The equal-time MCI partner of cell c, whose method took tM ms in its own
-// cell: equaltime::search (docs/design.md section 6) from the measured t(N)
-// (pts: the scene's MC curve, else the experiment's equal_time_fit points
-// timed here), every kernel at the experiment's time_res; its error image is
-// one more, untimed render at the experiment's res.
+// cell: findPartner from the measured t(N) (pts: the scene's MC curve, else
+// the protocol's fit points timed here), every kernel at the experiment's
+// time_res; its error image is one more, untimed render at the experiment's res.
 results::Record equalTimePartner(const SceneRun& sr, const Cell& c, double tM, equaltime::Curve pts)
 {
     const Experiment& e = sr.e;
     const Baseline& b = *c.baseline;
-    if (pts.size() < 2) {
-        pts.clear();
-        for (long n : e.equalTimeFit) pts.emplace_back(n, sr.render(mcAt(e, b, n)).timing.median_ms);
-    }
     Scene ts = sr.scene;  // the scene at the experiment's time_res
-    if (e.timeRes > 0) ts.res = e.timeRes;
-    auto method = std::make_shared<methods::Prepared>(sr.rt, sr.table, ts, c.parsed, sr.prec);
-    equaltime::Sides sides;
-    sides.method = [method] { return method->launchMs(); };  // whole frames: a multi-pass method's passes count
-    sides.mc = [&](long n, double extra) -> equaltime::Launch {
-        auto p = std::make_shared<methods::Prepared>(sr.rt, sr.table, ts, mcAt(e, b, n, extra), sr.prec);
-        return [p] { return p->launchMs(); };
-    };
-    sides.fractional = mcAt(e, b, 1).has("extra");
-    equaltime::Options opt;
-    opt.tolerance = e.equalTimeTolerance;
-    opt.rounds = e.equalTimeRounds;
-    const equaltime::Result q = equaltime::search(sides, opt, pts, tM);
+    if (e.protocol.timeRes > 0) ts.res = e.protocol.timeRes;
+    const equaltime::Result q = findPartner(
+        e, b, equaltime::preparedFrames(sr.rt, sr.table, ts, sr.prec),
+        [&](const methods::MethodSpec& s) { return sr.render(s).timing.median_ms; }, c.parsed, pts, tM);
     auto s1 = mcAt(e, b, q.n, q.extra);
     methods::RenderOptions imageOnly;
     imageOnly.reps = 1;
@@ -290,7 +276,7 @@ results::Record equalTimePartner(const SceneRun& sr, const Cell& c, double tM, e
     et.partner_cv = q.partner.cv;
     et.ratio = q.ratio;
     et.cell_ms = tM;  // the method's own cell, timed apart
-    et.tolerance = opt.tolerance;
+    et.tolerance = e.protocol.tolerance;
     et.ok = q.ok;
     et.bracketed = q.bracketed;
     et.candidates = q.candidates;
@@ -332,16 +318,17 @@ public:
                    {"luminaire_digest", luminaire(sid.luminaire)},
                    {"reference", refSpec_.canonical()},
                    {"reference_kernel", kernel(refSpec_.name)},
-                   {"reps", e_.reps},
-                   {"time_res", e_.timeRes},
+                   {"reps", e_.protocol.reps},
+                   {"time_res", e_.protocol.timeRes},
                    {"metrics", kMetricSet}};
         if (c.role == "equal_time") {
             in["kernel"] = kernel("mc");
             in["target_kernel"] = kernel(c.parsed.name);
             in["mc"] = c.baseline->canonical;
-            in["equal_time_tolerance"] = e_.equalTimeTolerance;
-            in["equal_time_rounds"] = e_.equalTimeRounds;  // the pairing's rounds decide its N
-            in["equal_time_fit"] = e_.equalTimeFit;
+            in["equal_time_tolerance"] = e_.protocol.tolerance;
+            in["equal_time_rounds"] = e_.protocol.rounds;  // the pairing's rounds decide its N
+            in["equal_time_fit"] = e_.protocol.fit;
+            if (e_.protocol.mode != equaltime::Mode::Search) in["equal_time_mode"] = modeName(e_.protocol.mode);
             in["mci_curve"] = e_.mciCurve;  // the measured t(N) the search starts from
         } else {
             in["kernel"] = kernel(c.parsed.name);
@@ -459,9 +446,11 @@ public:
     {
         context_ = runContext();
         // one experiment at a time in this folder (its shards together)
-        const RunLock lock(resultsPath_,
-                           util::digestHex(json{e_.name, e_.raw, e_.res, e_.reps, e_.timeRes, e_.luminaireDir}.dump()),
-                           e_.name, e_.path);
+        const RunLock lock(
+            resultsPath_,
+            util::digestHex(
+                json{e_.name, e_.raw, e_.res, e_.protocol.reps, e_.protocol.timeRes, e_.luminaireDir}.dump()),
+            e_.name, e_.path);
         util::removeStaleTemporaries(opt_.outDir);  // left by a killed run
         cells_ = cellsOf(e_);
         dropCellsNotInTheExperiment();
@@ -495,9 +484,9 @@ private:
                                      {"experiment_spec", e_.raw},
                                      {"luminaire_dir", e_.luminaireDir},
                                      {"res", e_.res},
-                                     {"reps", e_.reps},
-                                     {"time_res", e_.timeRes},
-                                     {"equal_time_tolerance", e_.equalTimeTolerance},
+                                     {"reps", e_.protocol.reps},
+                                     {"time_res", e_.protocol.timeRes},
+                                     {"equal_time_tolerance", e_.protocol.tolerance},
                                      {"baselines", baselinesJson()},
                                      {"shard", fmt::format("{}/{}", opt_.shardK, opt_.shardN)}});
     }
@@ -668,5 +657,17 @@ private:
 }  // namespace
 
 RunSummary run(const Experiment& e, const RunOptions& opt) { return Runner(e, opt).run(); }
+
+equaltime::Result findPartner(const Experiment& e, const Baseline& b, const equaltime::Frames& frames,
+                              const std::function<double(const methods::MethodSpec&)>& timeOf,
+                              const methods::MethodSpec& method, equaltime::Curve& fit, double targetMs)
+{
+    if (fit.size() < 2) {
+        fit.clear();
+        for (long n : e.protocol.fit) fit.emplace_back(n, timeOf(mcAt(e, b, n)));
+    }
+    return equaltime::pairUp(
+        e.protocol, frames, method, [&](long n, double extra) { return mcAt(e, b, n, extra); }, fit, targetMs);
+}
 
 }  // namespace lb::experiments

@@ -10,7 +10,9 @@
 // file's bytes), `reference` (canonical SPEC) and `reference_kernel`,
 // `kernel` (digest of the method's kernel source with every header it
 // includes, ocl::kernelSourceDigest), `reps`, `time_res`; equal-time
-// partners also `target_kernel`, `mc` and `equal_time_tolerance`; a method
+// partners also `target_kernel`, `mc`, `equal_time_tolerance`,
+// `equal_time_rounds`, `equal_time_fit`, `mci_curve` (and
+// `equal_time_mode` when it is not search); a method
 // with a presets file (cubature:preset=FILE) `preset_spec`, the SPEC its
 // entry for the cell's luminaire resolves to; `metrics`
 // names the error metrics computed (metrics.h), so records of a runner
@@ -29,13 +31,15 @@
 // n=<N> added), `baseline` (curve points and partners), `role` ("method",
 // "mci_curve" or "equal_time"), `scene` (the scene label) and `build_s`.
 // Every equal-time method gets one partner per baseline of the experiment.
-// Equal-time partners are found by equaltime::search (equaltime.h) and carry
+// Equal-time partners are found by the experiment's protocol
+// (equaltime::pairUp, equaltime/protocol.h; findPartner below) and carry
 // its result as results::EqualTime; methods with a seed are rendered with the
 // experiment's `seeds` (their metrics the mean, with a 95 % interval).
 #pragma once
 
 #include "experiments/experiment.h"
 
+#include <functional>
 #include <string>
 
 namespace lb::experiments {
@@ -62,6 +66,16 @@ struct RunSummary {
 };
 
 RunSummary run(const Experiment& e, const RunOptions& opt);
+
+// The equal-time search of `method` against baseline b under the
+// experiment's protocol, aimed from `curve` (the scene's measured t(N) of b;
+// with fewer than two points the protocol's fit N, each timed by timeOf as a
+// cell is) and the method's cell time targetMs; the launches from `frames`
+// (equaltime::preparedFrames on the scene at time_res, or a model in tests).
+// `fit` gets the points the search was aimed from.
+equaltime::Result findPartner(const Experiment& e, const Baseline& b, const equaltime::Frames& frames,
+                              const std::function<double(const methods::MethodSpec&)>& timeOf,
+                              const methods::MethodSpec& method, equaltime::Curve& fit, double targetMs);
 
 // The file name stem of a cell's saved pictures in DIR/images/<scene>/:
 // the SPEC as the experiment wrote it with every character but letters,

@@ -92,6 +92,26 @@ double Dim::toUnit(double v) const
     return std::clamp(u, 0.0, 1.0);
 }
 
+equaltime::Protocol tuneProtocol()
+{
+    equaltime::Protocol p;
+    p.timeRes = 128;
+    p.reps = 5;
+    p.rounds = 5;
+    p.fit = {1, 2, 4, 8, 16, 32, 64};
+    p.mode = equaltime::Mode::Aim;
+    return p;
+}
+
+double pairedMs(const equaltime::Protocol& p, const equaltime::Frames& frames, const methods::MethodSpec& method,
+                const equaltime::McAt& mcAt, const equaltime::Curve& curve, double aimMs)
+{
+    const equaltime::Result q = equaltime::pairUp(p, frames, method, mcAt, curve, aimMs);
+    const double t =
+        equaltime::interpolateMs(curve, q.n) * (1 - q.extra) + equaltime::interpolateMs(curve, q.n + 1) * q.extra;
+    return t / q.ratio;
+}
+
 double equalTimeScore(double metric, double ms, const std::vector<equaltime::MetricPoint>& curveByN)
 {
     return std::log(std::max(metric, 1e-300) / equaltime::metricAt(curveByN, ms));
@@ -233,6 +253,26 @@ void readScenes(const Reader& r, TuneExperiment& e)
     e.validation = sceneSet(r, "validation", lumDir);
 }
 
+// "equal_time": the equal-time protocol (equaltime::readProtocol); rounds
+// default to reps.
+void readEqualTime(const Reader& r, TuneExperiment& e)
+{
+    if (e.objective != "equal_time")
+        r.fail("equal_time", fmt::format("set, but \"objective\" is '{}' (equal_time uses it)", e.objective));
+    const json& j = r.at("equal_time");
+    const std::vector<std::string>& keys = equaltime::protocolKeys();
+    if (!j.is_object()) r.fail("equal_time", fmt::format("expected an object with {}", fmt::join(keys, ", ")));
+    Reader q{r.path, j, "equal_time."};
+    if (q.has("mci_n")) q.fail("mci_n", "the curve's sample counts are the key \"fit\"");
+    q.onlyKnown(std::set<std::string>(keys.begin(), keys.end()));
+    equaltime::ReadRules rules;
+    rules.minTimeRes = 8;
+    rules.maxTimeRes = 4096;
+    rules.kind = e.sceneKeys.kind;
+    equaltime::readProtocol(q, e.equalTime, rules);
+    if (!q.has("rounds")) e.equalTime.rounds = e.equalTime.reps;
+}
+
 // The optimiser: metric, objective, the nlopt algorithms and their budgets.
 void readOptimiser(const Reader& r, TuneExperiment& e)
 {
@@ -259,30 +299,7 @@ void readOptimiser(const Reader& r, TuneExperiment& e)
             r.fail("scale", err.what());
         }
     }
-    if (r.has("equal_time")) {
-        if (e.objective != "equal_time")
-            r.fail("equal_time", fmt::format("set, but \"objective\" is '{}' (equal_time uses it)", e.objective));
-        const json& j = r.at("equal_time");
-        if (!j.is_object()) r.fail("equal_time", "expected an object with time_res, reps, mc, mci_n");
-        Reader q{r.path, j, "equal_time."};
-        q.onlyKnown({"time_res", "reps", "mc", "mci_n"});
-        auto& k = e.equalTime;
-        if (q.has("time_res")) k.timeRes = static_cast<int>(q.integer("time_res", 8, 4096));
-        if (q.has("reps")) k.reps = static_cast<int>(q.integer("reps", 1, 1000));
-        if (q.has("mc")) k.mc = q.string("mc");
-        if (q.has("mci_n")) {
-            k.mciN = q.integers("mci_n", 1, 1 << 20);
-            if (k.mciN.size() < 2) q.fail("mci_n", "expected at least two sample counts (a curve)");
-        }
-    }
-    if (e.objective == "equal_time") {
-        try {
-            auto mc = methods::parseSpec(e.equalTime.mc, e.sceneKeys.kind);
-            if (mc.name != "mc" || mc.given.count("n")) throw InputError("expected an mc SPEC without n");
-        } catch (const InputError& err) {
-            r.fail("equal_time", fmt::format("mc '{}': {}", e.equalTime.mc, err.what()));
-        }
-    }
+    if (r.has("equal_time")) readEqualTime(r, e);
     auto checkAlgo = [&](const std::string& k, const std::string& name) {
         if (nlopt_algorithm_from_string(name.c_str()) < 0)
             r.fail(k, fmt::format("unknown nlopt algorithm '{}' (e.g. LN_SBPLX, LN_NELDERMEAD, GN_DIRECT_L)", name));
@@ -407,44 +424,44 @@ private:
         return ro;
     }
 
-    // The SPEC of MCI at n samples.
-    methods::MethodSpec mciAt(long n) const
+    // The SPEC of MCI at n samples (+ extra).
+    methods::MethodSpec mciAt(long n, double extra = 0) const
     {
-        const auto& k = e_.equalTime;
-        return methods::parseSpec(k.mc + (k.mc.find(':') == std::string::npos ? ":" : ",") + fmt::format("n={}", n),
-                                  e_.sceneKeys.kind);
+        return methods::parseSpec(equaltime::specAt(e_.equalTime.mc, n, extra), e_.sceneKeys.kind);
     }
 
-    // The method's time on case c's MCI curve clock: timed in `reps`
-    // alternating rounds against MCI at the curve's N nearest `aimMs`, its
-    // time the curve's t(N) over the paired ratio t(MCI N) / t(method).
+    // The method's time on case c's MCI curve clock (pairedMs): the
+    // protocol's pairing on the scene at time_res.
     double pairedMs(const Case& c, const methods::MethodSpec& s, double aimMs)
     {
-        const auto& k = e_.equalTime;
-        equaltime::Curve curve;
-        for (size_t i = 0; i < k.mciN.size(); ++i) curve.emplace_back(k.mciN[i], c.mci[i].ms);
-        const long n = equaltime::solveN(curve, aimMs);
         Scene ts = c.scene;
-        if (k.timeRes > 0) ts.res = k.timeRes;
-        methods::Prepared pm(rt_, *c.table, ts, s, prec_), mc(rt_, *c.table, ts, mciAt(n), prec_);
-        const auto tt =
-            ocl::Runtime::timeInterleaved({[&] { return pm.launchMs(); }, [&] { return mc.launchMs(); }}, k.reps, 1);
-        return equaltime::interpolateMs(curve, n) / equaltime::medianRatio(tt, 1);
+        if (e_.equalTime.timeRes > 0) ts.res = e_.equalTime.timeRes;
+        return tune::pairedMs(
+            e_.equalTime, equaltime::preparedFrames(rt_, *c.table, ts, prec_), s,
+            [&](long n, double extra) { return mciAt(n, extra); }, curveOf(c), aimMs);
     }
 
-    // MCI's curve on one scene: metric and time at each of mci_n.
+    // Case c's measured t(N) at the protocol's fit.
+    equaltime::Curve curveOf(const Case& c) const
+    {
+        equaltime::Curve curve;
+        for (size_t i = 0; i < e_.equalTime.fit.size(); ++i) curve.emplace_back(e_.equalTime.fit[i], c.mci[i].ms);
+        return curve;
+    }
+
+    // MCI's curve on one scene: metric and time at each of the protocol's fit.
     std::vector<equaltime::MetricPoint> mciCurve(const Case& c, const std::string& what)
     {
         std::vector<equaltime::MetricPoint> out;
         const auto& k = e_.equalTime;
-        for (long n : k.mciN) {
+        for (long n : k.fit) {
             auto r = methods::render(rt_, *c.table, c.scene, mciAt(n), prec_, timedOptions());
             out.push_back({r.timing.median_ms, metricOf(c.ref, r.image, nullptr)});
         }
         if (!opt_.quiet) {
             std::string line;
             for (size_t i = 0; i < out.size(); ++i)
-                line += fmt::format("  N={} {:.3g} ms {:.3g}", k.mciN[i], out[i].ms, out[i].metric);
+                line += fmt::format("  N={} {:.3g} ms {:.3g}", k.fit[i], out[i].ms, out[i].metric);
             fmt::print(stderr, "tune: {} MCI curve {}:{}\n", what, c.label, line);
         }
         return out;
@@ -757,11 +774,11 @@ json Tuner::header() const
             for (const auto& c : *set) {
                 json pts = json::array();
                 for (size_t i = 0; i < c.mci.size(); ++i)
-                    pts.push_back({{"n", k.mciN[i]}, {"ms", c.mci[i].ms}, {e_.metric, c.mci[i].metric}});
+                    pts.push_back({{"n", k.fit[i]}, {"ms", c.mci[i].ms}, {e_.metric, c.mci[i].metric}});
                 curves[c.label] = pts;
             }
-        doc["equal_time"] = {
-            {"time_res", k.timeRes}, {"reps", k.reps}, {"mc", k.mc}, {"mci_n", k.mciN}, {"mci_curves", curves}};
+        doc["equal_time"] = k.json();
+        doc["equal_time"]["mci_curves"] = curves;
     }
     return doc;
 }

@@ -16,7 +16,8 @@
 //    "objective": "mean",                        // mean | worst | geomean | relative of the metric
 //                                                // over the training scenes, or equal_time (below)
 //    "scale": "point",                           // relative: the SPEC whose metric divides each scene's
-//    "equal_time": {"time_res": 128, "reps": 5, "mc": "mc", "mci_n": [1, 2, 4, 8, 16, 32, 64]},
+//    "equal_time": {"time_res": 128, "reps": 5, "rounds": 5, "mc": "mc", "fit": [1, 2, 4, 8, 16, 32, 64],
+//                   "mode": "aim"},            // the equal-time protocol (equaltime/protocol.h)
 //    "algorithm": "LN_SBPLX",                    // any nlopt name (LN_NELDERMEAD, LN_BOBYQA, ...)
 //    "global": "GN_DIRECT_L", "global_maxeval": 40,   // optional global search before the local one
 //    "maxeval": 30, "maxtime": 60, "seed": 1,
@@ -32,19 +33,20 @@
 // metric of the "scale" SPEC on the same scene (default the point light),
 // rendered once before the search.
 //
-// The equal-time objective: before the search, MCI ("mc" with n = each of
-// "mci_n") is rendered on every scene and timed at time_res^2 pixels (one
+// The equal-time objective: before the search, MCI ("mc" at each N of
+// "fit") is rendered on every scene and timed at time_res^2 pixels (one
 // warm-up, median of reps launches), giving the scene's curve of MCI's metric
-// against its time. Each evaluation times the candidate in paired rounds
-// against MCI at the curve's N nearest its time (equaltime::solveN; reps
-// alternating rounds, equaltime::medianRatio), so that its time is read on
-// the curve's clock: t = t_curve(N) / ratio, a load that changed since the
+// against its time. Each evaluation times the candidate against MCI by the
+// protocol's search (pairedMs): in mode aim, once in `rounds` alternating
+// rounds against MCI at the N that equaltime::solveN aims at on the curve; in
+// mode search, until the ratio is within the tolerance. Its time is read on
+// the curve's clock, t = t_curve(N) / ratio, a load that changed since the
 // curve was measured hitting both sides of the ratio alike. Each scene scores
 // log(metric / MCI's metric at that time), interpolated log-log on the curve
 // (equaltime::metricAt); the objective is the mean
 // over the scenes. So a candidate that gains accuracy only by becoming slower
 // gains nothing against MCI. Noise: each evaluation's time is one median of
-// `reps` launches on whatever else the machine runs; at 1.5x timing noise the
+// `rounds` ratios on whatever else the machine runs; at 1.5x timing noise the
 // score moves by ~log 1.5 = 0.4 (MCI's metric ~ 1/t), so compare
 // equal-time objectives that differ by more than that, or rerun.
 //
@@ -75,7 +77,7 @@
 // program; references come from the render cache.
 #pragma once
 
-#include "equaltime/equaltime.h"
+#include "equaltime/protocol.h"
 
 #include "methods/registry.h"
 #include "scene/scene_keys.h"
@@ -95,13 +97,9 @@ struct SceneSet {
     std::vector<std::string> rotationText;
 };
 
-// The "equal_time" key: how the candidate and MCI are timed.
-struct EqualTimeKeys {
-    int timeRes = 128;  // pixels per side of the timed launches
-    int reps = 5;  // timed launches after one warm-up; their median counts
-    std::string mc = "mc";  // MCI's SPEC, n set from mciN
-    std::vector<long> mciN = {1, 2, 4, 8, 16, 32, 64};
-};
+// The "equal_time" key's defaults: time_res 128, reps 5, rounds = reps,
+// tolerance 0.10, mc "mc", fit 1, 2, 4, ..., 64, mode aim.
+equaltime::Protocol tuneProtocol();
 
 struct TuneExperiment {
     std::string path, name;
@@ -117,7 +115,7 @@ struct TuneExperiment {
     std::string metric = "nmse";  // metrics::minimisableMetrics()
     std::string objective = "mean";  // mean | worst | geomean | relative | equal_time
     std::string scale = "point";  // relative: the SPEC whose metric divides each scene's
-    EqualTimeKeys equalTime;
+    equaltime::Protocol equalTime = tuneProtocol();  // how the candidate and MCI are timed
     std::string algorithm = "LN_SBPLX";
     std::string global;  // "" = none
     int globalMaxeval = 0;  // 0: half of maxeval
@@ -160,6 +158,13 @@ nlohmann::json runTune(const TuneExperiment& e, const TuneOptions& opt);
 // The equal-time score of one scene: log(metric / equaltime::metricAt(curve, ms)),
 // the curve MCI's (time at the equal-time resolution, metric) in order of N.
 double equalTimeScore(double metric, double ms, const std::vector<equaltime::MetricPoint>& curveByN);
+
+// The candidate's time on MCI's curve clock: the protocol's search
+// (equaltime::pairUp) of `method` against MCI (mcAt) on `frames`, aimed from
+// the measured t(N) `curve` and the candidate's own time aimMs; t = the
+// curve's t at the N found (+ extra, linearly) over the paired ratio.
+double pairedMs(const equaltime::Protocol& p, const equaltime::Frames& frames, const methods::MethodSpec& method,
+                const equaltime::McAt& mcAt, const equaltime::Curve& curve, double aimMs);
 
 // What an objective makes of the per-scene scores (the metric; with relative
 // metric / scale; with equal_time the log ratio): mean, relative and

@@ -312,7 +312,9 @@ TEST(Tune, BadEqualTimeKeysAreRefused)
              {"mean", {{"reps", 5}}, "\"objective\" is 'mean'"},
              {"equal_time", {{"mc", "mc:n=4"}}, "without n"},
              {"equal_time", {{"mc", "cubature"}}, "without n"},
-             {"equal_time", {{"mci_n", {8}}}, "at least two"},
+             {"equal_time", {{"fit", {8}}}, "at least two"},
+             {"equal_time", {{"mci_n", {1, 8}}}, "\"fit\""},
+             {"equal_time", {{"mode", "fast"}}, "search or aim"},
              {"equal_time", {{"time_res", 0}}, "time_res"}}) {
         std::string msg = smokeRefusal({{"objective", obj}, {"equal_time", keys}});
         EXPECT_NE(msg.find("equal_time"), std::string::npos) << msg;
@@ -361,7 +363,7 @@ TEST(Tune, EqualTimeObjectiveChargesTheSlowerSpec)
             {"train", {{"luminaires", {"lambert.ldt"}}, {"heights", {1.1}}, {"rotations", {"pi"}}}},
             {"validation", {{"luminaires", {"batwing.ldt"}}, {"heights", {1.1}}, {"rotations", {"pi"}}}},
             {"objective", "equal_time"},
-            {"equal_time", {{"time_res", 128}, {"reps", 5}, {"mci_n", {1, 4, 16, 64}}}},
+            {"equal_time", {{"time_res", 128}, {"reps", 5}, {"fit", {1, 4, 16, 64}}}},
             {"maxeval", 1}};  // the defaults only
         test::CliResult r;
         docs[method] = runTuneCli(e, &r);
