@@ -38,6 +38,11 @@ TEST(BenchCli, QuickJsonRun)
     EXPECT_NEAR(j["mc"]["ratio"].get<double>(), j["mc"]["naive_ms"].get<double>() / j["mc"]["fast_ms"].get<double>(),
                 1e-9);
     EXPECT_GE(j["cubature"]["equal_time_n"].get<int>(), 1);
+    // The t(N) curve at the protocol's fit (--quick: 1, 8, 32), its rounds max(reps, 11).
+    EXPECT_EQ(j["protocol"]["fit"], nlohmann::json({1, 8, 32}));
+    EXPECT_EQ(j["protocol"]["rounds"], 11);
+    ASSERT_EQ(j["mc_fit"]["points"].size(), 3u);
+    for (size_t i = 0; i < 3; ++i) EXPECT_EQ(j["mc_fit"]["points"][i][0], j["protocol"]["fit"][i]);
     EXPECT_TRUE(j["context"].contains("commit"));
     // h = 1: the cubature takes the straight-line rectangle fan, 8 lanes on a
     // CPU device (PoCL), one pixel per work-item elsewhere
@@ -87,6 +92,13 @@ TEST(BenchCli, BadOptionsExitTwo)
     EXPECT_EQ(runBench("--local 8 --res 8").first, 2);
     EXPECT_EQ(runBench("--res 0").first, 2);
     EXPECT_EQ(runBench("--rounds 0").first, 2);
+    // --equal-time: a JSON object of the protocol's keys; reps and time_res are --reps and --res
+    for (const char* bad :
+         {"'[1]'", "'{\"reps\": 3}'", "'{\"fit\": [8]}'", "'{\"mode\": \"fast\"}'", "'{\"rounds\": 11'"}) {
+        auto c = test::runCli(std::string("bench --res 8 --equal-time ") + bad);
+        EXPECT_EQ(c.code, 2) << bad << ": " << c.err;
+        EXPECT_NE(c.err.find("--equal-time"), std::string::npos) << c.err;
+    }
 }
 
 }  // namespace
