@@ -3,7 +3,7 @@
     scripts/kernel-limits.py [--allow FILE] [--lines N] [--params N] [--list] FILE...
 e.g. scripts/kernel-limits.py $(git ls-files 'kernels/*.h' 'kernels/*.inc' 'kernels/*.cl')
 A function is a body '{' at file scope (LB_FN, LB_FN_INLINE, __kernel or a
-macro such as CUB_KERNEL that opens one); LB_VFN(name) counts as name. Its
+macro such as LB_RENDER_KERNEL that opens one); LB_VFN(name) counts as name. Its
 lines are counted from the '{' to the '}' (as scripts/long-functions.py), its
 parameters are the top-level commas of its parameter list plus one (none for
 '()' or '(void)'). A function may have at most --lines (80) lines and, unless
@@ -105,7 +105,7 @@ def _function_row(s, start, p):
     n, before = param_count(head)
     name = re.sub(r'LB_VFN\((\w+)\)', r'\1', before)
     mm = re.search(r'(\w+)\s*$', name)
-    if n is None:  # a macro that opens a kernel, e.g. CUB_KERNEL
+    if n is None:  # a macro that opens a kernel, e.g. LB_RENDER_KERNEL
         mm = re.search(r'(\w+)\s*$', head)
     kernel = '__kernel' in head[head.rfind(';') + 1:] or n is None
     first = s.count('\n', 0, q) + 1
