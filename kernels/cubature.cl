@@ -52,6 +52,7 @@
  * general kernel and its straight-line form in one and eight lanes, with LB_CUB_AREA)
  */
 #include "common/lbmath.h"
+#include "common/entry.h"
 
 #ifndef LB_CUB_TRI
 #define LB_CUB_TRI LB_CUB_FAN
@@ -66,23 +67,16 @@
 #define LB_CUB_DYNAMIC LB_CUB_CP
 #endif
 
-/* The registry's convention (host/methods/registry.h): P scene parameters
- * (common/scene.h); lum packed luminaire (common/photometry.h); out N x N
- * irradiance in lux, row-major, row 0 at the top; rows row0 .. row0 + global
- * height. stats: 2 ints per pixel of the whole image (triangles, flips),
- * written when want_stats != 0 (pass any small buffer otherwise); then the
- * continuous tunables, one real each (LB_CUB_TUNABLES). Each form of the
- * kernel below opens with this signature and CUB_PROLOGUE. */
-#define CUB_TUNABLE_ARG(name) , real name
+/* The registry's convention (common/entry.h), then the cubature's arguments
+ * LB_CUB_ENTRY_ARGS (stats: pass any small buffer where want_stats is 0).
+ * Each form of the kernel below opens with this signature and CUB_PROLOGUE. */
 #define CUB_TUNABLE_SET(name) tun.name = name;
 /* CUB_EXTRA_ARGS: arguments a file that includes this one (sh.cl's fallback)
  * appends to the signature, unused here. */
 #ifndef CUB_EXTRA_ARGS
 #define CUB_EXTRA_ARGS
 #endif
-#define CUB_KERNEL                                                                                             \
-    __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,     \
-                         __global int* stats, int want_stats LB_CUB_TUNABLES(CUB_TUNABLE_ARG) CUB_EXTRA_ARGS)
+#define LB_ENTRY_ARGS LB_CUB_ENTRY_ARGS CUB_EXTRA_ARGS
 /* opt: the structural variant (the -D flags above); tun: the arguments */
 #define CUB_PROLOGUE                                                                                           \
     lb_cub_options opt;                                                                                        \
@@ -109,16 +103,11 @@
 #endif
 
 #if defined(LB_CUB_FORM) || defined(LB_CUB_DISK_STRAIGHT)
-#if defined(LB_LANES) && LB_LANES == 8 && !defined(LB_DOUBLE)
-/* Eight pixels of a row per work-item in float8 (common/lanes8.h): the host
- * launches ceil(N / 8) work-items per row. Float only: a double build ignores
- * LB_LANES (the host asks for 8 lanes only in float). */
-#include "common/lanes8.h"
-#include "common/lanes_all.inc"
+/* One or eight pixels of a row per work-item (common/lanes_kernel.h). */
+#include "common/lanes_kernel.h"
+#if LB_NLANES == 8
 #define CUB_FORM CUB_NAME(LB_CUB_FORM, _x8)
 #else
-/* One pixel per work-item (GPUs, double, the exact lookup). */
-#include "common/lanes1.h"
 #define CUB_FORM LB_CUB_FORM
 #endif
 #ifdef LB_CUB_DISK_STRAIGHT
@@ -154,15 +143,11 @@ LB_FN void LB_VFN(cub_store)(__global real* out, __global int* stats, int want_s
 /* The disk's straight-line form (common/disk_lanes.inc): the same method as
  * the one-pixel disk kernel below, with fixed sectors and nodes for every
  * lane; where every lane takes the area form alone the fan is not run. */
-CUB_KERNEL
+LB_RENDER_KERNEL
 {
     CUB_PROLOGUE
     (void)opt;
-    int col0, row, res;
-    LB_V ou, ov, on;
-    real au, av, an;
-    if (!LB_VFN(lb_work_item_pixels)(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
-        return;
+    LB_RENDER_PIXELS;
     LB_VFN(lb_dsl_pixel) px = LB_VFN(lb_dsl_pixel_at)(P[LB_P_W], P[LB_P_L], ou, ov, on, au, av, an);
     LB_V e = R(0), ta = R(0);
 #ifdef LB_CUB_AREA
@@ -184,14 +169,10 @@ CUB_KERNEL
 /* The scene needs no clip (or, with LB_CUB_RECT_CLIP, one along the u
  * edges): without LB_CUB_RECT_CLIP horizon_eps is unused, the host chose
  * the form because it clips nothing. */
-CUB_KERNEL
+LB_RENDER_KERNEL
 {
     CUB_PROLOGUE
-    int col0, row, res;
-    LB_V ou, ov, on;
-    real au, av, an;
-    if (!LB_VFN(lb_work_item_pixels)(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
-        return;
+    LB_RENDER_PIXELS;
     LB_V hc = LB_VFN(lb_cub_rect_shift)(on, LB_VFN(lb_plane_distance)(P, LB_LANE_INDEX + (real)col0, row),
                                         tun.plane_eps);
     LB_V v0c = ov, lc = (LB_V)(P[LB_P_L]);
@@ -238,15 +219,11 @@ CUB_KERNEL
  * around the closest point, and with LB_CUB_AREA = n the polar Gauss rule
  * of the area form blended in by lb_disk_area_weight. The rectangle's structural options and
  * corner tunables have no meaning here (the host refuses them). */
-CUB_KERNEL
+LB_RENDER_KERNEL
 {
     CUB_PROLOGUE
     (void)opt;
-    int px;
-    lb_light L;
-    real3 x, nx;
-    if (!lb_work_item_receiver(P, row0, &px, &L, &x, &nx))
-        return;
+    LB_RENDER_RECEIVER;
     real e = R(0), ta = R(0);
 #ifdef LB_CUB_AREA
     ta = lb_disk_area_weight(L, x, nx, tun.area_q, tun.area_sin);
@@ -264,7 +241,7 @@ CUB_KERNEL
     }
 }
 #else
-CUB_KERNEL
+LB_RENDER_KERNEL
 {
     CUB_PROLOGUE
     int col, row, px;

@@ -16,61 +16,33 @@
  * @variants: "-DLB_DYN_POINT" | "-DLB_DYN_CP" | "-DLB_DYN_NP" | "-DLB_DYN_MRP" | "-DLB_DYN_POINT -DLB_DYN_RECT" | "-DLB_DYN_CP -DLB_DYN_RECT -DLB_LUT" | "-DLB_DYN_POINT -DLB_DYN_RECT -DLB_LUT -DLB_LANES=8" | "-DLB_DYN_CP -DLB_DYN_RECT -DLB_LUT -DLB_LANES=8" | "-DLB_DYN_NP -DLB_DYN_RECT" | "-DLB_DYN_MRP -DLB_DYN_RECT -DLB_LUT" | "-DLB_DYN_NP -DLB_DYN_RECT -DLB_LUT -DLB_LANES=8" | "-DLB_DYN_MRP -DLB_DYN_RECT -DLB_LUT -DLB_LANES=8"
  */
 #include "common/lbmath.h"
+#include "common/entry.h"
 
-/* LB_DYN_RECT_CALL(fn): the straight-line form fn (or fn_x8) on the pixel's
- * rectangle; np and mrp also take the skew. */
+/* skew: the NP skew of lb_normal_point (only NP and MRP read it). */
+#define LB_ENTRY_ARGS , real skew
+
 #ifdef LB_DYN_RECT
+/* The straight-line form: np and mrp also take the skew. */
 #if defined(LB_DYN_POINT)
-#define LB_DYN_RECT_FN(s) lb_point_rect##s
+#define LB_DYN_RECT_FN LB_VFN(lb_point_rect)
 #elif defined(LB_DYN_CP)
-#define LB_DYN_RECT_FN(s) lb_cp_rect##s
+#define LB_DYN_RECT_FN LB_VFN(lb_cp_rect)
 #elif defined(LB_DYN_NP)
-#define LB_DYN_RECT_FN(s) lb_np_rect##s
+#define LB_DYN_RECT_FN LB_VFN(lb_np_rect)
 #define LB_DYN_SKEW , skew
 #elif defined(LB_DYN_MRP)
-#define LB_DYN_RECT_FN(s) lb_mrp_rect##s
+#define LB_DYN_RECT_FN LB_VFN(lb_mrp_rect)
 #define LB_DYN_SKEW , skew
 #endif
 #ifndef LB_DYN_SKEW
 #define LB_DYN_SKEW
 #endif
-#define LB_DYN_RECT_CALL(s) LB_DYN_RECT_FN(s)(lum, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an LB_DYN_SKEW)
-#endif
-
-#if defined(LB_DYN_RECT) && defined(LB_LANES) && LB_LANES == 8 && !defined(LB_DOUBLE)
-#include "common/lanes8.h"
-#include "common/lanes_all.inc"
-#include "common/lanes_end.h"
-
-__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0, real skew)
-{
-    int col0, row, res;
-    float8 ou, ov, on;
-    real au, av, an;
-    if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
-        return;
-    lb_store_x8(out, row * res + col0, res - col0, LB_DYN_RECT_CALL(_x8));
-}
-#elif defined(LB_DYN_RECT)
-__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0, real skew)
-{
-    int col, row, res;
-    real ou, ov, on, au, av, an;
-    if (!lb_work_item_pixels(P, row0, &col, &row, &res, &ou, &ov, &on, &au, &av, &an))
-        return;
-    out[row * res + col] = LB_DYN_RECT_CALL();
-}
+#define LB_ENTRY_FORM LB_DYN_RECT_FN(lum, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an LB_DYN_SKEW)
+#include "common/entry_straight.inc"
 #else
-
-/* One work-item per pixel of rows row0 .. row0 + global height. skew: the NP
- * skew of lb_normal_point (only NP and MRP read it). */
-__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0, real skew)
+LB_RENDER_KERNEL
 {
-    int px;
-    lb_light L;
-    real3 x, nx;
-    if (!lb_work_item_receiver(P, row0, &px, &L, &x, &nx))
-        return;
+    LB_RENDER_RECEIVER;
     real e = R(0);
 #ifdef LB_DYN_POINT
     real3 pc = L.c - x;

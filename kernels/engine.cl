@@ -10,41 +10,17 @@
  * @variants: "" | "-DLB_LUT" | "-DLB_ENG_RECT" | "-DLB_ENG_RECT -DLB_LUT" | "-DLB_ENG_RECT -DLB_LUT -DLB_LUT_1D" | "-DLB_ENG_RECT -DLB_LUT -DLB_LANES=8"
  */
 #include "common/lbmath.h"
+#include "common/entry.h"
 
-#define LB_ENG_CALL(s) lb_engine_rect##s(lum, P, ou, ov, on, au, av, an)
+#define LB_ENTRY_ARGS
 
-#if defined(LB_ENG_RECT) && defined(LB_LANES) && LB_LANES == 8 && !defined(LB_DOUBLE)
-#include "common/lanes8.h"
-#include "common/lanes_all.inc"
-#include "common/lanes_end.h"
-
-__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0)
-{
-    int col0, row, res;
-    float8 ou, ov, on;
-    real au, av, an;
-    if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
-        return;
-    lb_store_x8(out, row * res + col0, res - col0, LB_ENG_CALL(_x8));
-}
-#elif defined(LB_ENG_RECT)
-__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0)
-{
-    int col, row, res;
-    real ou, ov, on, au, av, an;
-    if (!lb_work_item_pixels(P, row0, &col, &row, &res, &ou, &ov, &on, &au, &av, &an))
-        return;
-    out[row * res + col] = LB_ENG_CALL();
-}
+#ifdef LB_ENG_RECT
+#define LB_ENTRY_FORM LB_VFN(lb_engine_rect)(lum, P, ou, ov, on, au, av, an)
+#include "common/entry_straight.inc"
 #else
-/* One work-item per pixel of rows row0 .. row0 + global height. */
-__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0)
+LB_RENDER_KERNEL
 {
-    int px;
-    lb_light L;
-    real3 x, nx;
-    if (!lb_work_item_receiver(P, row0, &px, &L, &x, &nx))
-        return;
+    LB_RENDER_RECEIVER;
     real e = R(0);
     if (L.shape == LB_SHAPE_DISK) {
         lb_disk_view w = lb_disk_visible_arc(L, x, nx);

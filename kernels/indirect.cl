@@ -34,6 +34,7 @@
 #include "common/lbmath.h"
 #include "common/area_ref.h"
 #include "common/indirect.h"
+#include "common/entry.h"
 
 #ifndef LB_RSM_DIRECT
 #define LB_RSM_DIRECT 1
@@ -530,14 +531,10 @@ __kernel void ac_evaluate(int K, int T, __global real* state, __global const rea
 }
 
 /* ---- evaluation: E_ind at each floor pixel from n virtual lights ---- */
-__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
-                     __global const real* lights, int nlights, real clamp2)
+#define LB_ENTRY_ARGS , __global const real *lights, int nlights, real clamp2
+LB_RENDER_KERNEL
 {
-    int px;
-    lb_light L;
-    real3 x, nx;
-    if (!lb_work_item_receiver(P, row0, &px, &L, &x, &nx))
-        return;
+    LB_RENDER_RECEIVER;
     real e = R(0);
     for (int k = 0; k < nlights; ++k) {
         __global const real* l = lights + LB_IND_TEX * k;

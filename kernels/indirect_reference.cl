@@ -17,6 +17,7 @@
 #include "common/lbmath.h"
 #include "common/area_ref.h"
 #include "common/indirect.h"
+#include "common/entry.h"
 
 /* Node i (0 .. nodes-1) of the grid, or cell centre i - nodes: its surface
  * point and normal. grid as in common/indirect.h; cells[k] the first cell
@@ -90,21 +91,14 @@ __kernel void edir_delta(__global const int* grid, __global const int* cells, __
     delta[k] = d + en;
 }
 
-/* One floor pixel per work-item: E_ind and its error estimate. */
-__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
-                     __global const real* edir, __global const int* grid, __global const real* delta,
-                     __global real* errout, __global int* splits_out, real rel_tol, int max_splits)
+/* One floor pixel per work-item: E_ind and its error estimate, the bounce
+ * cubature's plus the interpolation's. */
+#define LB_ENTRY_ARGS                                                                                          \
+    , __global const real *edir, __global const int *grid, __global const real *delta LB_REFERENCE_ARGS
+LB_RENDER_KERNEL
 {
-    int px;
-    lb_light L;
-    real3 x, nx;
-    if (!lb_work_item_receiver(P, row0, &px, &L, &x, &nx))
-        return;
+    LB_REFERENCE_OPENING;
     real rho = P[LB_P_ALBEDO];
-    real err;
-    int splits;
     real e = lb_bounce_irradiance(edir, grid, x, nx, rho, rel_tol, max_splits, &err, &splits);
-    out[px] = e;
-    errout[px] = err + lb_bounce_interp_err(delta, x, nx, rho);
-    splits_out[px] = splits;
+    LB_REFERENCE_STORE(e, err + lb_bounce_interp_err(delta, x, nx, rho));
 }

@@ -47,6 +47,13 @@
  * @variants: "" | "-DLB_LUT" | "-DLB_LUT -DLB_LUT_1D -DLB_NO_HORIZON -DLB_NO_BACK" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_MC_WARP" | "-DLB_MC_EXT -DLB_MC_DOMAIN=3 -DLB_MC_SEQ=3 -DLB_MC_CLIPV -DLB_MC_VAR -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=2 -DLB_MC_SEQ=1 -DLB_MC_SHIFT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=4 -DLB_MC_SEQ=2 -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=5 -DLB_MC_SEQ=1 -DLB_MC_CLIPV" | "-DLB_MC_EXT -DLB_MC_DOMAIN=6 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_LUT" | "-DLB_MC_EXT -DLB_MC_SEQ=2 -DLB_MC_DISK" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_MC_VAR -DLB_LUT -DLB_MC_STRAIGHT -DLB_LANES=8" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=0 -DLB_MC_SHIFT -DLB_LUT -DLB_NO_BACK -DLB_MC_STRAIGHT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=0 -DLB_MC_SEQ=1 -DLB_LUT -DLB_MC_STRAIGHT -DLB_LANES=8" | "-DLB_MC_EXT -DLB_MC_DOMAIN=2 -DLB_MC_SEQ=2 -DLB_MC_CLIPV -DLB_LUT -DLB_MC_STRAIGHT -DLB_LANES=8" | "-DLB_MC_EXT -DLB_MC_DOMAIN=3 -DLB_MC_SEQ=3 -DLB_MC_CLIPV -DLB_MC_VAR -DLB_LUT -DLB_MC_STRAIGHT" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=3 -DLB_MC_WARP -DLB_LUT -DLB_MC_STRAIGHT -DLB_LANES=8" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=0 -DLB_MC_SHIFT -DLB_MC_DISK" | "-DLB_MC_EXT -DLB_MC_DOMAIN=1 -DLB_MC_SEQ=3 -DLB_MC_DISK -DLB_MC_VAR -DLB_LUT"
  */
 #include "common/lbmath.h"
+#include "common/entry.h"
+
+/* After the registry's arguments (common/entry.h): st, n and extra as above;
+ * seed, np, lg, min_solid, var and tab the extended path's (mc_ext). */
+#define LB_ENTRY_ARGS                                                                                          \
+    , __global const real *st, int n, float extra, int seed, int np, int lg, real min_solid, __global real *var, \
+        __global const float *tab
 
 /* n_L . (corner(-u,-v) - pixel(col, row)): the pixel lies on or behind the
  * light's plane when >= 0 (the same arithmetic as the kernel's `on`). */
@@ -536,12 +543,7 @@ LB_FN_INLINE int mc_tile_count(int n, float extra, int row0, int res, int lanes,
  * estimates as mc_ext (common/mc_lanes.inc and proj_lanes.inc hold the
  * samplers for both; tests/methods/test_mc_straight.cpp holds the form to
  * mc_ext). */
-#if defined(LB_LANES) && LB_LANES == 8 && !defined(LB_DOUBLE)
-#include "common/lanes8.h"
-#include "common/lanes_all.inc"
-#else
-#include "common/lanes1.h"
-#endif
+#include "common/lanes_kernel.h"
 
 /* The pixels' view of the light, as mc_view, and the domain's set-up, as
  * mc_domain. */
@@ -776,26 +778,10 @@ LB_FN void LB_VFN(mcs_point)(__global const real* st, const LB_VFN(mcs_seq) * q,
     (void)i, (void)j;
 }
 
-LB_FN void LB_VFN(mcs_store)(__global real* out, int i, int left, LB_V e)
-{
-#if LB_NLANES == 8
-    lb_store_x8(out, i, left, e);
-#else
-    (void)left;
-    out[i] = e;
-#endif
-}
-
-__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
-                     __global const real* st, int n, float extra, int seed, int np, int lg, real min_solid,
-                     __global real* var, __global const float* tab)
+LB_RENDER_KERNEL
 {
     (void)np, (void)tab, (void)var;
-    int col0, row, res;
-    LB_V ou, ov, on;
-    real au, av, an;
-    if (!LB_VFN(lb_work_item_pixels)(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
-        return;
+    LB_RENDER_PIXELS;
     int m = mc_tile_count(n, extra, row0, res, LB_NLANES, &st);
     LB_V sum = R(0) * ou, d1 = sum, d2 = sum;
 #ifdef LB_NO_BACK
@@ -834,19 +820,17 @@ __kernel void render(__global const real* P, __global const float* lum, __global
             d2 += (e - e0) * (e - e0);
         }
     }
-    LB_VFN(mcs_store)(out, row * res + col0, res - col0, sum / (real)m);
+    LB_STORE(out, row * res + col0, res - col0, sum / (real)m);
 #ifdef LB_MC_VAR
     LB_V ev = d2 - d1 * d1 / (real)m;
     ev = ev > R(0) ? ev : R(0) * ev;
-    LB_VFN(mcs_store)(var, row * res + col0, res - col0, m > 1 ? ev / ((real)m * (real)(m - 1)) : R(0) * ev - R(1));
+    LB_STORE(var, row * res + col0, res - col0, m > 1 ? ev / ((real)m * (real)(m - 1)) : R(0) * ev - R(1));
 #endif
 }
 #include "common/lanes_end.h"
 
 #else
-__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
-                     __global const real* st, int n, float extra, int seed, int np, int lg, real min_solid,
-                     __global real* var, __global const float* tab)
+LB_RENDER_KERNEL
 {
     int col = get_global_id(0);
     int row = row0 + (int)get_global_id(1);

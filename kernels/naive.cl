@@ -6,15 +6,13 @@
  * @variants: ""
  */
 #include "common/lbmath.h"
+#include "common/entry.h"
 
-__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
-                     __global const real* st, int n)
+#define LB_ENTRY_ARGS , __global const real *st, int n
+
+LB_RENDER_KERNEL
 {
-    int px;
-    lb_light L;
-    real3 x, nx;
-    if (!lb_work_item_receiver(P, row0, &px, &L, &x, &nx))
-        return;
+    LB_RENDER_RECEIVER;
     real3 corner = L.c - L.u * (R(0.5) * L.w) - L.v * (R(0.5) * L.l);
     real sum = R(0);
     for (int i = 0; i < n; ++i) {

@@ -21,22 +21,15 @@
  */
 #include "common/lbmath.h"
 #include "common/area_ref.h"
+#include "common/entry.h"
 
-/* rel_tol: target relative error per pixel; max_splits: budget of cell
- * splits per pixel (each costs 4 x 80 integrand evaluations). stats[pixel]
- * (int) receives the number of splits made, for the reported counters. */
-__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
-                     __global real* errout, __global int* splits_out, real rel_tol, int max_splits)
+/* The reference kernels' arguments (common/entry.h); each cell split costs
+ * 4 x 80 integrand evaluations. */
+#define LB_ENTRY_ARGS LB_REFERENCE_ARGS
+
+LB_RENDER_KERNEL
 {
-    int px;
-    lb_light L;
-    real3 x, nx;
-    if (!lb_work_item_receiver(P, row0, &px, &L, &x, &nx))
-        return;
-    real err;
-    int splits;
+    LB_REFERENCE_OPENING;
     real e = lb_ref_irradiance(lum, L, x, nx, rel_tol, max_splits, &err, &splits);
-    out[px] = e;
-    errout[px] = err;
-    splits_out[px] = splits;
+    LB_REFERENCE_STORE(e, err);
 }

@@ -20,30 +20,26 @@
  *                    sh's: robust's, then zc and far_size.
  * @variants: "-DLB_SH_L=0" | "-DLB_SH_L=1" | "-DLB_SH_L=8" | "-DLB_SH_L=16" | "-DLB_SH_L=8 -DLB_LUT" | "-DLB_SH_FALLBACK -DLB_LUT -DLB_CUB_AREA=3" | "-DLB_SH_FALLBACK -DLB_LUT -DLB_CUB_AREA=3 -DLB_CUB_RECT_FAN -DLB_LANES=8"
  */
-#ifdef LB_SH_FALLBACK
+/* sh's arguments after robust's (LB_CUB_ENTRY_ARGS), in both kernels */
 #define CUB_EXTRA_ARGS , __global const real *zc, real far_size
+#ifdef LB_SH_FALLBACK
 #include "cubature.cl"
 #else
 #include "common/lbmath.h"
+#include "common/entry.h"
 
 #ifndef LB_SH_L
 #define LB_SH_L 8
 #endif
-#define SH_TUNABLE_ARG(name) , real name
+#define LB_ENTRY_ARGS LB_CUB_ENTRY_ARGS CUB_EXTRA_ARGS
 
-/* One work-item per pixel of rows row0 .. row0 + global height; the
- * arguments between want_stats and zc are robust's (the fallback's), unused. */
-__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
-                     __global int* stats, int want_stats LB_CUB_TUNABLES(SH_TUNABLE_ARG), __global const real* zc,
-                     real far_size)
+/* One work-item per pixel; robust's arguments (stats .. the tunables) are
+ * unused. */
+LB_RENDER_KERNEL
 {
     (void)stats;
     (void)want_stats;
-    int px;
-    lb_light L;
-    real3 x, nx;
-    if (!lb_work_item_receiver(P, row0, &px, &L, &x, &nx))
-        return;
+    LB_RENDER_RECEIVER;
     const int nb = LB_SH_L + 2, nd = 2 * LB_SH_L + 4; /* host/methods/sh_fit.h shBands, shDirs */
     real3 p[LB_MAXV];
     int m = lb_clipped_light(L, x, nx, p);

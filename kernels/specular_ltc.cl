@@ -27,6 +27,7 @@
  * @variants: "" | "-DLB_LUT" | "-DLB_LUT -DLB_LTC_RADIANCE=3 -DLB_LTC_RECT" | "-DLB_LUT -DLB_LTC_RADIANCE=3 -DLB_LTC_RECT -DLB_LANES=8" | "-DLB_LUT -DLB_LTC_RECT" | "-DLB_LUT -DLB_LTC_RECT -DLB_LANES=8" | "-DLB_LUT -DLB_LTC_RECT -DLB_CUB_RECT_CLIP -DLB_LANES=8" | "-DLB_LUT -DLB_CUB_TRI=1 -DLB_LTC_EXACT_G" | "-DLB_CUB_TRI=1" | "-DLB_LTC_EXACT_G" | "-DLB_LTC_RADIANCE=1" | "-DLB_LTC_RADIANCE=2" | "-DLB_LTC_RADIANCE=3" | "-DLB_LTC_RADIANCE=1 -DLB_LTC_EXACT_G"
  */
 #include "common/lbmath.h"
+#include "common/entry.h"
 
 #ifndef LB_LTC_RADIANCE
 #define LB_LTC_RADIANCE 0
@@ -35,42 +36,17 @@
 #define LB_CUB_TRI LB_CUB_FAN
 #endif
 
-#if defined(LB_LTC_RECT) && defined(LB_LANES) && LB_LANES == 8 && !defined(LB_DOUBLE)
-#include "common/lanes8.h"
-#include "common/lanes_all.inc"
-#include "common/lanes_end.h"
+#define LB_ENTRY_ARGS , __global const float *ltc, real plane_eps, real horizon_eps
 
-__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
-                     __global const float* ltc, real plane_eps, real horizon_eps)
-{
-    int col0, row, res;
-    float8 ou, ov, on;
-    real au, av, an;
-    if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
-        return;
-    float8 col = (float8)(0, 1, 2, 3, 4, 5, 6, 7) + (float)col0;
-    lb_store_x8(out, row * res + col0, res - col0, lb_ltc_rect_shade_x8(P, lum, ltc, col, row, ou, ov, on, au, av, an, plane_eps, horizon_eps));
-}
-#elif defined(LB_LTC_RECT)
-__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
-                     __global const float* ltc, real plane_eps, real horizon_eps)
-{
-    int col, row, res;
-    real ou, ov, on, au, av, an;
-    if (!lb_work_item_pixels(P, row0, &col, &row, &res, &ou, &ov, &on, &au, &av, &an))
-        return;
-    out[row * res + col] = lb_ltc_rect_shade(P, lum, ltc, (real)col, row, ou, ov, on, au, av, an, plane_eps,
-                                               horizon_eps);
-}
+#ifdef LB_LTC_RECT
+#define LB_ENTRY_FORM                                                                                          \
+    LB_VFN(lb_ltc_rect_shade)(P, lum, ltc, LB_LANE_INDEX + (real)col0, row, ou, ov, on, au, av, an, plane_eps,  \
+                              horizon_eps)
+#include "common/entry_straight.inc"
 #else
-__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
-                     __global const float* ltc, real plane_eps, real horizon_eps)
+LB_RENDER_KERNEL
 {
-    int px;
-    lb_light L;
-    real3 x, nx;
-    if (!lb_work_item_receiver(P, row0, &px, &L, &x, &nx))
-        return;
+    LB_RENDER_RECEIVER;
     real3 wo = normalize(lb_p3(P, LB_P_EYE) - x);
     real alpha = P[LB_P_ALPHA];
     real ls = R(0);

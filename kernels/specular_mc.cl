@@ -18,6 +18,7 @@
  * @variants: "" | "-DLB_LUT -DLB_SMC_RECT" | "-DLB_LUT -DLB_SMC_RECT -DLB_LANES=8" | "-DLB_SMC_RECT" | "-DLB_SMC_SAMPLING=1" | "-DLB_SMC_SAMPLING=2" | "-DLB_LUT" | "-DLB_LUT -DLB_SMC_SAMPLING=2"
  */
 #include "common/lbmath.h"
+#include "common/entry.h"
 
 #ifndef LB_SMC_SAMPLING
 #define LB_SMC_SAMPLING 0
@@ -37,40 +38,15 @@ LB_FN real lb_smc_u01(uint h)
     return (real)(h >> 8) * R(5.9604644775390625e-8); /* 2^-24: < 1 in float */
 }
 
-#if defined(LB_SMC_RECT) && defined(LB_LANES) && LB_LANES == 8 && !defined(LB_DOUBLE)
-#include "common/lanes8.h"
-#include "common/lanes_all.inc"
-#include "common/lanes_end.h"
+#define LB_ENTRY_ARGS , __global const real *st, int n, int seed
 
-__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
-                     __global const real* st, int n, int seed)
-{
-    int col0, row, res;
-    float8 ou, ov, on;
-    real au, av, an;
-    if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
-        return;
-    lb_store_x8(out, row * res + col0, res - col0, lb_smc_rect_light_x8(P, lum, st, n, ou, ov, on, au, av, an));
-}
-#elif defined(LB_SMC_RECT)
-__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
-                     __global const real* st, int n, int seed)
-{
-    int col, row, res;
-    real ou, ov, on, au, av, an;
-    if (!lb_work_item_pixels(P, row0, &col, &row, &res, &ou, &ov, &on, &au, &av, &an))
-        return;
-    out[row * res + col] = lb_smc_rect_light(P, lum, st, n, ou, ov, on, au, av, an);
-}
+#ifdef LB_SMC_RECT
+#define LB_ENTRY_FORM LB_VFN(lb_smc_rect_light)(P, lum, st, n, ou, ov, on, au, av, an)
+#include "common/entry_straight.inc"
 #else
-__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
-                     __global const real* st, int n, int seed)
+LB_RENDER_KERNEL
 {
-    int px;
-    lb_light L;
-    real3 x, nx;
-    if (!lb_work_item_receiver(P, row0, &px, &L, &x, &nx))
-        return;
+    LB_RENDER_RECEIVER;
     real3 wo = normalize(lb_p3(P, LB_P_EYE) - x);
     real alpha = P[LB_P_ALPHA];
     real3 t1, t2;

@@ -5,20 +5,15 @@
  * @variants: ""
  */
 #include "common/lbmath.h"
+#include "common/entry.h"
 
-__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
-                     __global real* errout, __global int* splits_out, real rel_tol, int max_splits)
+#define LB_ENTRY_ARGS LB_REFERENCE_ARGS
+
+LB_RENDER_KERNEL
 {
-    int px;
-    lb_light L;
-    real3 x, nx;
-    if (!lb_work_item_receiver(P, row0, &px, &L, &x, &nx))
-        return;
-    real err;
-    int splits, cells;
+    LB_REFERENCE_OPENING;
+    int cells;
     real v = lb_specular_reference(lum, L, x, nx, lb_p3(P, LB_P_EYE), P[LB_P_ALPHA], rel_tol, max_splits, &err,
                                    &splits, &cells);
-    out[px] = v;
-    errout[px] = err;
-    splits_out[px] = splits;
+    LB_REFERENCE_STORE(v, err);
 }

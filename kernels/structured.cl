@@ -9,39 +9,17 @@
  * @variants: "" | "-DLB_STRUCT_RECT" | "-DLB_STRUCT_RECT -DLB_LUT -DLB_LANES=8"
  */
 #include "common/lbmath.h"
+#include "common/entry.h"
 
-#if defined(LB_STRUCT_RECT) && defined(LB_LANES) && LB_LANES == 8 && !defined(LB_DOUBLE)
-#include "common/lanes8.h"
-#include "common/lanes_all.inc"
-#include "common/lanes_end.h"
+#define LB_ENTRY_ARGS
 
-__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0)
-{
-    int col0, row, res;
-    float8 ou, ov, on;
-    real au, av, an;
-    if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
-        return;
-    lb_store_x8(out, row * res + col0, res - col0, lb_structured_rect_x8(lum, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an));
-}
-#elif defined(LB_STRUCT_RECT)
-__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0)
-{
-    int col, row, res;
-    real ou, ov, on, au, av, an;
-    if (!lb_work_item_pixels(P, row0, &col, &row, &res, &ou, &ov, &on, &au, &av, &an))
-        return;
-    out[row * res + col] = lb_structured_rect(lum, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an);
-}
+#ifdef LB_STRUCT_RECT
+#define LB_ENTRY_FORM LB_VFN(lb_structured_rect)(lum, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an)
+#include "common/entry_straight.inc"
 #else
-
-__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0)
+LB_RENDER_KERNEL
 {
-    int px;
-    lb_light L;
-    real3 x, nx;
-    if (!lb_work_item_receiver(P, row0, &px, &L, &x, &nx))
-        return;
+    LB_RENDER_RECEIVER;
     real3 p[LB_MAXV];
     real e = R(0);
     if (L.shape == LB_SHAPE_DISK) {

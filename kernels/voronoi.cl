@@ -11,45 +11,18 @@
  * @variants: "" | "-DLB_VOR_RECT" | "-DLB_LUT -DLB_VOR_RECT" | "-DLB_LUT -DLB_VOR_RECT -DLB_LANES=8"
  */
 #include "common/lbmath.h"
+#include "common/entry.h"
 
-/* The registry's convention (host/methods/registry.h): P scene parameters;
- * lum packed luminaire; out N x N lux, rows row0 .. row0 + global height.
- * tab: tres x tres x 6 cell fractions for the scene's W x L light. */
-#if defined(LB_VOR_RECT) && defined(LB_LANES) && LB_LANES == 8 && !defined(LB_DOUBLE)
-#include "common/lanes8.h"
-#include "common/lanes_all.inc"
-#include "common/lanes_end.h"
+/* tab: tres x tres x 6 cell fractions for the scene's W x L light. */
+#define LB_ENTRY_ARGS , __global const float *tab, int tres, real plane_eps
 
-__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
-                     __global const float* tab, int tres, real plane_eps)
-{
-    int col0, row, res;
-    float8 ou, ov, on;
-    real au, av, an;
-    if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
-        return;
-    float8 e = lb_voronoi_rect_x8(lum, tab, tres, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an, plane_eps);
-    lb_store_x8(out, row * res + col0, res - col0, e);
-}
-#elif defined(LB_VOR_RECT)
-__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
-                     __global const float* tab, int tres, real plane_eps)
-{
-    int col, row, res;
-    real ou, ov, on, au, av, an;
-    if (!lb_work_item_pixels(P, row0, &col, &row, &res, &ou, &ov, &on, &au, &av, &an))
-        return;
-    out[row * res + col] = lb_voronoi_rect(lum, tab, tres, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an, plane_eps);
-}
+#ifdef LB_VOR_RECT
+#define LB_ENTRY_FORM LB_VFN(lb_voronoi_rect)(lum, tab, tres, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an, plane_eps)
+#include "common/entry_straight.inc"
 #else
-__kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
-                     __global const float* tab, int tres, real plane_eps)
+LB_RENDER_KERNEL
 {
-    int px;
-    lb_light L;
-    real3 x, nx;
-    if (!lb_work_item_receiver(P, row0, &px, &L, &x, &nx))
-        return;
+    LB_RENDER_RECEIVER;
     out[px] = lb_voronoi_irradiance(lum, tab, tres, L, x, nx, plane_eps);
 }
 #endif

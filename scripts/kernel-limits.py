@@ -3,7 +3,7 @@
     scripts/kernel-limits.py [--allow FILE] [--lines N] [--params N] [--list] FILE...
 e.g. scripts/kernel-limits.py $(git ls-files 'kernels/*.h' 'kernels/*.inc' 'kernels/*.cl')
 A function is a body '{' at file scope (LB_FN, LB_FN_INLINE, __kernel or a
-macro such as CUB_KERNEL that opens one); LB_VFN(name) counts as name. Its
+macro such as LB_RENDER_KERNEL that opens one); LB_VFN(name) counts as name. Its
 lines are counted from the '{' to the '}' (as scripts/long-functions.py), its
 parameters are the top-level commas of its parameter list plus one (none for
 '()' or '(void)'). A function may have at most --lines (80) lines and, unless
@@ -26,13 +26,22 @@ _spec.loader.exec_module(_lf)
 
 
 def blank_preprocessor(s):
-    """Blanks preprocessor lines (with their continuations), keeping newlines."""
-    out, cont = [], False
+    """Blanks preprocessor lines (with their continuations), keeping newlines.
+    Returns the blanked text and the conditionals' (offset, kind) in order,
+    kind 'if' (#if, #ifdef, #ifndef), 'else' (#elif, #else) or 'endif'."""
+    out, cont, conds, pos = [], False, [], 0
     for line in s.split('\n'):
         directive = cont or line.lstrip().startswith('#')
+        if directive and not cont:
+            word = re.match(r'\s*#\s*(\w*)', line).group(1)
+            kind = {'if': 'if', 'ifdef': 'if', 'ifndef': 'if', 'elif': 'else', 'else': 'else',
+                    'endif': 'endif'}.get(word)
+            if kind:
+                conds.append((pos, kind))
         cont = directive and line.rstrip().endswith('\\')
         out.append(' ' * len(line) if directive else line)
-    return '\n'.join(out)
+        pos += len(line) + 1
+    return '\n'.join(out), conds
 
 
 def param_count(head):
@@ -58,33 +67,50 @@ def param_count(head):
 
 
 def functions(path):
-    """(name, first line, lines, params, is_kernel) of each function in path."""
-    s = blank_preprocessor(_lf.strip(pathlib.Path(path).read_text()))
-    depth, rows, start = 0, [], None
-    for m in re.finditer(r'[{}]', s):
-        p = m.start()
-        if s[p] == '{':
+    """(name, first line, lines, params, is_kernel) of each function in path.
+    Each branch of an #if / #elif / #else starts from the brace depth before
+    the #if, so a function defined in each branch counts once per branch;
+    after the #endif the count goes on from the end of the first branch."""
+    s, conds = blank_preprocessor(_lf.strip(pathlib.Path(path).read_text()))
+    events = sorted([(p, k) for p, k in conds] + [(m.start(), m.group()) for m in re.finditer(r'[{}]', s)])
+    depth, rows, start, stack = 0, [], None, []
+    for p, what in events:
+        if what == 'if':
+            stack.append([(depth, start), None])
+        elif what in ('else', 'endif') and stack:
+            entry, first = stack[-1]
+            if first is None:
+                stack[-1][1] = first = (depth, start)
+            depth, start = entry if what == 'else' else first
+            if what == 'endif':
+                stack.pop()
+        elif what == '{':
             if depth == 0:
                 head = s[max(0, p - 3000):p]
                 tail = head.rstrip()
                 body = not re.search(r'(=|\b(struct|union|enum)\b[^;{}()]*)$', tail)
                 start = (p, head) if body else None
             depth += 1
-        else:
+        elif what == '}':
             depth -= 1
             if depth == 0 and start is not None:
-                q, head = start
-                n, before = param_count(head)
-                name = re.sub(r'LB_VFN\((\w+)\)', r'\1', before)
-                mm = re.search(r'(\w+)\s*$', name)
-                if n is None:  # a macro that opens a kernel, e.g. CUB_KERNEL
-                    mm = re.search(r'(\w+)\s*$', head)
-                kernel = '__kernel' in head[head.rfind(';') + 1:] or n is None
-                first = s.count('\n', 0, q) + 1
-                lines = s.count('\n', 0, p) + 1 - first + 1
-                rows.append((mm.group(1) if mm else '?', first, lines, n or 0, kernel))
+                rows.append(_function_row(s, start, p))
                 start = None
     return rows
+
+
+def _function_row(s, start, p):
+    """The row of functions() for the body opened at start = (offset, head) and closed at p."""
+    q, head = start
+    n, before = param_count(head)
+    name = re.sub(r'LB_VFN\((\w+)\)', r'\1', before)
+    mm = re.search(r'(\w+)\s*$', name)
+    if n is None:  # a macro that opens a kernel, e.g. LB_RENDER_KERNEL
+        mm = re.search(r'(\w+)\s*$', head)
+    kernel = '__kernel' in head[head.rfind(';') + 1:] or n is None
+    first = s.count('\n', 0, q) + 1
+    lines = s.count('\n', 0, p) + 1 - first + 1
+    return (mm.group(1) if mm else '?', first, lines, n or 0, kernel)
 
 
 def exceptions(files, max_lines, max_params):
@@ -114,22 +140,31 @@ def read_allow(path):
 def self_test():
     """Runs this script on made-up kernels: a function of 81 lines, a helper
     of 9 parameters, a __kernel of 9 (allowed), LB_VFN names, macro-opened
-    kernels, struct bodies and initializers (not functions), and an
-    allow-list that must only shrink."""
+    kernels, struct bodies and initializers (not functions), a kernel in each
+    branch of an #if / #else (the first with an #if that opens a brace in
+    each of its own branches: 81 lines; the second 83; a function after the
+    #endif of 80), and an allow-list that must only shrink."""
     body = lambda n: '{\n' + '    x += 1;\n' * (n - 2) + '}\n'
     src = ('typedef struct {\n    int a, b;\n} s_t;\nconstant int k[2] = {1, 2};\n'
            '#define MK __kernel void render(int a)\n'
            'LB_FN int LB_VFN(ok80)(int a)\n' + body(80) + 'LB_FN int long81(int a)\n' + body(81) +
            'LB_FN_INLINE int LB_VFN(p9)(int a, int b, int c, int d, int e, int f, int g, int h, int (*i)[3])\n' + body(3) +
            '__kernel void k9(int a, int b, int c, int d, int e, int f, int g, int h, int i)\n' + body(3) +
-           'MK\n' + body(82))
+           'MK\n' + body(82) +
+           '#ifdef A\n__kernel void twin(int a)\n{\n#ifdef B\n    if (a) {\n#else\n    {\n#endif\n' +
+           '    x += 1;\n' * 73 + '    }\n}\n#else\n__kernel void twin(int a)\n' + body(83) + '#endif\n' +
+           'LB_FN int after80(int a)\n' + body(80))
+    ok = 'x.inc long81 lines 81\nx.inc p9 params 9\nx.inc MK lines 82\n'
     cases = [  # allow-list, expected exit code
         ('', 1),
-        ('x.inc long81 lines 81\nx.inc p9 params 9\nx.inc MK lines 82\n', 0),
-        ('x.inc long81 lines 80\nx.inc p9 params 9\nx.inc MK lines 82\n', 1),  # grew past its value
-        ('x.inc long81 lines 82\nx.inc p9 params 9\nx.inc MK lines 82\n', 1),  # stale: must shrink
-        ('x.inc long81 lines 81\nx.inc p9 params 9\nx.inc MK lines 82\nx.inc ok80 lines 81\n', 1),
-        ('x.inc long81 lines 81\nx.inc MK lines 82\n', 1),  # p9 not listed
+        (ok + 'x.inc twin lines 83\n', 0),
+        ('x.inc long81 lines 80\nx.inc p9 params 9\nx.inc MK lines 82\nx.inc twin lines 83\n', 1),  # grew
+        ('x.inc long81 lines 82\nx.inc p9 params 9\nx.inc MK lines 82\nx.inc twin lines 83\n', 1),  # stale
+        (ok + 'x.inc twin lines 83\nx.inc ok80 lines 81\n', 1),
+        ('x.inc long81 lines 81\nx.inc MK lines 82\nx.inc twin lines 83\n', 1),  # p9 not listed
+        (ok, 1),  # the #else branch's twin (83 lines) not listed
+        (ok + 'x.inc twin lines 82\n', 1),  # the larger twin is the #else branch's 83
+        (ok + 'x.inc twin lines 83\nx.inc after80 lines 81\n', 1),  # after the #endif: 80 lines, stale
     ]
     with tempfile.TemporaryDirectory() as d:
         pathlib.Path(d, 'x.inc').write_text(src)

@@ -15,7 +15,9 @@
  * LB_TO_U (from LB_I) and LB_U_TO_V (to the value type), LB_GATHER(p, i) = p[i] per lane, and
  * LB_VINTENSITY3(lum, x, y, z) the intensity lookup of the lane type,
  * LB_NLANES the pixels per call and LB_LANE_INDEX their column offsets,
- * LB_ANY(m) whether any lane's m holds (a branch uniform over the lanes).
+ * LB_ANY(m) whether any lane's m holds (a branch uniform over the lanes),
+ * LB_STORE(out, i, left, e) writes the pixels' values e at out[i ..], only the
+ * first `left` of them (a row's end).
  * lanes_end.h undefines them again. */
 #define LB_V real
 #define LB_I int
@@ -31,3 +33,4 @@
 #define LB_NLANES 1
 #define LB_ANY(m) (m)
 #define LB_LANE_INDEX R(0)
+#define LB_STORE(out, i, left, e) ((void)(left), (out)[(i)] = (e))

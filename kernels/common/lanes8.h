@@ -17,3 +17,4 @@
 #define LB_NLANES 8
 #define LB_ANY(m) any(m)
 #define LB_LANE_INDEX ((float8)(0, 1, 2, 3, 4, 5, 6, 7))
+#define LB_STORE(out, i, left, e) lb_store_x8((out), (i), (left), (e))

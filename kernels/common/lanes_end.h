@@ -13,3 +13,4 @@
 #undef LB_NLANES
 #undef LB_ANY
 #undef LB_LANE_INDEX
+#undef LB_STORE

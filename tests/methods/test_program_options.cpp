@@ -1,9 +1,9 @@
 // The program options every family builds (structural defines, the scene's
 // specialisation defines, lanes) and the specialisation records (JSON) over a
 // sweep of specs x scenes x luminaires, held to the sweep's recorded output
-// (tests/methods/program_options.golden). The recording was made before the
-// specialisation rules became tables (methods/forms.h), so that refactoring
-// and any later one keep every kernel variant a scene gets. No device needed.
+// (tests/methods/program_options.golden), so that a refactoring of the
+// specialisation rules (the tables of methods/specialize.h) keeps every kernel
+// variant a scene gets. No device needed.
 //
 // A deliberate change of a rule: run with LUMIBENCH_UPDATE_GOLDEN=1 to write
 // the new recording, and say in the commit which lines changed and why.

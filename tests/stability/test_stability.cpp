@@ -18,30 +18,30 @@
 namespace lb {
 namespace {
 
-Scene sceneOf(double w, double l, double h = 1)
+// The scene of a catalogue case with a w x l light at height h (stability::sceneOf).
+Scene lightScene(double w, double l, double h = 1)
 {
-    Scene s;
-    s.width = w;
-    s.length = l;
-    s.height = h;
-    s.res = 4;
-    return s;
+    stability::Case c;
+    c.width = w;
+    c.length = l;
+    c.height = h;
+    return stability::sceneOf(c, 4);
 }
 
 TEST(Stability, DegenerateLightsAreInputErrors)
 {
-    EXPECT_NO_THROW(sceneOf(1, 1).validate());
-    EXPECT_NO_THROW(sceneOf(1e-3, 1e-3).validate());  // the catalogue's tiny light
-    EXPECT_NO_THROW(sceneOf(40, 0.02).validate());  // and its thin one
-    EXPECT_THROW(sceneOf(0, 0).validate(), InputError);  // coincident corners
-    EXPECT_THROW(sceneOf(0, 1).validate(), InputError);  // collinear corners
-    EXPECT_THROW(sceneOf(1, -1).validate(), InputError);
-    EXPECT_THROW(sceneOf(1e-9, 1).validate(), InputError);  // collinear in float
-    EXPECT_THROW(sceneOf(NAN, 1).validate(), InputError);
-    EXPECT_NO_THROW(sceneOf(1, 1, -0.1).validate());  // light through the receiver plane: clipped, legal
-    EXPECT_THROW(sceneOf(1, 1, INFINITY).validate(), InputError);
+    EXPECT_NO_THROW(lightScene(1, 1).validate());
+    EXPECT_NO_THROW(lightScene(1e-3, 1e-3).validate());  // the catalogue's tiny light
+    EXPECT_NO_THROW(lightScene(40, 0.02).validate());  // and its thin one
+    EXPECT_THROW(lightScene(0, 0).validate(), InputError);  // coincident corners
+    EXPECT_THROW(lightScene(0, 1).validate(), InputError);  // collinear corners
+    EXPECT_THROW(lightScene(1, -1).validate(), InputError);
+    EXPECT_THROW(lightScene(1e-9, 1).validate(), InputError);  // collinear in float
+    EXPECT_THROW(lightScene(NAN, 1).validate(), InputError);
+    EXPECT_NO_THROW(lightScene(1, 1, -0.1).validate());  // light through the receiver plane: clipped, legal
+    EXPECT_THROW(lightScene(1, 1, INFINITY).validate(), InputError);
     try {
-        sceneOf(0, 1).validate();
+        lightScene(0, 1).validate();
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("collinear"), std::string::npos) << e.what();
     }
@@ -53,7 +53,7 @@ TEST(Stability, RenderRejectsDegenerateLightForEveryMethod)
     auto table = stability::luminaire("lambert");
     for (auto& f : methods::registry().all())
         for (SceneKind k : f.scenes) {
-            Scene s = sceneOf(0, 1);
+            Scene s = lightScene(0, 1);
             s.kind = k;
             EXPECT_THROW(methods::render(*rt, table, s, methods::parseSpec(f.name, k), methods::Precision::Float),
                          InputError)
