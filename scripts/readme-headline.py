@@ -16,6 +16,13 @@ baseline's curve: plots/error_time.py) as docs/figures/main-nmse-time.png.
     python3 scripts/readme-headline.py --self-test
         shows that --check fails on a headline that differs from its results
 
+The headline's last sentence states the verdicts against a denoised Monte
+Carlo, from the committed results of experiments/mc-baselines/strong-gauss.json
+and strong-atrous.json (FILTER_RESULTS below), tallied by
+experiments/mc-baselines/filter_verdicts.py: wins / ties / losses among the
+pairs on time, in NMSE and in FLIP, and the pairs off time (those at the
+N = 1 floor apart). --check and --self-test read those files too.
+
 A verdict is a win where the method's NMSE (its 95 % interval over seeds,
 where it has one) lies wholly below the baseline's interval at equal time, a
 loss where wholly above, a tie where they overlap; a pair whose times differ
@@ -33,6 +40,8 @@ import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "plots"))
+sys.path.insert(0, os.path.join(ROOT, "experiments", "mc-baselines"))
+import filter_verdicts  # noqa: E402
 from results_io import (baseline_of, baselines, equal_time, is_partner, load_context, load_records,  # noqa: E402
                         pair_verdict, written_spec)
 
@@ -40,6 +49,11 @@ BEGIN, END = "<!-- headline:begin -->", "<!-- headline:end -->"
 RESULTS = "experiments/results/main.json.xz"
 FIGURE = "docs/figures/main-nmse-time.png"
 VERDICTS = ("win", "tie", "loss", "off-time")
+# the filter-verdict runs the headline's last sentence states: (baseline's name, committed results)
+FILTER_RESULTS = (("strong MC + Gaussian", "experiments/results/mc-baselines-strong-gauss-seeds8-pocl.json.xz"),
+                  ("strong MC + a-trous", "experiments/results/mc-baselines-strong-atrous-fast-seeds8-pocl.json.xz"))
+# the methods it names, in this order, as the sentence names them
+FILTER_METHODS = (("robust", "robust"), ("tuned", "tuned"), ("cubature", "the fan"))
 
 
 def scene_key(r):
@@ -135,10 +149,37 @@ def headline(records, context, source):
             gm = ", {:.3g}x".format(math.exp(sum(map(math.log, rs)) / len(rs))) if rs else ""
             row.append(cell(counts[(m, b)]) + gm)
         lines.append("| `{}` | {} |".format(_cell_text(m), " | ".join(row)))
+    lines += ["", filter_sentence()]
     lines += ["", "The baselines' full specs: " + "; ".join("{}: `{}`".format(b, s) for s, b in known.items()) + "."]
     lines += ["", "![NMSE against kernel time, geometric mean over the main job's scenes: every baseline's curve "
               "over N, every method a point]({})".format(FIGURE)]
     return "\n".join(lines)
+
+
+def filter_sentence(files=FILTER_RESULTS):
+    """The headline's sentence on the filter verdicts (see the module's doc)."""
+    parts, devices = [], set()
+    for name, path in files:
+        doc = filter_verdicts.load(os.path.join(ROOT, path))
+        rows = filter_verdicts.tally(doc)
+        ctx = doc.get("context", {})
+        devices.add(ctx.get("device", "?"))
+        scenes = {r["scene"] for r in doc["records"] if r.get("role") == "method"}
+        missing = [m for m, _ in FILTER_METHODS if m not in rows]
+        if missing:
+            raise ValueError("{}: no equal-time pairs of {}".format(path, ", ".join(missing)))
+        wtl = filter_verdicts.wtl
+        said = ", ".join("{} {} and {}".format(text, wtl(rows[m]["nmse"]), wtl(rows[m]["flip"]))
+                         for m, text in FILTER_METHODS)
+        pairs = sum(r["pairs"] for r in rows.values())
+        off = sum(r["off_time"] for r in rows.values())
+        floor = sum(r["floor"] for r in rows.values())
+        parts.append("against {} ({} scenes, commit {}) {}; {} of {} pairs off-time, {} of them at the N = 1 floor "
+                     "(one sample per pixel and the filter take longer than the method)".format(
+                         name, len(scenes), (ctx.get("commit") or "?")[:7], said, off, pairs, floor))
+    return ("Against a denoised Monte Carlo (`experiments/mc-baselines/strong-gauss.json` and `strong-atrous.json`, "
+            "on {}; from `{}`), wins / ties / losses in NMSE and in FLIP among the pairs on time: {}.".format(
+                "; ".join(sorted(devices)), "` and `".join(p for _, p in files), "; ".join(parts)))
 
 
 def _cell_text(s):
@@ -252,8 +293,14 @@ def self_test():
         i = next(k for k, ch in enumerate(text) if ch.isdigit() and k > text.find("wins"))
         with open(bad, "w") as f:
             f.write("x\n" + block(text[:i] + str((int(text[i]) + 1) % 10) + text[i + 1:]) + "\ny\n")
+        # and a verdict count of the filter verdicts' sentence (robust's wins in NMSE)
+        bad2 = os.path.join(d, "bad2.md")
+        at = text.find(" robust ", text.find("Against a denoised"))
+        i = next(k for k, ch in enumerate(text) if ch.isdigit() and k > at)
+        with open(bad2, "w") as f:
+            f.write("x\n" + block(text[:i] + str((int(text[i]) + 1) % 10) + text[i + 1:]) + "\ny\n")
         quiet = lambda *a: None  # noqa: E731
-        ok = check(src, good, quiet) == 0 and check(src, bad, quiet) == 1
+        ok = check(src, good, quiet) == 0 and check(src, bad, quiet) == 1 and check(src, bad2, quiet) == 1
     finally:
         shutil.rmtree(d)
     ok = several_baselines(load_records(src), load_context(src)) and ok

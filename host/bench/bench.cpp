@@ -385,15 +385,17 @@ nlohmann::json filterTimes(Bench& b)
     const double px = double(b.scene.res) * b.scene.res;
     const int radius = methods::gaussShape(0, 0, b.scene.res).radius;
     // per pixel: reals read + written, flops (a Gaussian tap folded: r + 1
-    // products, 2 r sums; an a-trous tap ~ 28 with its polynomial exp2, the
-    // prefilter and divisions 30; the 7 x 7 moments 3 per tap)
+    // products, 2 r sums; an a-trous tap ~ 14: the difference, its magnitude,
+    // the scale, the cut, the exp2 from the bits (a product, a conversion, an
+    // integer sum), the B3 weight and the three sums (5); the prefilter and
+    // divisions 30; the 7 x 7 moments 3 per tap)
     auto cost = [&](const std::string& stage, double* reals, double* flops) {
         if (stage == "denoise_row" || stage == "denoise_col")
             *reals = 2, *flops = 3.0 * radius + 1;
         else if (stage == "denoise_var")
             *reals = 3, *flops = 49 * 3 + 5;
         else
-            *reals = 4, *flops = 25 * 28 + 30;
+            *reals = 4, *flops = 25 * 14 + 30;
     };
     const size_t realBytes = 4;  // float
     nlohmann::json out = {

@@ -80,10 +80,11 @@ std::vector<StageEvent> denoisePasses(LaunchContext& c, const McOptions& o, doub
     const int levels = atrousLevels(res);
     for (int i = 0; i < levels; ++i) {
         const int a = i & 1, b = a ^ 1;
-        // (arguments are captured when a launch is enqueued: one kernel object serves every level)
+        // (arguments are captured when a launch is enqueued: one kernel object serves every level);
+        // the last level's variance is not read: not filtered
         launch(fmt::format("denoise_l{}", i + 1),
                c.bind(c.pass("lb_atrous"), img[a], var[a], img[b], var[b], cl_int(res), cl_int(1 << i),
-                      LaunchContext::Real{sigmaL}));
+                      LaunchContext::Real{sigmaL}, cl_int(i + 1 < levels)));
     }
     if (levels & 1) {
         cl::Event e;

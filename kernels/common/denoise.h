@@ -21,18 +21,17 @@
 
 #if LB_REAL_IS_DOUBLE
 typedef double8 lb_dn8;
-#define LB_DN8_POW2(t) as_double8((as_long8(t) - as_long(LB_EXP2_MAGIC) + 1023) << 52)
+#define LB_DN8_BITS(x) as_double8(convert_long8(x) + LB_EXP2_BIAS)
 #else
 typedef float8 lb_dn8;
-#define LB_DN8_POW2(t) as_float8((as_int8(t) - as_int(LB_EXP2_MAGIC) + 127) << 23)
+#define LB_DN8_BITS(x) as_float8(convert_int8(x) + LB_EXP2_BIAS)
 #endif
 
-/* lb_exp2_neg in eight lanes: the same reduction and polynomial */
+/* lb_exp2_neg in eight lanes: the same cut and bits */
 LB_FN_INLINE lb_dn8 lb_exp2_neg8(lb_dn8 x)
 {
     x = x < R(-LB_EXP2_CUT) ? (lb_dn8)R(-LB_EXP2_CUT) : x;
-    lb_dn8 t = x + LB_EXP2_MAGIC, f = x - (t - LB_EXP2_MAGIC);
-    return LB_EXP2_POLY(f) * LB_DN8_POW2(t);
+    return LB_DN8_BITS(x * LB_EXP2_SCALE);
 }
 
 /* the work-item's first column, its row and its pixel count (0: none) */
@@ -96,16 +95,17 @@ LB_FN void lb_atrous_gather8(__global const real* in, __global const real* var, 
 
 /* Pixel by pixel only in a last partial group of columns; a tap row outside
  * the image is left out by all eight lanes alike, a tap column outside by its
- * lane (weight 0: the sums of denoise_math.h, which skips it). */
+ * lane (weight 0: the sums of denoise_math.h, which skips it). withVar 0 (the
+ * last level, whose variance nothing reads): the variance is not filtered. */
 __kernel void lb_atrous(__global const real* in, __global const real* var, __global real* out,
-                        __global real* varOut, int res, int step, real sigma_l)
+                        __global real* varOut, int res, int step, real sigma_l, int withVar)
 {
     int c0, r, n = lb_dn_lanes(res, &c0, &r);
     if (n < 8) {
         for (int i = 0; i < n; ++i) {
             real vo;
             out[r * res + c0 + i] = lb_atrous_px(in, var, res, c0 + i, r, step, sigma_l, &vo);
-            varOut[r * res + c0 + i] = vo;
+            if (withVar) varOut[r * res + c0 + i] = vo;
         }
         return;
     }
@@ -128,22 +128,23 @@ __kernel void lb_atrous(__global const real* in, __global const real* var, __glo
         real hy = lb_atrous_h(dy);
         for (int dx = -2; dx <= 2; ++dx) {
             int cc0 = c0 + dx * step;
-            lb_dn8 cq, vq, ok = (lb_dn8)R(1);
+            lb_dn8 cq, vq = (lb_dn8)R(0), h = (lb_dn8)(hy * lb_atrous_h(dx));
             if (!edge || (cc0 >= 0 && cc0 + 8 <= res)) {
                 cq = vload8(0, in + rr * res + cc0);
-                vq = vload8(0, var + rr * res + cc0);
+                if (withVar) vq = vload8(0, var + rr * res + cc0);
             } else {
+                lb_dn8 ok;
                 lb_atrous_gather8(in, var, res, rr * res, cc0, &cq, &vq, &ok);
+                h *= ok;
             }
-            real h = hy * lb_atrous_h(dx);
-            lb_dn8 wq = dx == 0 && dy == 0 ? (lb_dn8)h : ok * (h * lb_exp2_neg8(k * fabs(cp - cq)));
+            lb_dn8 wq = dx == 0 && dy == 0 ? h : h * lb_exp2_neg8(k * fabs(cp - cq));
             s += wq * cq;
             ws += wq;
-            vs += wq * wq * vq;
+            if (withVar) vs += wq * wq * vq;
         }
     }
     vstore8(s / ws, 0, out + at);
-    vstore8(vs / (ws * ws), 0, varOut + at);
+    if (withVar) vstore8(vs / (ws * ws), 0, varOut + at);
 }
 
 __kernel void lb_var_spatial(__global const real* in, __global real* var, int res)

@@ -4,10 +4,12 @@
  *
  * Images are res x res reals, row-major.
  *
- * lb_exp2_neg: 2^x for x <= 0 without a library exp: x = n + f, n an
- *   integer, f in [-1/2, 1/2], a degree-4 polynomial for 2^f (relative error
- *   3.1e-6, fitted at Chebyshev nodes with 2^0 = 1: an edge stop's weight
- *   needs no more) times 2^n from the exponent bits; x below -24 is -24.
+ * lb_exp2_neg: the edge stop's 2^x for x <= 0 without a library exp, from
+ *   the bits (Schraudolph 1999): 2^n (1 + f) for x = n + f, n = floor(x), f
+ *   in [0, 1): the mantissa linear in f between the powers of 2, which are
+ *   exact (2^0 = 1); 1 to 1.0615 times 2^x (the most at f = 1 / ln 2 - 1),
+ *   never below: every weight of a tap that differs from the centre is at
+ *   most 6.2 % above SVGF's exp; x below -24 is -24.
  * lb_gauss_px: one tap sum of the separable Gaussian along a row or a column,
  *   weights w[|d|] for d = -radius .. radius (the host's table, summing to 1),
  *   renormalised over the taps inside the image.
@@ -28,42 +30,40 @@
 #define LB_DN_CONST
 #endif
 
-/* 2^f on [-1/2, 1/2]: the polynomial of lb_exp2_neg (also in the kernels'
- * lanes); 2^0 = 1 exactly */
-#define LB_EXP2_POLY(f)                                                                                        \
-    (R(1) + (f) * (R(0.6931219948398225) +                                                                     \
-                   (f) * (R(0.24023718463104904) + (f) * (R(0.05591689382504847) + (f) * R(0.009600395517054633)))))
-/* x + 1.5 2^p (p the mantissa's bits) rounds x to an integer held in the
- * low bits; minus it, the rounded value */
-#undef LB_EXP2_MAGIC /* the host includes this file once per precision */
+/* 2^x from the bits: x 2^p (p the mantissa's bits) truncated to an integer,
+ * plus the exponent's bias shifted into place, read as a real; below x =
+ * -24 the value is 2^-24 */
+#undef LB_EXP2_SCALE /* the host includes this file once per precision */
+#undef LB_EXP2_BIAS
 #if LB_REAL_IS_DOUBLE
-#define LB_EXP2_MAGIC R(6755399441055744.0)
+#define LB_EXP2_SCALE R(4503599627370496.0)
+#define LB_EXP2_BIAS ((long)1023 << 52)
 #else
-#define LB_EXP2_MAGIC R(12582912.0)
+#define LB_EXP2_SCALE R(8388608.0)
+#define LB_EXP2_BIAS (127 << 23)
 #endif
-/* 2^x below x = -24 is taken as 2^-24: a weight 6e-8 of the centre's at
- * most, and no smaller one, whose square (the variance's weight) would be a
- * denormal float (slow on x86) */
+/* 2^-24: a weight 6e-8 of the centre's at most, and no smaller one, whose
+ * square (the variance's weight) would be a denormal float (slow on x86) */
 #define LB_EXP2_CUT 24
 #define LB_LOG2E 1.4426950408889634
 #define LB_DN_VAR_RADIUS 3
 
 LB_FN real lb_exp2_neg(real x)
 {
-    /* n = x rounded by an addition (no floor, no conversion), f = x - n in
-     * [-1/2, 1/2], 2^x = 2^f 2^n with 2^n from the exponent bits */
     x = x < R(-LB_EXP2_CUT) ? R(-LB_EXP2_CUT) : x;
-    real t = x + LB_EXP2_MAGIC, f = x - (t - LB_EXP2_MAGIC);
 #ifdef __OPENCL_C_VERSION__
 #if LB_REAL_IS_DOUBLE
-    real s = as_double((as_long(t) - as_long(LB_EXP2_MAGIC) + 1023) << 52);
+    return as_double((long)(x * LB_EXP2_SCALE) + LB_EXP2_BIAS);
 #else
-    real s = as_float((as_int(t) - as_int(LB_EXP2_MAGIC) + 127) << 23);
+    return as_float((int)(x * LB_EXP2_SCALE) + LB_EXP2_BIAS);
 #endif
 #else
-    real s = std::ldexp(R(1), (int)(t - LB_EXP2_MAGIC));
+    /* the same value: the integer's high bits the exponent, its low bits the
+     * mantissa's fraction */
+    const int p = LB_REAL_IS_DOUBLE ? 52 : 23;
+    const long long i = (long long)(x * LB_EXP2_SCALE), frac = i & ((1LL << p) - 1);
+    return std::ldexp(R(1) + (real)frac / LB_EXP2_SCALE, (int)((i - frac) >> p));
 #endif
-    return LB_EXP2_POLY(f) * s;
 }
 
 LB_FN int lb_dn_inside(int c, int r, int res) { return c >= 0 && r >= 0 && c < res && r < res; }
