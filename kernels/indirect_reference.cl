@@ -101,10 +101,9 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     if (!lb_work_item_receiver(P, row0, &px, &L, &x, &nx))
         return;
     real rho = P[LB_P_ALBEDO];
-    real err;
-    int splits;
-    real e = lb_bounce_irradiance(edir, grid, x, nx, rho, rel_tol, max_splits, &err, &splits);
+    lb_adapt_report rep;
+    real e = lb_bounce_irradiance(edir, grid, x, nx, rho, lb_adapt_goal_of(rel_tol, max_splits), &rep);
     out[px] = e;
-    errout[px] = err + lb_bounce_interp_err(delta, x, nx, rho);
-    splits_out[px] = splits;
+    errout[px] = rep.err + lb_bounce_interp_err(delta, x, nx, rho);
+    splits_out[px] = rep.splits;
 }

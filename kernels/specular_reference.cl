@@ -14,11 +14,10 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     real3 x, nx;
     if (!lb_work_item_receiver(P, row0, &px, &L, &x, &nx))
         return;
-    real err;
-    int splits, cells;
-    real v = lb_specular_reference(lum, L, x, nx, lb_p3(P, LB_P_EYE), P[LB_P_ALPHA], rel_tol, max_splits, &err,
-                                   &splits, &cells);
+    lb_adapt_report rep;
+    real v = lb_specular_reference(lum, L, x, nx, lb_p3(P, LB_P_EYE), P[LB_P_ALPHA],
+                                   lb_adapt_goal_of(rel_tol, max_splits), &rep);
     out[px] = v;
-    errout[px] = err;
-    splits_out[px] = splits;
+    errout[px] = rep.err;
+    splits_out[px] = rep.splits;
 }
