@@ -159,10 +159,12 @@ CUB_KERNEL
     CUB_PROLOGUE
     (void)opt;
     int col0, row, res;
-    LB_V ou, ov, on;
-    real au, av, an;
-    if (!LB_VFN(lb_work_item_pixels)(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
+    LB_VFN(lb_rect_span) light;
+    LB_VFN(lb_rect_view) pix;
+    if (!LB_VFN(lb_work_item_pixels)(P, row0, &col0, &row, &res, &light, &pix))
         return;
+    LB_V ou = light.u0, ov = light.v0, on = pix.h;
+    real au = pix.au, av = pix.av, an = pix.an;
     LB_VFN(lb_dsl_pixel) px = LB_VFN(lb_dsl_pixel_at)(P[LB_P_W], P[LB_P_L], ou, ov, on, au, av, an);
     LB_V e = R(0), ta = R(0);
 #ifdef LB_CUB_AREA
@@ -188,10 +190,12 @@ CUB_KERNEL
 {
     CUB_PROLOGUE
     int col0, row, res;
-    LB_V ou, ov, on;
-    real au, av, an;
-    if (!LB_VFN(lb_work_item_pixels)(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
+    LB_VFN(lb_rect_span) light;
+    LB_VFN(lb_rect_view) pix;
+    if (!LB_VFN(lb_work_item_pixels)(P, row0, &col0, &row, &res, &light, &pix))
         return;
+    LB_V ou = light.u0, ov = light.v0, on = pix.h;
+    real au = pix.au, av = pix.av, an = pix.an;
     LB_V hc = LB_VFN(lb_cub_rect_shift)(on, LB_VFN(lb_plane_distance)(P, LB_LANE_INDEX + (real)col0, row),
                                         tun.plane_eps);
     LB_V v0c = ov, lc = (LB_V)(P[LB_P_L]);

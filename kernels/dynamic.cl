@@ -34,7 +34,7 @@
 #ifndef LB_DYN_SKEW
 #define LB_DYN_SKEW
 #endif
-#define LB_DYN_RECT_CALL(s) LB_DYN_RECT_FN(s)(lum, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an LB_DYN_SKEW)
+#define LB_DYN_RECT_CALL(s) LB_DYN_RECT_FN(s)(lum, &sp, &vw LB_DYN_SKEW)
 #endif
 
 #if defined(LB_DYN_RECT) && defined(LB_LANES) && LB_LANES == 8 && !defined(LB_DOUBLE)
@@ -45,9 +45,9 @@
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0, real skew)
 {
     int col0, row, res;
-    float8 ou, ov, on;
-    real au, av, an;
-    if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
+    lb_rect_span_x8 sp;
+    lb_rect_view_x8 vw;
+    if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &sp, &vw))
         return;
     lb_store_x8(out, row * res + col0, res - col0, LB_DYN_RECT_CALL(_x8));
 }
@@ -55,8 +55,9 @@ __kernel void render(__global const real* P, __global const float* lum, __global
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0, real skew)
 {
     int col, row, res;
-    real ou, ov, on, au, av, an;
-    if (!lb_work_item_pixels(P, row0, &col, &row, &res, &ou, &ov, &on, &au, &av, &an))
+    lb_rect_span sp;
+    lb_rect_view vw;
+    if (!lb_work_item_pixels(P, row0, &col, &row, &res, &sp, &vw))
         return;
     out[row * res + col] = LB_DYN_RECT_CALL();
 }

@@ -11,7 +11,7 @@
  */
 #include "common/lbmath.h"
 
-#define LB_ENG_CALL(s) lb_engine_rect##s(lum, P, ou, ov, on, au, av, an)
+#define LB_ENG_CALL(s) lb_engine_rect##s(lum, &sp, &vw)
 
 #if defined(LB_ENG_RECT) && defined(LB_LANES) && LB_LANES == 8 && !defined(LB_DOUBLE)
 #include "common/lanes8.h"
@@ -21,9 +21,9 @@
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0)
 {
     int col0, row, res;
-    float8 ou, ov, on;
-    real au, av, an;
-    if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
+    lb_rect_span_x8 sp;
+    lb_rect_view_x8 vw;
+    if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &sp, &vw))
         return;
     lb_store_x8(out, row * res + col0, res - col0, LB_ENG_CALL(_x8));
 }
@@ -31,8 +31,9 @@ __kernel void render(__global const real* P, __global const float* lum, __global
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0)
 {
     int col, row, res;
-    real ou, ov, on, au, av, an;
-    if (!lb_work_item_pixels(P, row0, &col, &row, &res, &ou, &ov, &on, &au, &av, &an))
+    lb_rect_span sp;
+    lb_rect_view vw;
+    if (!lb_work_item_pixels(P, row0, &col, &row, &res, &sp, &vw))
         return;
     out[row * res + col] = LB_ENG_CALL();
 }

@@ -792,10 +792,11 @@ __kernel void render(__global const real* P, __global const float* lum, __global
 {
     (void)np, (void)tab, (void)var;
     int col0, row, res;
-    LB_V ou, ov, on;
-    real au, av, an;
-    if (!LB_VFN(lb_work_item_pixels)(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
+    LB_VFN(lb_rect_span) sp;
+    LB_VFN(lb_rect_view) rv;
+    if (!LB_VFN(lb_work_item_pixels)(P, row0, &col0, &row, &res, &sp, &rv))
         return;
+    LB_V ou = sp.u0, ov = sp.v0, on = rv.h;
     int m = mc_tile_count(n, extra, row0, res, LB_NLANES, &st);
     LB_V sum = R(0) * ou, d1 = sum, d2 = sum;
 #ifdef LB_NO_BACK

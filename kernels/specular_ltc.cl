@@ -44,23 +44,25 @@ __kernel void render(__global const real* P, __global const float* lum, __global
                      __global const float* ltc, real plane_eps, real horizon_eps)
 {
     int col0, row, res;
-    float8 ou, ov, on;
-    real au, av, an;
-    if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
+    lb_rect_span_x8 sp;
+    lb_rect_view_x8 vw;
+    if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &sp, &vw))
         return;
     float8 col = (float8)(0, 1, 2, 3, 4, 5, 6, 7) + (float)col0;
-    lb_store_x8(out, row * res + col0, res - col0, lb_ltc_rect_shade_x8(P, lum, ltc, col, row, ou, ov, on, au, av, an, plane_eps, horizon_eps));
+    lb_cub_tunables tun = lb_cub_plain_tunables(plane_eps, horizon_eps);
+    lb_store_x8(out, row * res + col0, res - col0, lb_ltc_rect_shade_x8(P, lum, ltc, col, row, &sp, &vw, &tun));
 }
 #elif defined(LB_LTC_RECT)
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
                      __global const float* ltc, real plane_eps, real horizon_eps)
 {
     int col, row, res;
-    real ou, ov, on, au, av, an;
-    if (!lb_work_item_pixels(P, row0, &col, &row, &res, &ou, &ov, &on, &au, &av, &an))
+    lb_rect_span sp;
+    lb_rect_view vw;
+    if (!lb_work_item_pixels(P, row0, &col, &row, &res, &sp, &vw))
         return;
-    out[row * res + col] = lb_ltc_rect_shade(P, lum, ltc, (real)col, row, ou, ov, on, au, av, an, plane_eps,
-                                               horizon_eps);
+    lb_cub_tunables tun = lb_cub_plain_tunables(plane_eps, horizon_eps);
+    out[row * res + col] = lb_ltc_rect_shade(P, lum, ltc, (real)col, row, &sp, &vw, &tun);
 }
 #else
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,

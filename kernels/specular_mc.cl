@@ -46,21 +46,22 @@ __kernel void render(__global const real* P, __global const float* lum, __global
                      __global const real* st, int n, int seed)
 {
     int col0, row, res;
-    float8 ou, ov, on;
-    real au, av, an;
-    if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
+    lb_rect_span_x8 sp;
+    lb_rect_view_x8 vw;
+    if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &sp, &vw))
         return;
-    lb_store_x8(out, row * res + col0, res - col0, lb_smc_rect_light_x8(P, lum, st, n, ou, ov, on, au, av, an));
+    lb_store_x8(out, row * res + col0, res - col0, lb_smc_rect_light_x8(P, lum, st, n, &sp, &vw));
 }
 #elif defined(LB_SMC_RECT)
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
                      __global const real* st, int n, int seed)
 {
     int col, row, res;
-    real ou, ov, on, au, av, an;
-    if (!lb_work_item_pixels(P, row0, &col, &row, &res, &ou, &ov, &on, &au, &av, &an))
+    lb_rect_span sp;
+    lb_rect_view vw;
+    if (!lb_work_item_pixels(P, row0, &col, &row, &res, &sp, &vw))
         return;
-    out[row * res + col] = lb_smc_rect_light(P, lum, st, n, ou, ov, on, au, av, an);
+    out[row * res + col] = lb_smc_rect_light(P, lum, st, n, &sp, &vw);
 }
 #else
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,
@@ -108,8 +109,8 @@ __kernel void render(__global const real* P, __global const float* lum, __global
         for (int i = 0; i < n; ++i) {
             uint h = lb_smc_hash(pix ^ lb_smc_hash((uint)seed * 0x9E3779B9u + (uint)i));
             real u1 = lb_smc_u01(h), u2 = lb_smc_u01(lb_smc_hash(h + 0x68E31DA4u));
-            real mx, my, mz;
-            lb_ggx_sample_vndf(ox, R(0), oz, alpha, u1, u2, &mx, &my, &mz);
+            real3 m = lb_ggx_sample_vndf(ox, R(0), oz, alpha, u1, u2);
+            real mx = m.x, my = m.y, mz = m.z;
             real dm = ox * mx + oz * mz;
             real ix = R(2) * dm * mx - ox, iy = R(2) * dm * my, iz = R(2) * dm * mz - oz;
             if (!(iz > R(0)))

@@ -18,20 +18,21 @@
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0)
 {
     int col0, row, res;
-    float8 ou, ov, on;
-    real au, av, an;
-    if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
+    lb_rect_span_x8 sp;
+    lb_rect_view_x8 vw;
+    if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &sp, &vw))
         return;
-    lb_store_x8(out, row * res + col0, res - col0, lb_structured_rect_x8(lum, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an));
+    lb_store_x8(out, row * res + col0, res - col0, lb_structured_rect_x8(lum, &sp, &vw));
 }
 #elif defined(LB_STRUCT_RECT)
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0)
 {
     int col, row, res;
-    real ou, ov, on, au, av, an;
-    if (!lb_work_item_pixels(P, row0, &col, &row, &res, &ou, &ov, &on, &au, &av, &an))
+    lb_rect_span sp;
+    lb_rect_view vw;
+    if (!lb_work_item_pixels(P, row0, &col, &row, &res, &sp, &vw))
         return;
-    out[row * res + col] = lb_structured_rect(lum, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an);
+    out[row * res + col] = lb_structured_rect(lum, &sp, &vw);
 }
 #else
 

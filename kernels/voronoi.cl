@@ -24,11 +24,11 @@ __kernel void render(__global const real* P, __global const float* lum, __global
                      __global const float* tab, int tres, real plane_eps)
 {
     int col0, row, res;
-    float8 ou, ov, on;
-    real au, av, an;
-    if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
+    lb_rect_span_x8 sp;
+    lb_rect_view_x8 vw;
+    if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &sp, &vw))
         return;
-    float8 e = lb_voronoi_rect_x8(lum, tab, tres, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an, plane_eps);
+    float8 e = lb_voronoi_rect_x8(lum, tab, tres, &sp, &vw, plane_eps);
     lb_store_x8(out, row * res + col0, res - col0, e);
 }
 #elif defined(LB_VOR_RECT)
@@ -36,10 +36,11 @@ __kernel void render(__global const real* P, __global const float* lum, __global
                      __global const float* tab, int tres, real plane_eps)
 {
     int col, row, res;
-    real ou, ov, on, au, av, an;
-    if (!lb_work_item_pixels(P, row0, &col, &row, &res, &ou, &ov, &on, &au, &av, &an))
+    lb_rect_span sp;
+    lb_rect_view vw;
+    if (!lb_work_item_pixels(P, row0, &col, &row, &res, &sp, &vw))
         return;
-    out[row * res + col] = lb_voronoi_rect(lum, tab, tres, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an, plane_eps);
+    out[row * res + col] = lb_voronoi_rect(lum, tab, tres, &sp, &vw, plane_eps);
 }
 #else
 __kernel void render(__global const real* P, __global const float* lum, __global real* out, int row0,

@@ -1,12 +1,12 @@
 /* adaptive.h -- globally adaptive cubature over rectangular cells (QUADPACK
- * style), the one loop behind the converged references: the floor's area
- * integral (area_ref.h), the specular area form (specref.h) and the one-bounce
- * integral over the room's surfaces (indirect.h).
+ * style), the one loop and the one rule behind the converged references: the
+ * floor's area integral (area_ref.h), the specular area form (specref.h) and
+ * the one-bounce integral over the room's surfaces (indirect.h).
  *
  * A cell is the rectangle [s, s + hs] x [t, t + ht] of surface k's parameter
- * square; it carries a value v and an error estimate e, both the caller's
- * (each caller sums a tensor 4x4 Gauss-Legendre rule over the cell's 4
- * children, and e = |rule on the cell - that sum|). The caller puts its first
+ * square; it carries a value v and an error estimate e (the references' rule,
+ * LB_ADAPT_GL4 below: a tensor 4x4 Gauss-Legendre rule summed over the
+ * cell's 4 children, and e = |rule on the cell - that sum|). The caller puts its first
  * cells (lb_adapt_add), then, while the summed error exceeds rel_tol times
  * the summed value, the store can take 3 more cells, the split budget lasts
  * and some cell has a positive error, the cell of the largest error (the
@@ -14,7 +14,8 @@
  * replaces it, children 1..3 go to the end. OpenCL C has no function
  * pointers, so the loop hands the children out instead of calling an
  * integrand: lb_adapt_next gives the next cell to evaluate, the caller puts
- * its value and error back with lb_adapt_put, until lb_adapt_next says done;
+ * its value and error back with lb_adapt_put, until lb_adapt_next says done
+ * (LB_ADAPT_GL4's NAME_refine is that loop for its integrand);
  * lb_adapt_sum then re-sums the cells (the running sums carry rounding
  * residues of the subtractions).
  *
