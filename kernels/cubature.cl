@@ -148,6 +148,8 @@ LB_RENDER_KERNEL
     CUB_PROLOGUE
     (void)opt;
     LB_RENDER_PIXELS;
+    LB_V ou = pix_span.u0, ov = pix_span.v0, on = pix_view.h;
+    real au = pix_view.au, av = pix_view.av, an = pix_view.an;
     LB_VFN(lb_dsl_pixel) px = LB_VFN(lb_dsl_pixel_at)(P[LB_P_W], P[LB_P_L], ou, ov, on, au, av, an);
     LB_V e = R(0), ta = R(0);
 #ifdef LB_CUB_AREA
@@ -173,6 +175,8 @@ LB_RENDER_KERNEL
 {
     CUB_PROLOGUE
     LB_RENDER_PIXELS;
+    LB_V ou = pix_span.u0, ov = pix_span.v0, on = pix_view.h;
+    real au = pix_view.au, av = pix_view.av, an = pix_view.an;
     LB_V hc = LB_VFN(lb_cub_rect_shift)(on, LB_VFN(lb_plane_distance)(P, LB_LANE_INDEX + (real)col0, row),
                                         tun.plane_eps);
     LB_V v0c = ov, lc = (LB_V)(P[LB_P_L]);

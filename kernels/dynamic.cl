@@ -37,7 +37,7 @@
 #ifndef LB_DYN_SKEW
 #define LB_DYN_SKEW
 #endif
-#define LB_ENTRY_FORM LB_DYN_RECT_FN(lum, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an LB_DYN_SKEW)
+#define LB_ENTRY_FORM LB_DYN_RECT_FN(lum, &pix_span, &pix_view LB_DYN_SKEW)
 #include "common/entry_straight.inc"
 #else
 LB_RENDER_KERNEL

@@ -15,7 +15,7 @@
 #define LB_ENTRY_ARGS
 
 #ifdef LB_ENG_RECT
-#define LB_ENTRY_FORM LB_VFN(lb_engine_rect)(lum, P, ou, ov, on, au, av, an)
+#define LB_ENTRY_FORM LB_VFN(lb_engine_rect)(lum, &pix_span, &pix_view)
 #include "common/entry_straight.inc"
 #else
 LB_RENDER_KERNEL

@@ -204,13 +204,25 @@ LB_FN real ind_metric(__global const real* c, __global const real* t, real wx, r
            wb * (bs > R(0) ? fabs(c[LB_IND_FLUX] - b) / bs : R(0));
 }
 
-/* The centre nearest (Eq. 4.4) to texel (i, j) of the T x T map, -1 when
- * the texel is unlit or no centre qualifies. With a state (acrsm) only the
- * active centres (flag 0) whose window of `window` texels (side)
- * holds the texel qualify (Eq. 4.5); kmeans passes none: every centre. */
-LB_FN int ind_nearest(__global const real* tex, int T, int i, int j, __global const real* centres,
-                      __global const real* state, int K, real window, real wx, real wn, real wb)
+/* The K centres a texel may join and the metric's weights (Eq. 4.4). With a
+ * state (acrsm) only the active centres (flag 0) whose window of `window`
+ * texels (side) holds the texel qualify (Eq. 4.5); kmeans passes none (0):
+ * every centre. */
+typedef struct {
+    __global const real* centres;
+    __global const real* state;
+    int K;
+    real window, wx, wn, wb;
+} ind_candidates;
+
+/* The candidate nearest (Eq. 4.4) to texel (i, j) of the T x T map, -1 when
+ * the texel is unlit or no centre qualifies. */
+LB_FN int ind_nearest(__global const real* tex, int T, int i, int j, const ind_candidates* cs)
 {
+    __global const real* centres = cs->centres;
+    __global const real* state = cs->state;
+    int K = cs->K;
+    real window = cs->window, wx = cs->wx, wn = cs->wn, wb = cs->wb;
     __global const real* t = tex + LB_IND_TEX * (j * T + i);
     int best = -1;
     if (t[LB_IND_FLUX] > R(0)) {
@@ -237,7 +249,8 @@ __kernel void km_assign(__global const real* tex, int T, __global const real* ce
     int i = get_global_id(0), j = get_global_id(1);
     if (i >= T || j >= T)
         return;
-    label[j * T + i] = ind_nearest(tex, T, i, j, centres, 0, K, R(0), wx, wn, wb);
+    ind_candidates cs = {centres, 0, K, R(0), wx, wn, wb};
+    label[j * T + i] = ind_nearest(tex, T, i, j, &cs);
 }
 
 /* Sums of cluster k over texel row j (K x T work-items). */
@@ -453,7 +466,8 @@ __kernel void ac_map(__global const real* tex, int T, __global const real* centr
     int i = get_global_id(0), j = get_global_id(1);
     if (i >= T || j >= T)
         return;
-    label[j * T + i] = ind_nearest(tex, T, i, j, centres, state, K, window, wx, wn, wb);
+    ind_candidates cs = {centres, state, K, window, wx, wn, wb};
+    label[j * T + i] = ind_nearest(tex, T, i, j, &cs);
 }
 
 #define IND_AC_MAXK 1024

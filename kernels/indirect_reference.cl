@@ -99,6 +99,8 @@ LB_RENDER_KERNEL
 {
     LB_REFERENCE_OPENING;
     real rho = P[LB_P_ALBEDO];
-    real e = lb_bounce_irradiance(edir, grid, x, nx, rho, rel_tol, max_splits, &err, &splits);
-    LB_REFERENCE_STORE(e, err + lb_bounce_interp_err(delta, x, nx, rho));
+    lb_adapt_report rep;
+    real e = lb_bounce_irradiance(edir, grid, x, nx, rho, lb_adapt_goal_of(rel_tol, max_splits), &rep);
+    splits = rep.splits;
+    LB_REFERENCE_STORE(e, rep.err + lb_bounce_interp_err(delta, x, nx, rho));
 }

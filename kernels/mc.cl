@@ -782,6 +782,7 @@ LB_RENDER_KERNEL
 {
     (void)np, (void)tab, (void)var;
     LB_RENDER_PIXELS;
+    LB_V ou = pix_span.u0, ov = pix_span.v0, on = pix_view.h;
     int m = mc_tile_count(n, extra, row0, res, LB_NLANES, &st);
     LB_V sum = R(0) * ou, d1 = sum, d2 = sum;
 #ifdef LB_NO_BACK

@@ -41,7 +41,7 @@ LB_FN real lb_smc_u01(uint h)
 #define LB_ENTRY_ARGS , __global const real *st, int n, int seed
 
 #ifdef LB_SMC_RECT
-#define LB_ENTRY_FORM LB_VFN(lb_smc_rect_light)(P, lum, st, n, ou, ov, on, au, av, an)
+#define LB_ENTRY_FORM LB_VFN(lb_smc_rect_light)(P, lum, st, n, &pix_span, &pix_view)
 #include "common/entry_straight.inc"
 #else
 LB_RENDER_KERNEL
@@ -84,8 +84,8 @@ LB_RENDER_KERNEL
         for (int i = 0; i < n; ++i) {
             uint h = lb_smc_hash(pix ^ lb_smc_hash((uint)seed * 0x9E3779B9u + (uint)i));
             real u1 = lb_smc_u01(h), u2 = lb_smc_u01(lb_smc_hash(h + 0x68E31DA4u));
-            real mx, my, mz;
-            lb_ggx_sample_vndf(ox, R(0), oz, alpha, u1, u2, &mx, &my, &mz);
+            real3 m = lb_ggx_sample_vndf(ox, R(0), oz, alpha, u1, u2);
+            real mx = m.x, my = m.y, mz = m.z;
             real dm = ox * mx + oz * mz;
             real ix = R(2) * dm * mx - ox, iy = R(2) * dm * my, iz = R(2) * dm * mz - oz;
             if (!(iz > R(0)))

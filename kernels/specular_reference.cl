@@ -12,8 +12,9 @@
 LB_RENDER_KERNEL
 {
     LB_REFERENCE_OPENING;
-    int cells;
-    real v = lb_specular_reference(lum, L, x, nx, lb_p3(P, LB_P_EYE), P[LB_P_ALPHA], rel_tol, max_splits, &err,
-                                   &splits, &cells);
-    LB_REFERENCE_STORE(v, err);
+    lb_adapt_report rep;
+    real v = lb_specular_reference(lum, L, x, nx, lb_p3(P, LB_P_EYE), P[LB_P_ALPHA],
+                                   lb_adapt_goal_of(rel_tol, max_splits), &rep);
+    splits = rep.splits;
+    LB_REFERENCE_STORE(v, rep.err);
 }

@@ -14,7 +14,7 @@
 #define LB_ENTRY_ARGS
 
 #ifdef LB_STRUCT_RECT
-#define LB_ENTRY_FORM LB_VFN(lb_structured_rect)(lum, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an)
+#define LB_ENTRY_FORM LB_VFN(lb_structured_rect)(lum, &pix_span, &pix_view)
 #include "common/entry_straight.inc"
 #else
 LB_RENDER_KERNEL

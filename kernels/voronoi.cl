@@ -17,7 +17,7 @@
 #define LB_ENTRY_ARGS , __global const float *tab, int tres, real plane_eps
 
 #ifdef LB_VOR_RECT
-#define LB_ENTRY_FORM LB_VFN(lb_voronoi_rect)(lum, tab, tres, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an, plane_eps)
+#define LB_ENTRY_FORM LB_VFN(lb_voronoi_rect)(lum, tab, tres, &pix_span, &pix_view, plane_eps)
 #include "common/entry_straight.inc"
 #else
 LB_RENDER_KERNEL

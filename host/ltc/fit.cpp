@@ -98,8 +98,8 @@ struct Brdf {
     double pdf(const V3& L) const { return f64::lb_ggx_vndf_pdf(L[0], L[1], L[2], V[0], V[1], V[2], alpha); }
     V3 sample(double u1, double u2) const
     {
-        double mx, my, mz;
-        f64::lb_ggx_sample_vndf(V[0], V[1], V[2], alpha, u1, u2, &mx, &my, &mz);
+        const f64::real3 m = f64::lb_ggx_sample_vndf(V[0], V[1], V[2], alpha, u1, u2);
+        const double mx = m.x, my = m.y, mz = m.z;
         double d = V[0] * mx + V[1] * my + V[2] * mz;
         return {2 * d * mx - V[0], 2 * d * my - V[1], 2 * d * mz - V[2]};
     }

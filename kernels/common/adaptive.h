@@ -1,12 +1,12 @@
 /* adaptive.h -- globally adaptive cubature over rectangular cells (QUADPACK
- * style), the one loop behind the converged references: the floor's area
- * integral (area_ref.h), the specular area form (specref.h) and the one-bounce
- * integral over the room's surfaces (indirect.h).
+ * style), the one loop and the one rule behind the converged references: the
+ * floor's area integral (area_ref.h), the specular area form (specref.h) and
+ * the one-bounce integral over the room's surfaces (indirect.h).
  *
  * A cell is the rectangle [s, s + hs] x [t, t + ht] of surface k's parameter
- * square; it carries a value v and an error estimate e, both the caller's
- * (each caller sums a tensor 4x4 Gauss-Legendre rule over the cell's 4
- * children, and e = |rule on the cell - that sum|). The caller puts its first
+ * square; it carries a value v and an error estimate e (the references' rule,
+ * LB_ADAPT_GL4 below: a tensor 4x4 Gauss-Legendre rule summed over the
+ * cell's 4 children, and e = |rule on the cell - that sum|). The caller puts its first
  * cells (lb_adapt_add), then, while the summed error exceeds rel_tol times
  * the summed value, the store can take 3 more cells, the split budget lasts
  * and some cell has a positive error, the cell of the largest error (the
@@ -14,7 +14,8 @@
  * replaces it, children 1..3 go to the end. OpenCL C has no function
  * pointers, so the loop hands the children out instead of calling an
  * integrand: lb_adapt_next gives the next cell to evaluate, the caller puts
- * its value and error back with lb_adapt_put, until lb_adapt_next says done;
+ * its value and error back with lb_adapt_put, until lb_adapt_next says done
+ * (LB_ADAPT_GL4's NAME_refine is that loop for its integrand);
  * lb_adapt_sum then re-sums the cells (the running sums carry rounding
  * residues of the subtractions).
  *
@@ -76,7 +77,8 @@ LB_FN lb_adapt lb_adapt_store(int* ks, real* ss, real* ts, real* hss, real* hts,
     return a;
 }
 
-LB_FN void lb_adapt_set(lb_adapt* a, int slot, int k, real s, real t, real hs, real ht, real v, real e)
+/* Slot `slot` holds the cell [s, s + hs] x [t, t + ht] of surface k ... */
+LB_FN void lb_adapt_place(lb_adapt* a, int slot, int k, real s, real t, real hs, real ht)
 {
     if (a->ks)
         a->ks[slot] = k;
@@ -84,6 +86,11 @@ LB_FN void lb_adapt_set(lb_adapt* a, int slot, int k, real s, real t, real hs, r
     a->ts[slot] = t;
     a->hss[slot] = hs;
     a->hts[slot] = ht;
+}
+
+/* ... with value v and error e (both added to the running sums). */
+LB_FN void lb_adapt_value(lb_adapt* a, int slot, real v, real e)
+{
     a->vs[slot] = v;
     a->es[slot] = e;
     a->total += v;
@@ -93,7 +100,8 @@ LB_FN void lb_adapt_set(lb_adapt* a, int slot, int k, real s, real t, real hs, r
 /* A first cell (the caller keeps within cap). */
 LB_FN void lb_adapt_add(lb_adapt* a, int k, real s, real t, real hs, real ht, real v, real e)
 {
-    lb_adapt_set(a, a->n++, k, s, t, hs, ht, v, e);
+    lb_adapt_place(a, a->n, k, s, t, hs, ht);
+    lb_adapt_value(a, a->n++, v, e);
 }
 
 /* The next cell to evaluate: 1 with it in a->k, a->s, a->t, a->hs, a->ht,
@@ -128,7 +136,8 @@ LB_FN void lb_adapt_put(lb_adapt* a, real v, real e)
 {
     int slot = a->q == 0 ? a->m : a->n++;
     ++a->q;
-    lb_adapt_set(a, slot, a->k, a->s, a->t, a->hs, a->ht, v, e);
+    lb_adapt_place(a, slot, a->k, a->s, a->t, a->hs, a->ht);
+    lb_adapt_value(a, slot, v, e);
 }
 
 /* The summed value of the cells; *err gets their summed error. */
@@ -142,3 +151,71 @@ LB_FN real lb_adapt_sum(const lb_adapt* a, real* err)
     *err = toterr;
     return total;
 }
+
+/* What a reference's caller asks for: the loop stops once the summed error
+ * is <= rel_tol times the summed value, or after max_splits splits ... */
+typedef struct {
+    real rel_tol;
+    int max_splits;
+} lb_adapt_goal;
+
+LB_FN lb_adapt_goal lb_adapt_goal_of(real rel_tol, int max_splits)
+{
+    lb_adapt_goal g;
+    g.rel_tol = rel_tol;
+    g.max_splits = max_splits;
+    return g;
+}
+
+/* ... and what it reports: the summed error estimate, the splits made and
+ * the cells at the end. */
+typedef struct {
+    real err;
+    int splits, cells;
+} lb_adapt_report;
+
+/* LB_ADAPT_GL4(NAME, CTX, F, AREA, AT): the references' rule, written once for
+ * the integrand F(const CTX* c, real s, real t) over the (s, t) square. It
+ * defines
+ *   NAME_rule(c, s0, t0, hs, ht): the tensor 4x4 Gauss-Legendre rule on the
+ *     cell [s0, s0 + hs] x [t0, t0 + ht], AREA(c, q) of its sum q times
+ *     hs ht (the measure of the cell: q itself where ds dt is the measure);
+ *   NAME_cell(c, s0, t0, hs, ht, &err): the cell's value (the rule summed
+ *     over its 4 children) and error estimate (|rule on the cell - that
+ *     sum|);
+ *   NAME_refine(a, c, rel_tol, max_splits): the adaptive loop above over the
+ *     store a once its first cells are in (lb_adapt_next, NAME_cell,
+ *     lb_adapt_put), AT(c, k) readying c for surface k before each cell
+ *     (LB_ADAPT_ONE_SURFACE: nothing to do).
+ * A macro, not a function: OpenCL C has no function pointers. */
+#define LB_ADAPT_ONE_SURFACE(c, k) ((void)(c), (void)(k))
+#define LB_ADAPT_GL4(NAME, CTX, F, AREA, AT)                                                                   \
+    LB_FN real NAME##_rule(const CTX* c, real s0, real t0, real hs, real ht)                                   \
+    {                                                                                                          \
+        real q = R(0);                                                                                         \
+        for (int j = 0; j < 4; ++j) {                                                                          \
+            real row = R(0);                                                                                   \
+            for (int i = 0; i < 4; ++i)                                                                        \
+                row += lb_gl4_w(i) * F(c, s0 + hs * lb_gl4_x(i), t0 + ht * lb_gl4_x(j));                       \
+            q += lb_gl4_w(j) * row;                                                                            \
+        }                                                                                                      \
+        return AREA(c, q * hs * ht);                                                                           \
+    }                                                                                                          \
+    LB_FN real NAME##_cell(const CTX* c, real s0, real t0, real hs, real ht, real* err)                        \
+    {                                                                                                          \
+        real q = NAME##_rule(c, s0, t0, hs, ht);                                                               \
+        real a = R(0.5) * hs, b = R(0.5) * ht;                                                                 \
+        real v = NAME##_rule(c, s0, t0, a, b) + NAME##_rule(c, s0 + a, t0, a, b) +                             \
+                 NAME##_rule(c, s0, t0 + b, a, b) + NAME##_rule(c, s0 + a, t0 + b, a, b);                      \
+        *err = fabs(v - q);                                                                                    \
+        return v;                                                                                              \
+    }                                                                                                          \
+    LB_FN void NAME##_refine(lb_adapt* a, CTX* c, real rel_tol, int max_splits)                                \
+    {                                                                                                          \
+        while (lb_adapt_next(a, rel_tol, max_splits)) {                                                        \
+            AT(c, a->k);                                                                                       \
+            real e;                                                                                            \
+            real v = NAME##_cell(c, a->s, a->t, a->hs, a->ht, &e);                                             \
+            lb_adapt_put(a, v, e);                                                                             \
+        }                                                                                                      \
+    }

@@ -33,6 +33,7 @@ typedef struct {
      * the centre relative to x and the half-axes (W/2) u, (L/2) v */
     real3 o, eu, ev, nx; /* ... and the receiver normal */
     lb_light L;
+    __global const float* lum; /* the photometric table */
 } lb_ref_ctx;
 
 /* The integrand f(s, t) = I(d) max(0, n_x . w) / r^2 (dA / A = ds dt). On
@@ -43,7 +44,7 @@ typedef struct {
  * downlight 0.1 m up spent the whole budget in most pixels). Its derivative
  * jumps along the square's diagonals: a kink like the table's, refined
  * the same way. */
-LB_FN real lb_ref_f(__global const float* lum, const lb_ref_ctx* c, real s, real t)
+LB_FN real lb_ref_f(const lb_ref_ctx* c, real s, real t)
 {
     real3 w;
     if (c->L.shape == LB_SHAPE_DISK) {
@@ -57,33 +58,12 @@ LB_FN real lb_ref_f(__global const float* lum, const lb_ref_ctx* c, real s, real
     real cw = dot(c->nx, w);
     if (!(cw > R(0)) || !(r2 > R(0)))
         return R(0);
-    return lb_intensity_local(lum, lb_to_light_frame(c->L, -w)) * cw / (r2 * sqrt(r2));
+    return lb_intensity_local(c->lum, lb_to_light_frame(c->L, -w)) * cw / (r2 * sqrt(r2));
 }
 
-/* Tensor 4x4 Gauss-Legendre rule on the cell [s0, s0+h] x [t0, t0+h]. */
-LB_FN real lb_ref_rule(__global const float* lum, const lb_ref_ctx* c, real s0, real t0, real h)
-{
-    real q = R(0);
-    for (int j = 0; j < 4; ++j) {
-        real row = R(0);
-        for (int i = 0; i < 4; ++i)
-            row += lb_gl4_w(i) * lb_ref_f(lum, c, s0 + h * lb_gl4_x(i), t0 + h * lb_gl4_x(j));
-        q += lb_gl4_w(j) * row;
-    }
-    return q * h * h;
-}
-
-/* Value (the rule summed over the cell's 4 children) and error estimate
- * (|rule on the cell - that sum|) of the cell [s0, s0+h] x [t0, t0+h]. */
-LB_FN real lb_ref_cell(__global const float* lum, const lb_ref_ctx* c, real s0, real t0, real h, real* err)
-{
-    real q = lb_ref_rule(lum, c, s0, t0, h);
-    real hh = R(0.5) * h;
-    real v = lb_ref_rule(lum, c, s0, t0, hh) + lb_ref_rule(lum, c, s0 + hh, t0, hh) +
-             lb_ref_rule(lum, c, s0, t0 + hh, hh) + lb_ref_rule(lum, c, s0 + hh, t0 + hh, hh);
-    *err = fabs(v - q);
-    return v;
-}
+/* lb_ref_rule, lb_ref_cell, lb_ref_refine: adaptive.h's rule on lb_ref_f. */
+#define LB_REF_AREA(c, q) (q)
+LB_ADAPT_GL4(lb_ref, lb_ref_ctx, lb_ref_f, LB_REF_AREA, LB_ADAPT_ONE_SURFACE)
 
 /* E (lux) at the point x with normal nx from the light L: rel_tol the target
  * relative error, max_splits the budget of cell splits (each costs 4 x 80
@@ -93,6 +73,7 @@ LB_FN real lb_ref_irradiance(__global const float* lum, lb_light L, real3 x, rea
                              real* err, int* splits_made)
 {
     lb_ref_ctx c;
+    c.lum = lum;
     c.L = L;
     c.nx = nx;
     const int disk = L.shape == LB_SHAPE_DISK;
@@ -107,14 +88,10 @@ LB_FN real lb_ref_irradiance(__global const float* lum, lb_light L, real3 x, rea
         for (int i = 0; i < LB_REF_INIT; ++i) {
             real s0 = h0 * (real)i, t0 = h0 * (real)j;
             real e;
-            real v = lb_ref_cell(lum, &c, s0, t0, h0, &e);
+            real v = lb_ref_cell(&c, s0, t0, h0, h0, &e);
             lb_adapt_add(&a, 0, s0, t0, h0, h0, v, e);
         }
-    while (lb_adapt_next(&a, rel_tol, max_splits)) {
-        real e;
-        real v = lb_ref_cell(lum, &c, a.s, a.t, a.hs, &e);
-        lb_adapt_put(&a, v, e);
-    }
+    lb_ref_refine(&a, &c, rel_tol, max_splits);
     *splits_made = a.splits;
     return lb_adapt_sum(&a, err);
 }

@@ -36,9 +36,9 @@
 
 #define LB_RENDER_PIXELS                                                                                       \
     int col0, row, res;                                                                                        \
-    LB_V ou, ov, on;                                                                                           \
-    real au, av, an;                                                                                           \
-    if (!LB_VFN(lb_work_item_pixels)(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))               \
+    LB_VFN(lb_rect_span) pix_span;                                                                             \
+    LB_VFN(lb_rect_view) pix_view;                                                                             \
+    if (!LB_VFN(lb_work_item_pixels)(P, row0, &col0, &row, &res, &pix_span, &pix_view))                       \
     return
 
 /* The cubature kernel's arguments (cubature.cl), which sh.cl's kernel also

@@ -58,11 +58,11 @@ LB_FN void lb_view_frame(real3 n, real3 wo, real3* t1, real3* t2)
 /* Visible-normal sampling of GGX (Heitz 2018, "Sampling the GGX Distribution
  * of Visible Normals"): a microfacet normal m drawn with density
  * D_o(m) = G1(w_o) max(0, w_o . m) D(m) / cos_o for the unit view direction
- * (ox, oy, oz), oz > 0, from (u1, u2) in [0, 1)^2. The reflected direction
+ * (ox, oy, oz), oz > 0, from (u1, u2) in [0, 1)^2 (returned in the frame of
+ * (ox, oy, oz): z along the normal). The reflected direction
  * w_i = 2 (w_o . m) m - w_o then has density D_o(m) / (4 w_o . m), and the
  * estimator f_r cos_i / pdf = G2 / G1(w_o) (no D left). */
-LB_FN void lb_ggx_sample_vndf(real ox, real oy, real oz, real alpha, real u1, real u2, real* mx, real* my,
-                              real* mz)
+LB_FN real3 lb_ggx_sample_vndf(real ox, real oy, real oz, real alpha, real u1, real u2)
 {
     /* stretch the view direction to the hemisphere configuration */
     real vx = alpha * ox, vy = alpha * oy, vz = oz;
@@ -94,9 +94,7 @@ LB_FN void lb_ggx_sample_vndf(real ox, real oy, real oz, real alpha, real u1, re
     ny *= alpha;
     nz = fmax(R(0), nz);
     real nl = sqrt(nx * nx + ny * ny + nz * nz);
-    *mx = nx / nl;
-    *my = ny / nl;
-    *mz = nz / nl;
+    return R3(nx / nl, ny / nl, nz / nl);
 }
 
 /* Density (per solid angle of w_i) of the VNDF sampler's reflected direction:

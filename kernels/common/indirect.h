@@ -166,52 +166,43 @@ LB_FN real lb_edir_interp(__global const real* edir, __global const int* grid, i
     return e;
 }
 
-/* The bounce's integrand at (s, t) of surface k: E_dir(y) cos_x cos_y / r^2
- * for the receiver x with normal nx (the factor rho / pi comes last).
- * visibility: none in the convex empty room. */
-LB_FN real lb_bounce_f(__global const real* edir, __global const int* grid, int k, real3 o, real3 a, real3 b,
-                       real3 n, real3 x, real3 nx, real s, real t)
+/* The bounce's integrand over surface k (o, a, b, n: lb_room_surface) for
+ * the receiver x with normal nx; la, lb the lengths of a and b (the area of
+ * a unit of (s, t) is la lb). */
+typedef struct {
+    __global const real* edir; /* E_dir at the nodes (the grid above) */
+    __global const int* grid;
+    real3 x, nx;
+    int k;
+    real3 o, a, b, n;
+    real la, lb;
+} lb_bounce_ctx;
+
+/* c readied for surface k. */
+LB_FN void lb_bounce_at(lb_bounce_ctx* c, int k)
 {
-    real3 w = o + a * s + b * t - x;
+    c->k = k;
+    lb_room_surface(k, &c->o, &c->a, &c->b, &c->n);
+    c->la = length(c->a);
+    c->lb = length(c->b);
+}
+
+/* The integrand at (s, t): E_dir(y) cos_x cos_y / r^2 (the factor rho / pi
+ * comes last). visibility: none in the convex empty room. */
+LB_FN real lb_bounce_f(const lb_bounce_ctx* c, real s, real t)
+{
+    real3 w = c->o + c->a * s + c->b * t - c->x;
     real r2 = dot(w, w);
-    real cx = dot(nx, w), cy = -dot(n, w);
+    real cx = dot(c->nx, w), cy = -dot(c->n, w);
     if (!(cx > R(0)) || !(cy > R(0)) || !(r2 > R(0)))
         return R(0);
-    return lb_edir_interp(edir, grid, k, s, t) * cx * cy / (r2 * r2);
+    return lb_edir_interp(c->edir, c->grid, c->k, s, t) * cx * cy / (r2 * r2);
 }
 
-/* Tensor 4 x 4 Gauss-Legendre rule of the integrand over the (s, t) cell
- * [s0, s0 + hs] x [t0, t0 + ht] of surface k, in m^2 (area = |a| |b| hs ht). */
-LB_FN real lb_bounce_rule(__global const real* edir, __global const int* grid, int k, real3 x, real3 nx, real s0,
-                          real t0, real hs, real ht)
-{
-    real3 o, a, b, n;
-    lb_room_surface(k, &o, &a, &b, &n);
-    real q = R(0);
-    for (int j = 0; j < 4; ++j) {
-        real row = R(0);
-        for (int i = 0; i < 4; ++i)
-            row += lb_gl4_w(i) * lb_bounce_f(edir, grid, k, o, a, b, n, x, nx, s0 + hs * lb_gl4_x(i),
-                                             t0 + ht * lb_gl4_x(j));
-        q += lb_gl4_w(j) * row;
-    }
-    return q * hs * ht * length(a) * length(b);
-}
-
-/* Value (the rule summed over the cell's 4 children) and error estimate
- * (|rule on the cell - that sum|) of the cell [s0, s0 + hs] x [t0, t0 + ht]
- * of surface k. */
-LB_FN real lb_bounce_cell(__global const real* edir, __global const int* grid, int k, real3 x, real3 nx, real s0,
-                          real t0, real hs, real ht, real* err)
-{
-    real q = lb_bounce_rule(edir, grid, k, x, nx, s0, t0, hs, ht);
-    real a = R(0.5) * hs, b = R(0.5) * ht;
-    real v = lb_bounce_rule(edir, grid, k, x, nx, s0, t0, a, b) + lb_bounce_rule(edir, grid, k, x, nx, s0 + a, t0, a, b) +
-             lb_bounce_rule(edir, grid, k, x, nx, s0, t0 + b, a, b) +
-             lb_bounce_rule(edir, grid, k, x, nx, s0 + a, t0 + b, a, b);
-    *err = fabs(v - q);
-    return v;
-}
+/* lb_bounce_rule (in m^2), lb_bounce_cell, lb_bounce_refine: adaptive.h's
+ * rule on lb_bounce_f. */
+#define LB_BOUNCE_AREA(c, q) ((q) * (c)->la * (c)->lb)
+LB_ADAPT_GL4(lb_bounce, lb_bounce_ctx, lb_bounce_f, LB_BOUNCE_AREA, lb_bounce_at)
 
 /* First cells: about 1 m squares (ceiling 5 x 5, walls 5 x 3 in the
  * normalized room: 85 cells). */
@@ -232,39 +223,43 @@ LB_FN int lb_bounce_init_cells(int k, int* ns, int* nt)
  *   E_ind(x) = (rho / pi) sum_k int_k E_dir(y) cos_x cos_y / r^2 dA(y),
  * by globally adaptive cubature over the five surfaces together (the cell of
  * the largest error estimate is split: adaptive.h), until the summed
- * estimate is <= rel_tol E_ind or max_splits splits are spent. *err gets the
- * quadrature's error estimate (lux), *splits the splits made. The error of
+ * estimate is <= goal.rel_tol E_ind or goal.max_splits splits are spent.
+ * rep->err gets the quadrature's error estimate (lux), rep->splits the splits
+ * made, rep->cells the cells at the end. The error of
  * E_dir's interpolation is the caller's (lb_bounce_interp_err). */
 LB_FN real lb_bounce_irradiance(__global const real* edir, __global const int* grid, real3 x, real3 nx, real rho,
-                                real rel_tol, int max_splits, real* err, int* splits_made)
+                                lb_adapt_goal goal, lb_adapt_report* rep)
 {
+    lb_bounce_ctx c;
+    c.edir = edir;
+    c.grid = grid;
+    c.x = x;
+    c.nx = nx;
     int ck[LB_BOUNCE_CELLS];
     real cs[LB_BOUNCE_CELLS], ct[LB_BOUNCE_CELLS], chs[LB_BOUNCE_CELLS], cht[LB_BOUNCE_CELLS], cv[LB_BOUNCE_CELLS],
         ce[LB_BOUNCE_CELLS];
-    lb_adapt c = lb_adapt_store(ck, cs, ct, chs, cht, cv, ce, LB_BOUNCE_CELLS);
+    lb_adapt a = lb_adapt_store(ck, cs, ct, chs, cht, cv, ce, LB_BOUNCE_CELLS);
     for (int k = 0; k < LB_ROOM_NSURF; ++k) {
         int ns, nt;
         lb_bounce_init_cells(k, &ns, &nt);
+        lb_bounce_at(&c, k);
         for (int j = 0; j < nt; ++j)
             for (int i = 0; i < ns; ++i) {
-                if (c.n >= LB_BOUNCE_MAXINIT)
+                if (a.n >= LB_BOUNCE_MAXINIT)
                     break;
                 real hs = R(1) / (real)ns, ht = R(1) / (real)nt;
                 real s0 = hs * (real)i, t0 = ht * (real)j;
                 real e;
-                real v = lb_bounce_cell(edir, grid, k, x, nx, s0, t0, hs, ht, &e);
-                lb_adapt_add(&c, k, s0, t0, hs, ht, v, e);
+                real v = lb_bounce_cell(&c, s0, t0, hs, ht, &e);
+                lb_adapt_add(&a, k, s0, t0, hs, ht, v, e);
             }
     }
-    while (lb_adapt_next(&c, rel_tol, LB_IMIN(max_splits, LB_BOUNCE_MAXSPLITS))) {
-        real e;
-        real v = lb_bounce_cell(edir, grid, c.k, x, nx, c.s, c.t, c.hs, c.ht, &e);
-        lb_adapt_put(&c, v, e);
-    }
-    *splits_made = c.splits;
+    lb_bounce_refine(&a, &c, goal.rel_tol, LB_IMIN(goal.max_splits, LB_BOUNCE_MAXSPLITS));
+    rep->splits = a.splits;
+    rep->cells = a.n;
     real toterr;
-    real total = lb_adapt_sum(&c, &toterr);
-    *err = rho / LB_PI * toterr;
+    real total = lb_adapt_sum(&a, &toterr);
+    rep->err = rho / LB_PI * toterr;
     return rho / LB_PI * total;
 }
 

@@ -34,10 +34,11 @@ typedef struct {
     real ox, oz;         /* w_o in the view frame: (ox, 0, oz) */
     real alpha;
     lb_light L;
+    __global const float* lum; /* the photometric table */
 } lb_sref_ctx;
 
 /* g(s, t) = I(d) f_r(w, w_o) max(0, n_x . w) / r^2. */
-LB_FN real lb_sref_g(__global const float* lum, const lb_sref_ctx* c, real s, real t)
+LB_FN real lb_sref_g(const lb_sref_ctx* c, real s, real t)
 {
     real3 p = c->o + c->eu * s + c->ev * t;
     real r2 = dot(p, p);
@@ -51,30 +52,12 @@ LB_FN real lb_sref_g(__global const float* lum, const lb_sref_ctx* c, real s, re
     real f = lb_ggx_brdf(dot(w, c->t1), dot(w, c->t2), cz, c->ox, R(0), c->oz, c->alpha);
     if (!(f > R(0)))
         return R(0);
-    return lb_intensity_local(lum, lb_to_light_frame(c->L, -w)) * f * cz / r2;
+    return lb_intensity_local(c->lum, lb_to_light_frame(c->L, -w)) * f * cz / r2;
 }
 
-LB_FN real lb_sref_rule(__global const float* lum, const lb_sref_ctx* c, real s0, real t0, real h)
-{
-    real q = R(0);
-    for (int j = 0; j < 4; ++j) {
-        real row = R(0);
-        for (int i = 0; i < 4; ++i)
-            row += lb_gl4_w(i) * lb_sref_g(lum, c, s0 + h * lb_gl4_x(i), t0 + h * lb_gl4_x(j));
-        q += lb_gl4_w(j) * row;
-    }
-    return q * h * h;
-}
-
-LB_FN real lb_sref_refine(__global const float* lum, const lb_sref_ctx* c, real s0, real t0, real h, real* err)
-{
-    real q = lb_sref_rule(lum, c, s0, t0, h);
-    real hh = R(0.5) * h;
-    real v = lb_sref_rule(lum, c, s0, t0, hh) + lb_sref_rule(lum, c, s0 + hh, t0, hh) +
-             lb_sref_rule(lum, c, s0, t0 + hh, hh) + lb_sref_rule(lum, c, s0 + hh, t0 + hh, hh);
-    *err = fabs(v - q);
-    return v;
-}
+/* lb_sref_rule, lb_sref_cell, lb_sref_refine: adaptive.h's rule on lb_sref_g. */
+#define LB_SREF_AREA(c, q) (q)
+LB_ADAPT_GL4(lb_sref, lb_sref_ctx, lb_sref_g, LB_SREF_AREA, LB_ADAPT_ONE_SURFACE)
 
 /* Does the cell [s0, s0+h] x [t0, t0+h] need a split for the target (ts, tt)
  * of half-width d? */
@@ -84,12 +67,14 @@ LB_FN int lb_sref_needs(real s0, real t0, real h, real ts, real tt, real d)
 }
 
 /* The reference at the receiver point x (world), normal nx (unit), eye
- * point eye, GGX alpha. *err: the summed error estimate; *splits: adaptive
- * splits made (not counting the first mesh); *cells: cells at the end. */
+ * point eye, GGX alpha, to the goal's tolerance and budget. *rep: the summed
+ * error estimate, the adaptive splits made (not counting the first mesh) and
+ * the cells at the end. */
 LB_FN real lb_specular_reference(__global const float* lum, lb_light L, real3 x, real3 nx, real3 eye, real alpha,
-                                 real rel_tol, int max_splits, real* err, int* splits, int* cells)
+                                 lb_adapt_goal goal, lb_adapt_report* rep)
 {
     lb_sref_ctx c;
+    c.lum = lum;
     c.L = L;
     c.nx = nx;
     c.o = L.c - L.u * (R(0.5) * L.w) - L.v * (R(0.5) * L.l) - x;
@@ -100,9 +85,9 @@ LB_FN real lb_specular_reference(__global const float* lum, lb_light L, real3 x,
     lb_view_frame(nx, wo, &c.t1, &c.t2);
     c.ox = dot(wo, c.t1);
     c.oz = dot(wo, nx);
-    *err = R(0);
-    *splits = 0;
-    *cells = 0;
+    rep->err = R(0);
+    rep->splits = 0;
+    rep->cells = 0;
     if (!(c.oz > R(0)))
         return R(0);
 
@@ -155,15 +140,11 @@ LB_FN real lb_specular_reference(__global const float* lum, lb_light L, real3 x,
     lb_adapt a = lb_adapt_store(0, cs, ct, ch, ch, cv, ce, LB_SREF_CELLS);
     for (int k = 0; k < n; ++k) {
         real e;
-        real v = lb_sref_refine(lum, &c, cs[k], ct[k], ch[k], &e);
+        real v = lb_sref_cell(&c, cs[k], ct[k], ch[k], ch[k], &e);
         lb_adapt_add(&a, 0, cs[k], ct[k], ch[k], ch[k], v, e);
     }
-    while (lb_adapt_next(&a, rel_tol, max_splits)) {
-        real e;
-        real v = lb_sref_refine(lum, &c, a.s, a.t, a.hs, &e);
-        lb_adapt_put(&a, v, e);
-    }
-    *splits = a.splits;
-    *cells = a.n;
-    return lb_adapt_sum(&a, err);
+    lb_sref_refine(&a, &c, goal.rel_tol, goal.max_splits);
+    rep->splits = a.splits;
+    rep->cells = a.n;
+    return lb_adapt_sum(&a, &rep->err);
 }

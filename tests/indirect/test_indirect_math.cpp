@@ -128,9 +128,10 @@ TEST(IndirectBounce, ConstantWallGivesTheLambertClosedForm)
         // the floor's centre, a point near wall 1 and one 5 mm from a corner
         for (dvec3 x : {dvec3(0, 0, 0), dvec3(-2.3, 0.4, 0), dvec3(-2.495, -2.495, 0)}) {
             const dvec3 nx(0, 0, 1);
-            double err;
-            int splits;
-            double v = f64::lb_bounce_irradiance(e.data(), g.g.data(), x, nx, rho, 1e-8, 160, &err, &splits);
+            f64::lb_adapt_report rep;
+            double v =
+                f64::lb_bounce_irradiance(e.data(), g.g.data(), x, nx, rho, f64::lb_adapt_goal_of(1e-8, 160), &rep);
+            const double err = rep.err;
             // Lambert's formula of the polygon (spherical.h, itself tested
             // against closed forms in tests/math)
             double exact = rho / M_PI * E0 * f64::lb_surface_lambert(wall, x, nx);
@@ -150,9 +151,9 @@ TEST(IndirectBounce, UniformRoomReflectsRhoE0)
     Grid g = grid(0.5);
     std::vector<double> e(g.nodes, 50.0);
     for (dvec3 x : {dvec3(0, 0, 0), dvec3(1.7, -2.2, 0)}) {
-        double err;
-        int splits;
-        double v = f64::lb_bounce_irradiance(e.data(), g.g.data(), x, dvec3(0, 0, 1), 0.5, 1e-8, 160, &err, &splits);
+        f64::lb_adapt_report rep;
+        double v = f64::lb_bounce_irradiance(e.data(), g.g.data(), x, dvec3(0, 0, 1), 0.5,
+                                             f64::lb_adapt_goal_of(1e-8, 160), &rep);
         EXPECT_NEAR(v, 25.0, 1e-5) << x.x;
         double lam = 0;
         for (int k = 0; k < LB_ROOM_NSURF; ++k) lam += f64::lb_surface_lambert(k, x, dvec3(0, 0, 1));

@@ -107,10 +107,11 @@ TEST(SpecularReference, LargeLambertianLightGivesAlbedo)
         for (double th : {0.0, 0.6, 1.2}) {
             glm::dvec3 x(0.3, -0.2, 0);
             glm::dvec3 eye = x + 3.0 * glm::dvec3(std::sin(th) * 0.6, std::sin(th) * 0.8, std::cos(th));
-            double err;
-            int splits, cells;
+            f64::lb_adapt_report rep;
             double ls =
-                f64::lb_specular_reference(lum.data(), L, x, {0, 0, 1}, eye, a, 1e-6, 160, &err, &splits, &cells);
+                f64::lb_specular_reference(lum.data(), L, x, {0, 0, 1}, eye, a, f64::lb_adapt_goal_of(1e-6, 160), &rep);
+            const double err = rep.err;
+            const int splits = rep.splits, cells = rep.cells;
             double want = le * albedoQuadrature(a, th);
             EXPECT_NEAR(ls, want, 1e-3 * want)
                 << "alpha " << a << " theta " << th << " splits " << splits << " cells " << cells << " err " << err;

@@ -138,9 +138,7 @@ double l1Bound(const double* c, double alpha, double theta)
     for (int j = 0; j < ns; ++j)
         for (int i = 0; i < ns; ++i) {
             double u1 = (i + 0.5) / ns, u2 = (j + 0.5) / ns;
-            double mx, my, mz;
-            f64::lb_ggx_sample_vndf(V.x, V.y, V.z, alpha, u1, u2, &mx, &my, &mz);
-            glm::dvec3 m(mx, my, mz);
+            glm::dvec3 m = f64::lb_ggx_sample_vndf(V.x, V.y, V.z, alpha, u1, u2);
             glm::dvec3 L1 = 2 * glm::dot(V, m) * m - V;
             double ct = std::sqrt(u1), st = std::sqrt(1 - u1), phi = 2 * M_PI * u2;
             glm::dvec3 L2 = glm::normalize(M * glm::dvec3(st * std::cos(phi), st * std::sin(phi), ct));

@@ -39,10 +39,9 @@ Images render(double alpha, double h, double R, int res, const ltc::Table& fixed
     for (int row = 0; row < res; ++row)
         for (int col = 0; col < res; ++col) {
             glm::dvec3 x = f64::lb_pixel_position(P.data(), row, col);
-            double err;
-            int sp, cells;
-            im.ref.push_back(
-                f64::lb_specular_reference(lum.data(), L, x, {0, 0, 1}, sc.eye, alpha, 1e-5, 160, &err, &sp, &cells));
+            f64::lb_adapt_report rep;
+            im.ref.push_back(f64::lb_specular_reference(lum.data(), L, x, {0, 0, 1}, sc.eye, alpha,
+                                                        f64::lb_adapt_goal_of(1e-5, 160), &rep));
             f64::real3 q[4];
             f64::lb_light_corners(L, q);
             for (auto& v : q) v -= x;

@@ -48,10 +48,10 @@ TEST(SpecularMethods, ReferenceKernelIsTheHostQuadrature)
         f64::lb_light L = f64::lb_scene_light(P.data());
         for (int row = 0; row < sc.res; ++row)
             for (int col = 0; col < sc.res; ++col) {
-                double err;
-                int sp, cells;
-                double want = f64::lb_specular_reference(lum.data(), L, f64::lb_pixel_position(P.data(), row, col),
-                                                         {0, 0, 1}, sc.eye, alpha, 1e-5, 160, &err, &sp, &cells);
+                f64::lb_adapt_report rep;
+                double want =
+                    f64::lb_specular_reference(lum.data(), L, f64::lb_pixel_position(P.data(), row, col), {0, 0, 1},
+                                               sc.eye, alpha, f64::lb_adapt_goal_of(1e-5, 160), &rep);
                 EXPECT_NEAR(r.image.at(row, col), want, 1e-10 * std::fabs(want) + 1e-300) << row << "," << col;
             }
     }
