@@ -331,20 +331,20 @@ public:
                    {"extent", sid.extent},
                    {"luminaire_digest", luminaire(sid.luminaire)},
                    {"reference", refSpec_.canonical()},
-                   {"reference_kernel", kernel(refSpec_.name)},
+                   {"reference_kernel", kernel(refSpec_)},
                    {"reps", e_.reps},
                    {"time_res", e_.timeRes},
                    {"metrics", kMetricSet}};
         if (c.role == "equal_time") {
-            in["kernel"] = kernel("mc");
-            in["target_kernel"] = kernel(c.parsed.name);
+            in["kernel"] = kernel(mcAt(e_, *c.baseline, 1));
+            in["target_kernel"] = kernel(c.parsed);
             in["mc"] = c.baseline->canonical;
             in["equal_time_tolerance"] = e_.equalTimeTolerance;
             in["equal_time_rounds"] = e_.equalTimeRounds;  // the pairing's rounds decide its N
             in["equal_time_fit"] = e_.equalTimeFit;
             in["mci_curve"] = e_.mciCurve;  // the measured t(N) the search starts from
         } else {
-            in["kernel"] = kernel(c.parsed.name);
+            in["kernel"] = kernel(c.parsed);
         }
         // The draws over seeds (Experiment::seeds) of a seed-dependent cell:
         // MC's for a partner. Absent at one draw, as before the key existed.
@@ -359,9 +359,9 @@ public:
     }
 
 private:
-    const std::string& kernel(const std::string& method)
+    const std::string& kernel(const methods::MethodSpec& method)
     {
-        const std::string& file = methods::family(method, e_.kind()).file;
+        const std::string& file = method.family().file;
         auto it = kernels_.find(file);
         if (it == kernels_.end()) it = kernels_.emplace(file, ocl::kernelSourceDigest(file)).first;
         return it->second;
