@@ -3,10 +3,11 @@
 # that no host function exceeds 80 lines (scripts/long-functions.py) and no
 # kernel function exceeds 80 lines or 8 parameters (scripts/kernel-limits.py),
 # that every file, section and anchor README.md and docs/ link to exists
-# (scripts/check-links.py), that the README's headline is the one its committed
-# results give (scripts/readme-headline.py --check), builds, and runs the whole
-# test suite on the default OpenCL device (PoCL): the
-# GoogleTest suite, then the Python module's pytest suite (python/tests).
+# (scripts/check-links.py), that a method is looked up by name only in the
+# registry and the SPEC parser (scripts/family-lookup.py), that the README's
+# headline is the one its committed results give (scripts/readme-headline.py
+# --check), builds, and runs the whole test suite on the default OpenCL device
+# (PoCL): the GoogleTest suite, then the Python module's pytest suite (python/tests).
 # Tests that need a device fail rather than skip.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -17,6 +18,8 @@ python3 scripts/kernel-limits.py --self-test
 python3 scripts/kernel-limits.py $(git ls-files 'kernels/*.h' 'kernels/*.inc' 'kernels/*.cl')
 python3 scripts/check-links.py --self-test
 python3 scripts/check-links.py
+python3 scripts/family-lookup.py --self-test
+python3 scripts/family-lookup.py $(git ls-files 'host/*.cpp' 'host/*.h')
 python3 scripts/readme-headline.py --self-test
 python3 scripts/readme-headline.py --check
 bash scripts/build.sh

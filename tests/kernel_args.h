@@ -64,14 +64,13 @@ private:
     bool dbl_;
 };
 
-// The program options a family's plan gives spec on scene and table (a CPU
-// device, float): the structural and per-scene defines.
-inline std::string planDefines(const methods::Family& f, const methods::MethodSpec& spec, const Scene& scene,
-                               const photometry::Table& t)
+// The program options the plan of spec's family gives spec on scene and
+// table (a CPU device, float): the structural and per-scene defines.
+inline std::string planDefines(const methods::MethodSpec& spec, const Scene& scene, const photometry::Table& t)
 {
     ocl::DeviceInfo cpu;
     cpu.type = "CPU";
-    return methods::planFor(f, spec, scene, t, cpu, methods::Precision::Float).defines;
+    return spec.plan(scene, t, cpu, methods::Precision::Float).defines;
 }
 
 }  // namespace lb::test

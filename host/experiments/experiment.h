@@ -26,7 +26,7 @@
 //
 // A scene is (luminaire, height, rotation, alpha, precision); its cells are the
 // methods, the MCI curve points and the equal-time partners, in that order.
-// Methods are parsed for the file's scene kind (methods::family(name, kind)).
+// Methods are parsed for the file's scene kind (methods::parseSpec(text, kind)).
 // Scenes are enumerated luminaire-major, then height, rotation, alpha, precision, in
 // the order of the file (luminaires from a directory sorted by name), so the
 // order, and with it the shard assignment, is deterministic.

@@ -317,13 +317,13 @@ public:
                    {"extent", sid.extent},
                    {"luminaire_digest", luminaire(sid.luminaire)},
                    {"reference", refSpec_.canonical()},
-                   {"reference_kernel", kernel(refSpec_.name)},
+                   {"reference_kernel", kernel(refSpec_)},
                    {"reps", e_.protocol.reps},
                    {"time_res", e_.protocol.timeRes},
                    {"metrics", kMetricSet}};
         if (c.role == "equal_time") {
-            in["kernel"] = kernel("mc");
-            in["target_kernel"] = kernel(c.parsed.name);
+            in["kernel"] = kernel(mcAt(e_, *c.baseline, 1));
+            in["target_kernel"] = kernel(c.parsed);
             in["mc"] = c.baseline->canonical;
             in["equal_time_tolerance"] = e_.protocol.tolerance;
             in["equal_time_rounds"] = e_.protocol.rounds;  // the pairing's rounds decide its N
@@ -331,7 +331,7 @@ public:
             if (e_.protocol.mode != equaltime::Mode::Search) in["equal_time_mode"] = modeName(e_.protocol.mode);
             in["mci_curve"] = e_.mciCurve;  // the measured t(N) the search starts from
         } else {
-            in["kernel"] = kernel(c.parsed.name);
+            in["kernel"] = kernel(c.parsed);
         }
         // The draws over seeds (Experiment::seeds) of a seed-dependent cell:
         // MC's for a partner. Absent at one draw, as before the key existed.
@@ -346,9 +346,9 @@ public:
     }
 
 private:
-    const std::string& kernel(const std::string& method)
+    const std::string& kernel(const methods::MethodSpec& method)
     {
-        const std::string& file = methods::family(method, e_.kind()).file;
+        const std::string& file = method.family().file;
         auto it = kernels_.find(file);
         if (it == kernels_.end()) it = kernels_.emplace(file, ocl::kernelSourceDigest(file)).first;
         return it->second;

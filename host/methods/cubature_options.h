@@ -6,7 +6,7 @@
 #pragma once
 
 #include "math/kmath.h"
-#include "methods/tunables.h"
+#include "methods/param.h"
 
 #include <map>
 #include <string>

@@ -2,6 +2,7 @@
 // math in kernels/common/cubature.h, spec keys -> defines in cubature_options.h.
 #include "methods/cubature_options.h"
 #include "methods/registry.h"
+#include "methods/spec.h"
 #include "methods/specialize.h"
 #include "methods/straight.h"
 #include "photometry/lut.h"
@@ -80,7 +81,8 @@ void cubatureStats(LaunchContext& c)
 }
 
 // The spec parsed once and the scene analysed once: the program's defines,
-// the lanes, the lookup table, every kernel argument by name, the finish.
+// the lanes, the lookup table, every kernel argument by name, the
+// statistics switch and the finish.
 Plan cubaturePlan(const MethodSpec& s, const Scene& scene, const photometry::Table& t, const ocl::DeviceInfo& dev,
                   Precision p)
 {
@@ -104,6 +106,7 @@ Plan cubaturePlan(const MethodSpec& s, const Scene& scene, const photometry::Tab
 #define LB_PLAN_TUNABLE(name) plan.args.push_back({#name, PlanArg::Kind::Real, o.tunables.name});
     LB_CUB_TUNABLES(LB_PLAN_TUNABLE)
 #undef LB_PLAN_TUNABLE
+    plan.statsSwitch = "want_stats";
     plan.finish = cubatureStats;
     return plan;
 }
@@ -147,7 +150,6 @@ Family cubatureFamily()
     f.plan = cubaturePlan;
     f.args = {"stats", "want_stats"};
     for (const auto& name : cubatureTunableNames()) f.args.push_back(name);
-    f.statsSwitch = "want_stats";
     f.straightDefines = cubatureFormDefines();
     f.variants = cubatureVariants;
     f.benchSpecs = {"cubature:lanes=1",

@@ -1,6 +1,6 @@
 // The indirect scene (docs/design.md section 9): the converged reference
 // (kernels/indirect_reference.cl) and the RSM methods vpl, kmeans and acrsm
-// (kernels/indirect.cl), all multi-pass families (Family::prePasses).
+// (kernels/indirect.cl), all multi-pass families (Plan::prePasses).
 #include "methods/registry.h"
 
 #include "math/indirect_math.h"
@@ -124,14 +124,14 @@ void registerIndirectReference(Registry& r)
             bindEdir(c, g, dirTol, static_cast<int>(dirSplits));
         };
         p.finish = [g](LaunchContext& c) { finishIndirectReference(c, g); };
+        p.prePasses = [](LaunchContext& c) {
+            std::vector<StageEvent> ev;
+            const size_t n = c.stats["edir_points"].get<size_t>();
+            ev.push_back({"edir", c.rt.launch1D(c.pass("edir_nodes"), n, 64)});
+            ev.push_back({"edir", c.rt.launch1D(c.pass("edir_delta"), LB_ROOM_NSURF, 1)});
+            return ev;
+        };
         return p;
-    };
-    f.prePasses = [](LaunchContext& c) {
-        std::vector<StageEvent> ev;
-        const size_t n = c.stats["edir_points"].get<size_t>();
-        ev.push_back({"edir", c.rt.launch1D(c.pass("edir_nodes"), n, 64)});
-        ev.push_back({"edir", c.rt.launch1D(c.pass("edir_delta"), LB_ROOM_NSURF, 1)});
-        return ev;
     };
     r.add(f);
 }
@@ -236,7 +236,8 @@ void launchSampling(LaunchContext& c, int n, std::vector<StageEvent>& ev)
 // The RSM methods' plan: the direct light's define, the render kernel's
 // arguments (the lights the passes fill, kTex reals each; their count; the
 // squared clamp distance), the passes' binder (`bind`) and finishRsm.
-Plan rsmPlan(const MethodSpec& s, int nlights, double clamp, std::function<void(LaunchContext&)> bind)
+Plan rsmPlan(const MethodSpec& s, int nlights, double clamp, std::function<void(LaunchContext&)> bind,
+             Plan::Passes passes)
 {
     Plan p;
     p.defines = rsmDefines(s);
@@ -247,16 +248,17 @@ Plan rsmPlan(const MethodSpec& s, int nlights, double clamp, std::function<void(
         bind(c);
     };
     p.finish = finishRsm;
+    p.prePasses = std::move(passes);
     return p;
 }
 
-// A family's plan hook from its number of lights and clamp distance and the
-// binder of its passes.
+// A family's plan hook from its number of lights and clamp distance, the
+// binder of its passes and the passes.
 PlanHook rsmHook(std::function<int(const MethodSpec&)> nlights, std::function<double(const MethodSpec&)> clamp,
-                 std::function<void(LaunchContext&)> bind)
+                 std::function<void(LaunchContext&)> bind, Plan::Passes passes)
 {
     return [=](const MethodSpec& s, const Scene&, const photometry::Table&, const ocl::DeviceInfo&, Precision) {
-        return rsmPlan(s, nlights(s), clamp(s), bind);
+        return rsmPlan(s, nlights(s), clamp(s), bind, passes);
     };
 }
 
@@ -280,18 +282,19 @@ void registerVpl(Registry& r, const std::string& name)
         Param::real("clamp", 0.1, 0.0, 1.0, Scale::Linear, "distance (m) below which 1/r^2 is clamped (0: none)"));
     f.validate = checkRsm;
     f.args = {"lights", "nlights", "clamp2"};
-    f.plan = rsmHook(
-        lightsOfN, [](const MethodSpec& s) { return s.num("clamp"); },
-        [](LaunchContext& c) {
-            setupRsm(c);
-            setupSampling(c, lightsOfN(c.spec), "lights");
-        });
-    f.prePasses = [](LaunchContext& c) {
+    const Plan::Passes passes = [](LaunchContext& c) {
         std::vector<StageEvent> ev;
         ev.push_back({"rsm", launchRsm(c)});
         launchSampling(c, static_cast<int>(c.spec.integer("n")), ev);
         return ev;
     };
+    f.plan = rsmHook(
+        lightsOfN, [](const MethodSpec& s) { return s.num("clamp"); },
+        [](LaunchContext& c) {
+            setupRsm(c);
+            setupSampling(c, lightsOfN(c.spec), "lights");
+        },
+        passes);
     if (name == "vpl") f.benchSpecs = {"vpl:n=64", "vpl:n=1024", "vpl:direct=point"};
     r.add(f);
 }
@@ -350,19 +353,7 @@ void registerKmeans(Registry& r)
     f.params = clusterParams(64, 4);
     f.validate = checkRsm;
     f.args = {"lights", "nlights", "clamp2"};
-    f.plan = rsmHook(
-        lightsOfK, [](const MethodSpec&) { return 0.0; },
-        [](LaunchContext& c) {
-            const int T = rsmSide(c), K = clusterCount(c);
-            using Real = LaunchContext::Real;
-            setupClusters(c);
-            c.named["seedlights"] = c.outputReals(static_cast<size_t>(kTex) * K);
-            setupSampling(c, K, "seedlights");
-            c.bind(c.pass("centres_from"), c.named["tex"], c.named["pick"], cl_int(K), c.named["centres"]);
-            c.bind(c.pass("km_assign"), c.named["tex"], cl_int(T), c.named["centres"], cl_int(K),
-                   Real{c.spec.num("wx")}, Real{c.spec.num("wn")}, Real{c.spec.num("wb")}, c.named["label"]);
-        });
-    f.prePasses = [](LaunchContext& c) {
+    const Plan::Passes passes = [](LaunchContext& c) {
         const int T = rsmSide(c), K = clusterCount(c);
         std::vector<StageEvent> ev;
         ev.push_back({"rsm", launchRsm(c)});
@@ -374,6 +365,19 @@ void registerKmeans(Registry& r)
         }
         return ev;
     };
+    f.plan = rsmHook(
+        lightsOfK, [](const MethodSpec&) { return 0.0; },
+        [](LaunchContext& c) {
+            const int T = rsmSide(c), K = clusterCount(c);
+            using Real = LaunchContext::Real;
+            setupClusters(c);
+            c.named["seedlights"] = c.outputReals(static_cast<size_t>(kTex) * K);
+            setupSampling(c, K, "seedlights");
+            c.bind(c.pass("centres_from"), c.named["tex"], c.named["pick"], cl_int(K), c.named["centres"]);
+            c.bind(c.pass("km_assign"), c.named["tex"], cl_int(T), c.named["centres"], cl_int(K),
+                   Real{c.spec.num("wx")}, Real{c.spec.num("wn")}, Real{c.spec.num("wb")}, c.named["label"]);
+        },
+        passes);
     f.benchSpecs = {"kmeans:k=16", "kmeans:k=256"};
     r.add(f);
 }
@@ -486,8 +490,7 @@ void registerAcrsm(Registry& r)
     f.args = {"lights", "nlights", "clamp2"};
     f.settleFrames = [](const MethodSpec& s) { return static_cast<int>(s.integer("settle")); };
     f.plan = rsmHook(
-        lightsOfK, [](const MethodSpec&) { return 0.0; }, acrsmBind);
-    f.prePasses = acrsmPasses;
+        lightsOfK, [](const MethodSpec&) { return 0.0; }, acrsmBind, acrsmPasses);
     f.benchSpecs = {"acrsm:k=16", "acrsm:k=256"};
     r.add(f);
 }

@@ -138,6 +138,9 @@ Plan mcPlan(const MethodSpec& s, const Scene& scene, const photometry::Table& t,
     }
     plan.args = mcArgs(st, n, extra, samplingArgs(o, n, extra > 0, seed, scene.res, &t));
     plan.bind = [o](LaunchContext& c) { bindDenoise(c, o); };
+    plan.postPasses = [](LaunchContext& c) {
+        return denoisePasses(c, mcOptions(c.spec), c.spec.num("atrous_sigma"), c.spec.integer("n"));
+    };
     return plan;
 }
 
@@ -205,9 +208,6 @@ void registerMc(Registry& r)
     };
     f.args = kMcArgs;
     f.plan = mcPlan;
-    f.postPasses = [](LaunchContext& c) {
-        return denoisePasses(c, mcOptions(c.spec), c.spec.num("atrous_sigma"), c.spec.integer("n"));
-    };
     f.benchSpecs = {"mc:n=8", "mc:n=32", "mc:n=32,lookup=exact"};
     r.add(f);
     registerMcPoints(r, f);

@@ -4,6 +4,7 @@
 // fit's error exceeds `threshold`, robust's kernel instead (fallback=robust).
 #include "methods/cubature_options.h"
 #include "methods/registry.h"
+#include "methods/spec.h"
 #include "methods/sh_fit.h"
 
 #include <fmt/format.h>
@@ -51,6 +52,7 @@ Plan shPlan(const MethodSpec& s, const Scene& scene, const photometry::Table& t,
         plan.args.push_back(PlanArg::realBuffer("zc", {0.0}));
         plan.args.push_back(PlanArg::real("far_size", s.num("far")));
         plan.finish = shFinish(fit, threshold, true);
+        plan.statsSwitch.clear();  // sh's statistics are its fit's (shFinish): no statistics launch
         return plan;
     }
     Plan plan;

@@ -85,7 +85,7 @@ namespace {
 // writes every key out, so a key at its default overrides nothing).
 bool atDefault(const MethodSpec& s, const std::string& k)
 {
-    for (const auto& p : family("mc").params)
+    for (const auto& p : s.family().params)
         if (p.name == k) return s.values.at(k) == p.canonical("mc", p.def);
     return false;
 }

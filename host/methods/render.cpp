@@ -141,13 +141,13 @@ std::string cacheKey(const photometry::Table& table, const Scene& scene, const M
     f.bytes(lum.data(), lum.size() * sizeof(float));
     f.str(precisionName(p));
     f.str(resolvePreset(spec, table.source).canonical());  // a preset: the entry it resolves to
-    f.str(ocl::kernelSourceDigest(family(spec.name, spec.kind).file));  // the kernel and every header it includes
+    f.str(ocl::kernelSourceDigest(spec.family().file));  // the kernel and every header it includes
     return f.hex();
 }
 
 Prepared::Prepared(ocl::Runtime& rt, const photometry::Table& table, const Scene& scene, const MethodSpec& spec,
                    Precision precision)
-    : fam_(methods::family(spec.name, scene.kind)), spec_(resolvePreset(spec, table.source)), scene_(scene),
+    : fam_(spec.family()), spec_(resolvePreset(spec, table.source)), scene_(scene),
       table_(photometry::tiltedFor(table, scene.rotation))
 {
     if (spec.kind != scene.kind)
@@ -160,12 +160,11 @@ Prepared::Prepared(ocl::Runtime& rt, const photometry::Table& table, const Scene
     const bool dbl = precision == Precision::Double;
     if (dbl && !rt.fp64())
         throw InputError(fmt::format("device '{}' has no double precision (cl_khr_fp64)", rt.info().name));
-    Plan plan = planFor(fam_, spec_, scene_, table_, rt.info(), precision);
+    Plan plan = spec_.plan(scene_, table_, rt.info(), precision);
     options_ = plan.defines;
     if (dbl) options_ += " -DLB_DOUBLE";
     const int lanes = plan.lanes;
     if (lanes > 1) options_ += fmt::format(" -DLB_LANES={}", lanes);
-    finish_ = plan.finish;
     double b0 = rt.buildSeconds();
     ctx_.reset(new LaunchContext{
         fam_, rt, spec_, scene_, table_, precision, rt.kernel(fam_.file, fam_.kernelName, options_), {}, {}, {}, {}});
@@ -189,25 +188,26 @@ Prepared::Prepared(ocl::Runtime& rt, const photometry::Table& table, const Scene
     ctx_->kernel.setArg(2, out_);
     ctx_->kernel.setArg(3, cl_int(0));
     bindPlan(*ctx_, plan);
+    plan_ = std::move(plan);
     statsSwitch(false);
 }
 
 void Prepared::statsSwitch(bool on)
 {
-    if (!fam_.statsSwitch.empty()) ctx_->arg(fam_.statsSwitch, cl_int(on ? 1 : 0));
+    if (!plan_.statsSwitch.empty()) ctx_->arg(plan_.statsSwitch, cl_int(on ? 1 : 0));
 }
 
 cl::Event Prepared::launch(int row0, int rows)
 {
-    if (fam_.prePasses && row0 == 0) {
-        auto ev = fam_.prePasses(*ctx_);
+    if (plan_.prePasses && row0 == 0) {
+        auto ev = plan_.prePasses(*ctx_);
         passEvents_.insert(passEvents_.end(), ev.begin(), ev.end());
     }
     ctx_->kernel.setArg(3, cl_int(row0));
     const size_t cols = (scene_.res + ctx_->lanes - 1) / ctx_->lanes;
     cl::Event ev = ctx_->rt.launch2D(ctx_->kernel, cols, rows, lx_, ly_);
-    if (fam_.postPasses && row0 + rows >= scene_.res) {
-        auto post = fam_.postPasses(*ctx_);
+    if (plan_.postPasses && row0 + rows >= scene_.res) {
+        auto post = plan_.postPasses(*ctx_);
         passEvents_.insert(passEvents_.end(), post.begin(), post.end());
     }
     return ev;
@@ -222,7 +222,7 @@ double Prepared::launchMs()
 ocl::Timing Prepared::time(int reps)
 {
     statsSwitch(false);
-    if (!fam_.prePasses && !fam_.postPasses)
+    if (!plan_.prePasses && !plan_.postPasses)
         return ctx_->rt.time([&] { return launch(0, scene_.res); }, std::max(1, reps), 1);
     // Multi-pass: every launch's time is its pre- and post-passes' events
     // plus the render kernel's; one warm-up as for the others. A family whose
@@ -275,12 +275,12 @@ void Prepared::setScene(const Scene& scene)
 
 void Prepared::collect()
 {
-    if (!fam_.statsSwitch.empty()) {
+    if (!plan_.statsSwitch.empty()) {
         statsSwitch(true);
         launch(0, scene_.res).wait();
         statsSwitch(false);
     }
-    if (finish_) finish_(*ctx_);
+    if (plan_.finish) plan_.finish(*ctx_);
 }
 
 Image Prepared::image()
@@ -315,7 +315,7 @@ double runInBands(Prepared& prep, int bandRows, const std::string& name, int res
 RenderResult render(ocl::Runtime& rt, const photometry::Table& table, const Scene& scene, const MethodSpec& spec,
                     Precision precision, const RenderOptions& opt)
 {
-    const Family& fam = family(spec.name, scene.kind);
+    const Family& fam = spec.family();
     RenderResult result;
     std::string base, key;
     if (fam.expensive && opt.useCache) {
@@ -353,11 +353,10 @@ RenderResult render(ocl::Runtime& rt, const photometry::Table& table, const Scen
         result.timeRes = res;
         stageMs = prep.stageMs();
     }
-    if (fam.settleFrames) {
+    if (const int n = fam.settleFrames(spec); n > 0) {
         // a stateful method's image: its steady state on this static scene
         prep.takePassMs();
         prep.reset();
-        const int n = std::max(1, fam.settleFrames(spec));
         for (int i = 0; i < n; ++i) prep.launch(0, res).wait();
     }
     prep.takePassMs();

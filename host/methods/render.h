@@ -4,6 +4,7 @@
 
 #include "cl/runtime.h"
 #include "methods/registry.h"
+#include "methods/spec.h"
 
 #include <nlohmann/json.hpp>
 
@@ -19,6 +20,7 @@ namespace lb::methods {
 // stability and bench all go through it, so what is timed is what renders.
 class Prepared {
 public:
+    // spec: a method resolved by parseSpec (its family is spec.family()).
     Prepared(ocl::Runtime& rt, const photometry::Table& table, const Scene& scene, const MethodSpec& spec,
              Precision precision);
     Prepared(const Prepared&) = delete;
@@ -72,7 +74,7 @@ private:
     size_t lx_ = 8, ly_ = 8;
     cl::Buffer out_, P_;
     std::vector<StageEvent> passEvents_;
-    std::function<void(LaunchContext&)> finish_;  // the plan's
+    Plan plan_;  // its passes, statistics switch and finish
     nlohmann::json stageMs_ = nlohmann::json::object();
     std::unique_ptr<LaunchContext> ctx_;
 };

@@ -1,41 +1,19 @@
-// spec.h -- SPEC strings `name:key=value,key=value` (docs/design.md section 7).
+// spec.h -- SPEC strings `name:key=value,key=value` (docs/design.md section 7):
+// the parser, the one place a method's family is looked up by name
+// (methods/registry.h); everything after it takes the MethodSpec it returns
+// (methods/family.h).
 #pragma once
 
+#include "methods/family.h"
 #include "scene/scene.h"
 
-#include <nlohmann/json.hpp>
-
 #include <map>
-#include <set>
 #include <string>
-#include <vector>
 
 namespace lb::methods {
 
-struct MethodSpec {
-    std::string name;
-    SceneKind kind = SceneKind::Diffuse;  // the scene its family renders (family(name, kind))
-    std::map<std::string, std::string> values;  // every parameter, canonical text, defaults filled in
-    std::set<std::string> given;  // the keys the SPEC named
-
-    double num(const std::string& key) const;  // Real / Int parameters
-    long integer(const std::string& key) const;
-    const std::string& str(const std::string& key) const;  // Choice parameters
-    std::vector<std::string> list(const std::string& key) const;  // List parameters
-    bool has(const std::string& key) const { return values.count(key) != 0; }
-    // A copy with `key` set to `value` (the keys given stay given), checked
-    // as parseSpec checks a SPEC: InputError for a key the family lacks or a
-    // bad value.
-    MethodSpec with(const std::string& key, const std::string& value) const;
-
-    // name:key=value,... with every parameter, keys sorted (cache keys, logs).
-    std::string canonical() const;
-    // {key: value}, numbers as JSON numbers (result files).
-    nlohmann::json paramsJson() const;
-};
-
 // Parses and validates against the registry's family of that name for scenes
-// of `kind`; throws InputError on an unknown method (or one that does not
+// of `kind`, and returns the method resolved to that family; throws InputError on an unknown method (or one that does not
 // render that scene), an unknown key (listing the valid ones), a repeated key
 // or a bad value.
 MethodSpec parseSpec(const std::string& text, SceneKind kind = SceneKind::Diffuse);

@@ -409,7 +409,7 @@ std::vector<const methods::Family*> selectedFamilies(const Options& opt)
     for (auto& f : methods::registry().all())
         if (opt.methods.empty() || std::count(opt.methods.begin(), opt.methods.end(), f.name)) fams.push_back(&f);
     for (auto& m : opt.methods)  // InputError on a name no scene kind knows
-        if (std::none_of(fams.begin(), fams.end(), [&](auto* f) { return f->name == m; })) methods::family(m);
+        if (std::none_of(fams.begin(), fams.end(), [&](auto* f) { return f->name == m; })) methods::parseSpec(m);
     for (auto& n : opt.cases)
         if (std::none_of(catalogue().begin(), catalogue().end(), [&](const Case& c) { return c.name == n; }))
             throw InputError(fmt::format("stability: unknown case '{}'", n));

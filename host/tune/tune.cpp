@@ -173,7 +173,7 @@ void readSearch(const Reader& r, TuneExperiment& e)
     } catch (const InputError& err) {
         r.fail("method", err.what());
     }
-    const auto& fam = methods::family(base.name, kind);
+    const auto& fam = base.family();
     auto numeric = [](const methods::Param& p) {
         return p.kind == methods::Kind::Real || p.kind == methods::Kind::Int;
     };
@@ -385,7 +385,7 @@ public:
     {
         prec_ = methods::parsePrecision(e.precision);
         base_ = methods::parseSpec(e.method, e.sceneKeys.kind);
-        const auto& fam = methods::family(base_.name, e.sceneKeys.kind);
+        const auto& fam = base_.family();
         for (const auto& n : e.params)
             for (const auto& p : fam.params)
                 if (p.name == n) {
@@ -531,10 +531,10 @@ private:
     {
         methods::MethodSpec s =
             methods::parseSpec(specWith(e_.method, names_, values, e_.sceneKeys.kind), e_.sceneKeys.kind);
-        const auto& fam = methods::family(s.name, e_.sceneKeys.kind);
+        const auto& fam = s.family();
         // Where only the image counts (no equal-time score, no cache, no
         // frames to settle): one launch, no warm-up, timing or statistics.
-        const bool imageOnly = !equalTime() && !fam.expensive && !fam.settleFrames;
+        const bool imageOnly = !equalTime() && !fam.expensive && fam.settleFrames(s) == 0;
         methods::RenderOptions ro = equalTime() ? timedOptions() : methods::RenderOptions{};
         ro.reps = 1;  // equal_time: the aim of the paired timing below
         std::vector<Eval> out;

@@ -4,6 +4,7 @@
 // (test_program_options.cpp); this test holds what a plan must be for render
 // to bind it (methods/registry.h: Plan, bindPlan).
 #include "methods/registry.h"
+#include "methods/spec.h"
 #include "test_tables.h"
 #include "testutil.h"
 
@@ -107,7 +108,7 @@ TEST(MethodPlan, EveryRegisteredMethodPlansWithoutADevice)
                         const std::string what = fmt::format("{} [{}] {} on {} in {}", text, sceneKindName(kind),
                                                              sc.describe(), dev->type, precisionName(p));
                         ASSERT_TRUE(f.plan) << what;
-                        const Plan plan = planFor(f, spec, sc, table, *dev, p);
+                        const Plan plan = spec.plan(sc, table, *dev, p);
                         std::vector<std::string> names;
                         for (const auto& a : plan.args) {
                             names.push_back(a.name);
@@ -129,7 +130,7 @@ TEST(MethodPlan, EveryRegisteredMethodPlansWithoutADevice)
                         ++plans;
                     }
             // the lookup buffer, made on demand (empty: the exact table)
-            const Plan plan = planFor(f, parseSpec(f.name, kind), planScenes(kind)[0], table, cpu, Precision::Float);
+            const Plan plan = parseSpec(f.name, kind).plan(planScenes(kind)[0], table, cpu, Precision::Float);
             EXPECT_FALSE(plan.lum ? plan.lum().empty() : table.packed().empty()) << f.name;
         }
     // every family at least once on both scenes and three devices

@@ -9,6 +9,7 @@
 // the new recording, and say in the commit which lines changed and why.
 #include "methods/cubature_options.h"
 #include "methods/registry.h"
+#include "methods/spec.h"
 #include "methods/specialize.h"
 #include "photometry/lut.h"
 #include "test_tables.h"
@@ -85,7 +86,7 @@ std::string trueKeys(const nlohmann::json& j)
 }
 
 // One line of the sweep: the program options and lanes Prepared builds
-// (planFor: the family's plan), on a CPU and a GPU in
+// (MethodSpec::plan: the family's plan), on a CPU and a GPU in
 // float and on a CPU in double, the form, and the specialisation's JSON.
 std::string sweepLine(const Family& f, const std::string& text, const MethodSpec& spec, const Scene& sc,
                       const std::string& tname, const photometry::Table& t)
@@ -95,7 +96,7 @@ std::string sweepLine(const Family& f, const std::string& text, const MethodSpec
     gpu.type = "GPU";
     std::string opts, lanes;
     for (auto [dev, p] : {std::pair{&cpu, Precision::Float}, {&gpu, Precision::Float}, {&cpu, Precision::Double}}) {
-        Plan plan = planFor(f, spec, sc, t, *dev, p);
+        Plan plan = spec.plan(sc, t, *dev, p);
         opts = plan.defines;
         lanes += fmt::format(" {}", plan.lanes);
     }
@@ -237,7 +238,7 @@ TEST(CubaturePlan, BindsEveryArgumentByNameWithTheSpecsValues)
     const auto t = asymmetric();
     const Family& f = family("cubature");
     auto spec = parseSpec("cubature:plane_eps=0.01,corner_inset=0.25,blend_dist=7,s2=0.3");
-    Plan plan = planFor(f, spec, s, t, cpu, Precision::Float);
+    Plan plan = spec.plan(s, t, cpu, Precision::Float);
     std::vector<std::string> names;
     for (const auto& a : plan.args) names.push_back(a.name);
     EXPECT_EQ(names, f.args);
@@ -254,11 +255,11 @@ TEST(CubaturePlan, BindsEveryArgumentByNameWithTheSpecsValues)
     EXPECT_EQ(arg("stats").kind, PlanArg::Kind::OutputInts);
     EXPECT_EQ(arg("stats").count, 2u * 24 * 24);
     EXPECT_EQ(arg("want_stats").value, 0);  // timed launches run without statistics
-    EXPECT_EQ(f.statsSwitch, "want_stats");
+    EXPECT_EQ(plan.statsSwitch, "want_stats");
     EXPECT_EQ(plan.lum(), photometry::buildLut(t).packed);
-    EXPECT_EQ(planFor(f, parseSpec("cubature:lookup=exact"), s, t, cpu, Precision::Float).lum(), t.packed());
+    EXPECT_EQ(parseSpec("cubature:lookup=exact").plan(s, t, cpu, Precision::Float).lum(), t.packed());
     EXPECT_EQ(plan.lanes, 8);  // the fan's straight-line form on a CPU in float with the LUT
-    EXPECT_EQ(planFor(f, spec, s, t, cpu, Precision::Double).lanes, 1);
+    EXPECT_EQ(spec.plan(s, t, cpu, Precision::Double).lanes, 1);
     EXPECT_TRUE(plan.finish);
     EXPECT_FALSE(plan.bind);  // nothing beyond the named arguments
 }

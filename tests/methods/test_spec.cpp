@@ -1,4 +1,4 @@
-// SPEC parsing and the tunables table (host/methods/spec.h, tunables.h).
+// SPEC parsing and the tunables table (host/methods/spec.h, param.h, registry.h).
 #include "methods/registry.h"
 #include "methods/samples.h"
 #include "methods/spec.h"
@@ -39,6 +39,42 @@ TEST(Spec, DefaultsAndValues)
     EXPECT_EQ(s.paramsJson()["n"], 40);
     EXPECT_EQ(parseSpec("reference").num("tol"), 1e-5);
     EXPECT_EQ(parseSpec("point:").name, "point");
+}
+
+// parseSpec resolves a method once: the family of the scene kind it was
+// parsed for, which with() keeps and everything after the parser reads.
+TEST(Spec, ResolvesTheFamilyOfItsSceneKind)
+{
+    const MethodSpec d = parseSpec("mc"), sp = parseSpec("mc", SceneKind::Specular);
+    EXPECT_EQ(&d.family(), &family("mc"));
+    EXPECT_EQ(&sp.family(), &family("mc", SceneKind::Specular));
+    EXPECT_NE(&sp.family(), &d.family());  // one name, two families (their own kernels)
+    EXPECT_NE(sp.family().file, d.family().file);
+    const MethodSpec w = d.with("n", "12");
+    EXPECT_EQ(&w.family(), &d.family());
+    EXPECT_EQ(w.canonical(), parseSpec("mc:n=12").canonical());
+    EXPECT_EQ(w.given, parseSpec("mc:n=12").given);
+    EXPECT_THROW(d.with("nope", "1"), InputError);  // a key the family lacks
+    EXPECT_THROW(d.with("n", "0"), InputError);  // out of range
+    EXPECT_THROW(parseSpec("mc:domain=solid").with("paper", "1"), InputError);  // the family's whole-spec check
+    EXPECT_THROW(MethodSpec{}.family(), Error);  // a spec no parser made
+}
+
+// What a family leaves unset has its default: nothing to check, every
+// parameter used, no frames to settle, no variants; a plan is its own.
+TEST(Spec, FamilyDefaults)
+{
+    Family f;
+    f.name = "bare";
+    const MethodSpec s = parseSpec("mc");
+    EXPECT_NO_THROW(f.validate(s));
+    EXPECT_FALSE(f.unused(s, "n"));
+    EXPECT_EQ(f.settleFrames(s), 0);
+    EXPECT_TRUE(f.variants().empty());
+    MethodSpec bare;
+    bare.name = f.name;
+    bare.fam = &f;
+    EXPECT_THROW(bare.plan(Scene{}, photometry::Table{}, ocl::DeviceInfo{}, Precision::Float), Error);  // no plan
 }
 
 TEST(Spec, ErrorsNameWhatIsValid)

@@ -391,17 +391,14 @@ TEST(Specialize, StraightLineFormsEqualGeneral)
     for (const Case& c : {Case{"voronoi", "-DLB_VOR_RECT", true}, Case{"point", "-DLB_DYN_RECT", true},
                           Case{"cp", "-DLB_DYN_RECT", false}, Case{"np", "-DLB_DYN_RECT", false},
                           Case{"mrp", "-DLB_DYN_RECT", false}, Case{"structured", "-DLB_STRUCT_RECT", false}}) {
-        const Family& fam = family(c.name);
         std::vector<Scene> scenes = unclipped;
         if (c.anyScene) scenes.push_back(crossing);
         // the rule: the straight-line form where it holds, and only there
-        EXPECT_NE(test::planDefines(fam, parseSpec(c.name), unclipped[0], asym).find(c.define), std::string::npos)
-            << c.name;
-        EXPECT_EQ(test::planDefines(fam, parseSpec(c.name + ":specialize=none"), unclipped[0], asym).find(c.define),
+        EXPECT_NE(test::planDefines(parseSpec(c.name), unclipped[0], asym).find(c.define), std::string::npos) << c.name;
+        EXPECT_EQ(test::planDefines(parseSpec(c.name + ":specialize=none"), unclipped[0], asym).find(c.define),
                   std::string::npos)
             << c.name;
-        EXPECT_EQ(test::planDefines(fam, parseSpec(c.name), crossing, asym).find(c.define) != std::string::npos,
-                  c.anyScene)
+        EXPECT_EQ(test::planDefines(parseSpec(c.name), crossing, asym).find(c.define) != std::string::npos, c.anyScene)
             << c.name;
         for (const auto& s : scenes) {
             double bound = rel;

@@ -70,11 +70,11 @@ struct LanesBounds {
     double dbl, dblFloor, fltFloor;
 };
 
-// Holds `spec` of `family` (the straight-line form: its scene defines must
+// Holds `spec` (the straight-line form: its scene defines must
 // contain `define`) to `spec` with specialize=none on every
 // straightLineScenes() scene, in double and in float at 1 and 8 lanes.
-inline void expectStraightLineEqualsGeneral(ocl::Runtime& rt, const photometry::Table& t, const char* family,
-                                            const std::string& spec, const char* define, LanesBounds b)
+inline void expectStraightLineEqualsGeneral(ocl::Runtime& rt, const photometry::Table& t, const std::string& spec,
+                                            const char* define, LanesBounds b)
 {
     using methods::Precision;
     const bool fp64 = rt.fp64();
@@ -83,10 +83,7 @@ inline void expectStraightLineEqualsGeneral(ocl::Runtime& rt, const photometry::
     double worstF = 0, worstD = 0;
     for (const Scene& s : straightLineScenes()) {
         const std::string what = spec + " " + s.describe();
-        ASSERT_NE(planDefines(methods::family(family, SceneKind::Specular),
-                              methods::parseSpec(spec, SceneKind::Specular), s, t)
-                      .find(define),
-                  std::string::npos)
+        ASSERT_NE(planDefines(methods::parseSpec(spec, SceneKind::Specular), s, t).find(define), std::string::npos)
             << what;
         Image ref = run(rt, t, s, general, fp64 ? Precision::Double : Precision::Float).image;
         double bound = 1e-5;

@@ -36,7 +36,7 @@ TEST(LtcLanes, StraightLineFormEqualsGeneral)
     LB_REQUIRE_RUNTIME(rt);
     auto t = photometry::synth("batwing");
     for (const char* spec : {"ltc:radiance=point", "ltc"})
-        test::expectStraightLineEqualsGeneral(*rt, t, "ltc", spec, "-DLB_LTC_RECT", {1e-10, 1e-4, 1e-5});
+        test::expectStraightLineEqualsGeneral(*rt, t, spec, "-DLB_LTC_RECT", {1e-10, 1e-4, 1e-5});
 }
 
 // The rule: the straight-line form for radiance=point and for the fan (the
@@ -44,10 +44,9 @@ TEST(LtcLanes, StraightLineFormEqualsGeneral)
 TEST(LtcLanes, RuleAppliesToPointAndFan)
 {
     auto t = photometry::synth("batwing");
-    const auto& fam = methods::family("ltc", SceneKind::Specular);
     Scene s = specular(1.1, 3 * M_PI / 4, 0.25), crossing = specular(-0.2, 5 * M_PI / 8, 0.25);
     auto defines = [&](const std::string& spec, const Scene& sc) {
-        return test::planDefines(fam, methods::parseSpec(spec, SceneKind::Specular), sc, t);
+        return test::planDefines(methods::parseSpec(spec, SceneKind::Specular), sc, t);
     };
     auto has = [](const std::string& d, const char* what) { return d.find(what) != std::string::npos; };
     EXPECT_TRUE(has(defines("ltc:radiance=point", s), "-DLB_LTC_RECT"));

@@ -28,17 +28,16 @@ TEST(SmcLanes, StraightLineFormEqualsGeneral)
     LB_REQUIRE_RUNTIME(rt);
     auto t = photometry::synth("batwing");
     for (const char* spec : {"mc:n=16", "mc:n=7,pattern=halton"})
-        test::expectStraightLineEqualsGeneral(*rt, t, "mc", spec, "-DLB_SMC_RECT", {1e-12, 1e-6, 1e-6});
+        test::expectStraightLineEqualsGeneral(*rt, t, spec, "-DLB_SMC_RECT", {1e-12, 1e-6, 1e-6});
 }
 
 // The rule: the straight-line form for sampling=light only.
 TEST(SmcLanes, RuleAppliesToLightSamplingOnly)
 {
     auto t = photometry::synth("batwing");
-    const auto& fam = methods::family("mc", SceneKind::Specular);
     Scene s = specular(1.1, 3 * M_PI / 4, 0.25);
     auto has = [&](const std::string& spec) {
-        return test::planDefines(fam, methods::parseSpec(spec, SceneKind::Specular), s, t).find("-DLB_SMC_RECT") !=
+        return test::planDefines(methods::parseSpec(spec, SceneKind::Specular), s, t).find("-DLB_SMC_RECT") !=
             std::string::npos;
     };
     EXPECT_TRUE(has("mc:n=8"));

@@ -1,6 +1,5 @@
-#include "methods/tunables.h"
+#include "methods/param.h"
 
-#include "methods/registry.h"
 #include "util/check.h"
 #include "util/error.h"
 
@@ -124,14 +123,6 @@ std::string Param::canonical(const std::string& method, const std::string& value
         b = e + 1;
     }
     return fmt::format("{}", fmt::join(items, "+"));
-}
-
-std::vector<TunableRow> tunables()
-{
-    std::vector<TunableRow> rows;
-    for (auto& f : registry().all())
-        for (auto& p : f.params) rows.push_back({f.name, p});
-    return rows;
 }
 
 }  // namespace lb::methods

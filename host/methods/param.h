@@ -1,9 +1,9 @@
-// tunables.h -- the parameters of every method, declared once.
+// param.h -- the parameters of every method, declared once.
 //
 // Each method family declares its parameters (name, default, bounds, scale,
 // meaning) where it registers itself (host/methods/family_*.cpp); the CLI's
 // SPEC parser, the result files and the tuner all read this one table through
-// tunables() / family(name).params.
+// tunables() (methods/registry.h) / MethodSpec::family().params.
 #pragma once
 
 #include <string>
@@ -36,13 +36,5 @@ struct Param {
     std::string canonical(const std::string& method, const std::string& value) const;
     std::string allowed() const;  // "real in [0, 1]", "one of fan|delaunay", ...
 };
-
-struct TunableRow {
-    std::string method;
-    Param param;
-};
-
-// Every parameter of every registered method, in registration order.
-std::vector<TunableRow> tunables();
 
 }  // namespace lb::methods
