@@ -49,6 +49,7 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     real au, av, an;
     if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
         return;
+    on = lb_pixels_off_plane_x8(P, col0, row, on, LB_PLANE_EPS);
     lb_store_x8(out, row * res + col0, res - col0, LB_DYN_RECT_CALL(_x8));
 }
 #elif defined(LB_DYN_RECT)
@@ -58,6 +59,7 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     real ou, ov, on, au, av, an;
     if (!lb_work_item_pixels(P, row0, &col, &row, &res, &ou, &ov, &on, &au, &av, &an))
         return;
+    on = lb_pixels_off_plane(P, col, row, on, LB_PLANE_EPS);
     out[row * res + col] = LB_DYN_RECT_CALL();
 }
 #else
@@ -71,6 +73,7 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     real3 x, nx;
     if (!lb_work_item_receiver(P, row0, &px, &L, &x, &nx))
         return;
+    x = lb_plane_shift(L, x, LB_PLANE_EPS);
     real e = R(0);
 #ifdef LB_DYN_POINT
     real3 pc = L.c - x;

@@ -44,6 +44,7 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     real3 x, nx;
     if (!lb_work_item_receiver(P, row0, &px, &L, &x, &nx))
         return;
+    x = lb_plane_shift(L, x, LB_PLANE_EPS);
     const int nb = LB_SH_L + 2, nd = 2 * LB_SH_L + 4; /* host/methods/sh_fit.h shBands, shDirs */
     real3 p[LB_MAXV];
     int m = lb_clipped_light(L, x, nx, p);

@@ -22,6 +22,7 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     real au, av, an;
     if (!lb_work_item_pixels_x8(P, row0, &col0, &row, &res, &ou, &ov, &on, &au, &av, &an))
         return;
+    on = lb_pixels_off_plane_x8(P, col0, row, on, LB_PLANE_EPS);
     lb_store_x8(out, row * res + col0, res - col0, lb_structured_rect_x8(lum, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an));
 }
 #elif defined(LB_STRUCT_RECT)
@@ -31,6 +32,7 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     real ou, ov, on, au, av, an;
     if (!lb_work_item_pixels(P, row0, &col, &row, &res, &ou, &ov, &on, &au, &av, &an))
         return;
+    on = lb_pixels_off_plane(P, col, row, on, LB_PLANE_EPS);
     out[row * res + col] = lb_structured_rect(lum, ou, ov, on, P[LB_P_W], P[LB_P_L], au, av, an);
 }
 #else
@@ -42,6 +44,7 @@ __kernel void render(__global const real* P, __global const float* lum, __global
     real3 x, nx;
     if (!lb_work_item_receiver(P, row0, &px, &L, &x, &nx))
         return;
+    x = lb_plane_shift(L, x, LB_PLANE_EPS);
     real3 p[LB_MAXV];
     real e = R(0);
     if (L.shape == LB_SHAPE_DISK) {

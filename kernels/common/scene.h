@@ -120,6 +120,25 @@ LB_FN int lb_work_item_receiver(__global const real* P, int row0, int* px, lb_li
 }
 #endif
 
+/* The plane shift: a receiver point x closer than eps to the light's plane
+ * moves along n_L to distance eps on its own side, the side of
+ * s = n_L . (x - c) (s = 0 counts as in front). In the plane the radiance
+ * I / (A |n_L . d|) of every sample is infinite while the solid angle it
+ * multiplies is 0, and their product in rounding is anything (1e13-1e22 lux
+ * seen); eps off the plane both are finite and their product the
+ * irradiance there. Every method that weights a radiance by a solid angle
+ * shifts: the cubature, voronoi and ltc by their tunable plane_eps, the
+ * others by LB_PLANE_EPS. The straight-line forms shift the height h
+ * alike (lb_plane_shift_h, scene_lanes.inc). */
+#define LB_PLANE_EPS R(1e-3) /* metres: the cubature's default plane_eps */
+LB_FN real3 lb_plane_shift(lb_light L, real3 x, real eps)
+{
+    real s = dot(L.n, x - L.c);
+    if (fabs(s) < eps)
+        x += L.n * ((s >= R(0) ? eps : -eps) - s);
+    return x;
+}
+
 /* Direction d (world) expressed in the luminaire's photometric frame (u, v, n). */
 LB_FN real3 lb_to_light_frame(lb_light L, real3 d)
 {
