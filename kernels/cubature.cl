@@ -148,7 +148,8 @@ LB_RENDER_KERNEL
     CUB_PROLOGUE
     (void)opt;
     LB_RENDER_PIXELS;
-    LB_V ou = pix_span.u0, ov = pix_span.v0, on = pix_view.h;
+    LB_V ou = pix_span.u0, ov = pix_span.v0;
+    LB_V on = LB_VFN(lb_pixels_off_plane)(P, col0, row, pix_view.h, tun.plane_eps);
     real au = pix_view.au, av = pix_view.av, an = pix_view.an;
     LB_VFN(lb_dsl_pixel) px = LB_VFN(lb_dsl_pixel_at)(P[LB_P_W], P[LB_P_L], ou, ov, on, au, av, an);
     LB_V e = R(0), ta = R(0);
@@ -177,7 +178,7 @@ LB_RENDER_KERNEL
     LB_RENDER_PIXELS;
     LB_V ou = pix_span.u0, ov = pix_span.v0, on = pix_view.h;
     real au = pix_view.au, av = pix_view.av, an = pix_view.an;
-    LB_V hc = LB_VFN(lb_cub_rect_shift)(on, LB_VFN(lb_plane_distance)(P, LB_LANE_INDEX + (real)col0, row),
+    LB_V hc = LB_VFN(lb_plane_shift_h)(on, LB_VFN(lb_plane_distance)(P, LB_LANE_INDEX + (real)col0, row),
                                         tun.plane_eps);
     LB_V v0c = ov, lc = (LB_V)(P[LB_P_L]);
     CUB_CLIP();
@@ -228,6 +229,7 @@ LB_RENDER_KERNEL
     CUB_PROLOGUE
     (void)opt;
     LB_RENDER_RECEIVER;
+    x = lb_plane_shift(L, x, tun.plane_eps);
     real e = R(0), ta = R(0);
 #ifdef LB_CUB_AREA
     ta = lb_disk_area_weight(L, x, nx, tun.area_q, tun.area_sin);
@@ -270,7 +272,7 @@ LB_RENDER_KERNEL
         lb_receiver_normal_local(P, &au, &av, &an);
         real v0c = ov, lc = P[LB_P_L];
         if (au == R(0)) {
-            real hc = lb_cub_rect_shift(on, lb_plane_distance(P, (real)col, row), tun.plane_eps);
+            real hc = lb_plane_shift_h(on, lb_plane_distance(P, (real)col, row), tun.plane_eps);
             lb_cub_rect_clip(ov, hc, P[LB_P_L], av, an, tun.horizon_eps, &v0c, &lc);
         }
         lb_rect_span seen = lb_rect_span_at(ou, v0c, P[LB_P_W], lc);

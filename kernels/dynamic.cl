@@ -37,12 +37,14 @@
 #ifndef LB_DYN_SKEW
 #define LB_DYN_SKEW
 #endif
+#define LB_ENTRY_PLANE_EPS LB_PLANE_EPS
 #define LB_ENTRY_FORM LB_DYN_RECT_FN(lum, &pix_span, &pix_view LB_DYN_SKEW)
 #include "common/entry_straight.inc"
 #else
 LB_RENDER_KERNEL
 {
     LB_RENDER_RECEIVER;
+    x = lb_plane_shift_on_light(L, x, LB_PLANE_EPS);
     real e = R(0);
 #ifdef LB_DYN_POINT
     real3 pc = L.c - x;

@@ -14,6 +14,7 @@
 
 #define LB_ENTRY_ARGS
 
+#define LB_ENTRY_PLANE_EPS LB_PLANE_EPS
 #ifdef LB_ENG_RECT
 #define LB_ENTRY_FORM LB_VFN(lb_engine_rect)(lum, &pix_span, &pix_view)
 #include "common/entry_straight.inc"
@@ -21,6 +22,7 @@
 LB_RENDER_KERNEL
 {
     LB_RENDER_RECEIVER;
+    x = lb_plane_shift_on_light(L, x, LB_PLANE_EPS);
     real e = R(0);
     if (L.shape == LB_SHAPE_DISK) {
         lb_disk_view w = lb_disk_visible_arc(L, x, nx);

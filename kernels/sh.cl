@@ -40,6 +40,7 @@ LB_RENDER_KERNEL
     (void)stats;
     (void)want_stats;
     LB_RENDER_RECEIVER;
+    x = lb_plane_shift_on_light(L, x, LB_PLANE_EPS);
     const int nb = LB_SH_L + 2, nd = 2 * LB_SH_L + 4; /* host/methods/sh_fit.h shBands, shDirs */
     real3 p[LB_MAXV];
     int m = lb_clipped_light(L, x, nx, p);

@@ -13,6 +13,7 @@
 
 #define LB_ENTRY_ARGS
 
+#define LB_ENTRY_PLANE_EPS LB_PLANE_EPS
 #ifdef LB_STRUCT_RECT
 #define LB_ENTRY_FORM LB_VFN(lb_structured_rect)(lum, &pix_span, &pix_view)
 #include "common/entry_straight.inc"
@@ -20,6 +21,7 @@
 LB_RENDER_KERNEL
 {
     LB_RENDER_RECEIVER;
+    x = lb_plane_shift_on_light(L, x, LB_PLANE_EPS);
     real3 p[LB_MAXV];
     real e = R(0);
     if (L.shape == LB_SHAPE_DISK) {

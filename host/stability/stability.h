@@ -55,6 +55,7 @@ struct Case {
     // ../shared/luminaires; the case is skipped where it is absent): stability::luminaire.
     std::string luminaire;
     Expect expect = Expect::Finite;
+    LightShape shape = LightShape::Rect;
     bool oddRes = false;  // force an odd resolution (a pixel row exactly at y = 0)
     bool quick = false;  // part of the --quick subset (CI)
     double maxFd = 0.05;  // bound on fd_diff (float vs double of one method)
@@ -91,9 +92,23 @@ struct Errors {
     long negative = 0;  // finite pixels below 0 (irradiance is never negative)
     double maxRelErr = 0, maxJump = 0, jumpExcess = 0;
 };
-Errors measure(const Image& ref, const Image& A);
-// max_i |A_i - B_i| / scale (absolute when scale <= 0); NaN if any is non-finite.
-double maxDiffRel(const Image& A, const Image& B, double scale);
+// Pixels flagged in `skip` (same size, or empty: none) are left out of
+// max_rel_err and of the jumps; non-finite and negative pixels count everywhere.
+Errors measure(const Image& ref, const Image& A, const std::vector<bool>& skip = {});
+// The pixels whose receiver point lies on the light itself (in its plane, to
+// 1e-9 of the scene's size, and inside its outline): there the irradiance of
+// a light that emits at gamma 90 diverges (logarithmically, as 1 / r^2 over
+// the light around the point), so neither the reference nor a method has a
+// value to be held to; they must still be finite and not negative.
+std::vector<bool> onLight(const Scene& s);
+// What a method may give there: the irradiance at eps from the light's plane
+// (the plane shift's distance) is at most I_max / A times the integral of
+// 1 / r^2 over the plane within the light's diagonal D of the foot point,
+// pi ln(1 + D^2 / eps^2).
+double onLightBound(const Scene& s, const photometry::Table& t, double eps);
+// max_i |A_i - B_i| / scale (absolute when scale <= 0) over the pixels not
+// flagged in skip; NaN if any is non-finite.
+double maxDiffRel(const Image& A, const Image& B, double scale, const std::vector<bool>& skip = {});
 
 struct Row {
     std::string method, spec, precision;
@@ -110,7 +125,7 @@ struct CaseResult {
     int res = 0;
     std::string rejected;  // Rejected cases: the InputError messages (first one)
     std::string skipped;  // why the case did not run (missingLuminaire), "" when it ran
-    double refMax = 0, refErrEst = 0;  // max of the double reference and its own error estimate
+    double refMax = 0, refErrEst = 0;  // max of the double reference off the light (onLight), its error estimate
     Image reference;
     std::vector<Row> rows;
     std::vector<std::string> failures;  // case-level (e.g. not rejected)

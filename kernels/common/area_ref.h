@@ -56,7 +56,15 @@ LB_FN real lb_ref_f(const lb_ref_ctx* c, real s, real t)
     }
     real r2 = dot(w, w);
     real cw = dot(c->nx, w);
-    if (!(cw > R(0)) || !(r2 > R(0)))
+    /* A node (nearly) at the receiver point adds nothing: there cw / r^3 ~
+     * 1 / r^2 overflows (to inf in float below r ~ 1e-15 m), and such a
+     * receiver lies on the light, where the integral itself diverges. */
+#if LB_REAL_IS_DOUBLE
+    const real r2min = R(1e-200);
+#else
+    const real r2min = R(1e-30);
+#endif
+    if (!(cw > R(0)) || !(r2 > r2min))
         return R(0);
     return lb_intensity_local(c->lum, lb_to_light_frame(c->L, -w)) * cw / (r2 * sqrt(r2));
 }

@@ -515,11 +515,8 @@ LB_FN real lb_cub_weights(const lb_cub* T, real3 u, real3 v, real3 nL, real3 nx,
 LB_FN real lb_cubature_setup(lb_cub* T, lb_light L, real3 x, real3 nx, lb_cub_options opt, lb_cub_tunables tun,
                              real* w, real* elam)
 {
-    real plane_eps = tun.plane_eps;
     int dynamic = opt.dynamic;
-    real s = dot(L.n, x - L.c);
-    if (fabs(s) < plane_eps)
-        x += L.n * ((s >= R(0) ? plane_eps : -plane_eps) - s);
+    x = lb_plane_shift(L, x, tun.plane_eps);
     real3 poly[LB_MAXV];
     lb_light_corners(L, poly);
     for (int i = 0; i < 4; ++i)

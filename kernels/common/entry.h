@@ -41,6 +41,16 @@
     if (!LB_VFN(lb_work_item_pixels)(P, row0, &col0, &row, &res, &pix_span, &pix_view))                       \
     return
 
+/* LB_RENDER_PIXELS with the plane shift by eps on the pixels that lie on
+ * the light (common/scene.h lb_plane_shift_on_light): a straight-line form
+ * of a family without a plane_eps tunable defines LB_ENTRY_PLANE_EPS
+ * (LB_PLANE_EPS) and entry_straight.inc opens with this. */
+#define LB_RENDER_PIXELS_OFF_LIGHT(eps)                                                                        \
+    LB_RENDER_PIXELS;                                                                                          \
+    pix_view = LB_VFN(lb_rect_view_at)(                                                                        \
+        LB_VFN(lb_pixels_off_light)(P, col0, row, pix_span.u0, pix_span.v0, pix_view.h, eps), pix_view.au,    \
+        pix_view.av, pix_view.an, pix_view.inv_area)
+
 /* The cubature kernel's arguments (cubature.cl), which sh.cl's kernel also
  * takes (its fallback is that kernel): stats, 2 ints per pixel of the whole
  * image (triangles, flips), written when want_stats != 0, then the

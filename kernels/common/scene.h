@@ -120,6 +120,37 @@ LB_FN int lb_work_item_receiver(__global const real* P, int row0, int* px, lb_li
 }
 #endif
 
+/* The plane shift: a receiver point x closer than eps to the light's plane
+ * moves along n_L to distance eps on its own side, the side of
+ * s = n_L . (x - c) (s = 0 counts as in front). In the plane the radiance
+ * I / (A |n_L . d|) of every sample is infinite while the solid angle it
+ * multiplies is 0, and their product in rounding is anything (1e13-1e22 lux
+ * seen); eps off the plane both are finite and their product the
+ * irradiance there. The cubature, voronoi and ltc shift every receiver by
+ * their tunable plane_eps. The other methods that weight a radiance by a
+ * solid angle (structured, cp / np / mrp, point, engine, sh) are finite
+ * beside the light in its plane, where the radiance's and the solid
+ * angle's zeros cancel to rounding, and shift by LB_PLANE_EPS only the
+ * receivers on the light itself (lb_plane_shift_on_light: the foot on n_L
+ * within eps of the W x L box), where they gave 1e13-1e22 lux. The
+ * straight-line forms shift the height h alike (lb_plane_shift_h,
+ * scene_lanes.inc). */
+#define LB_PLANE_EPS R(1e-3) /* metres: the cubature's default plane_eps */
+LB_FN real3 lb_plane_shift(lb_light L, real3 x, real eps)
+{
+    real s = dot(L.n, x - L.c);
+    if (fabs(s) < eps)
+        x += L.n * ((s >= R(0) ? eps : -eps) - s);
+    return x;
+}
+
+LB_FN real3 lb_plane_shift_on_light(lb_light L, real3 x, real eps)
+{
+    real3 d = x - L.c;
+    int on = fabs(dot(d, L.u)) <= R(0.5) * L.w + eps && fabs(dot(d, L.v)) <= R(0.5) * L.l + eps;
+    return on ? lb_plane_shift(L, x, eps) : x;
+}
+
 /* Direction d (world) expressed in the luminaire's photometric frame (u, v, n). */
 LB_FN real3 lb_to_light_frame(lb_light L, real3 d)
 {

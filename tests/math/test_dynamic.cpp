@@ -97,4 +97,29 @@ TEST(Dynamic, RadianceOfLambertianLightIsConstant)
     EXPECT_NEAR(lb_radiance_from(lum.data(), L, real3(0, 0, 1)), 100.0 / 4.0, 1e-12);
 }
 
+// The plane shift: a receiver nearer the light's plane than eps moves to eps
+// on its side (s = 0 in front), the straight-line forms' height alike.
+TEST(Dynamic, PlaneShiftMovesReceiversOffTheLightsPlane)
+{
+    real3 p[LB_MAXV];
+    lb_light L = downLight(0, p);  // plane z = 1, n_L = -z, centre (1, 0, 1)
+    const double eps = 1e-3;
+    auto shifted = [&](double z) { return lb_plane_shift(L, real3(0.3, 0.2, z), eps); };
+    // s = n_L . (x - c) = 1 - z
+    EXPECT_DOUBLE_EQ(shifted(1).z, 1 - eps);  // in the plane: s = 0 counts as in front
+    EXPECT_DOUBLE_EQ(shifted(1 + 0.5e-3).z, 1 + eps);  // behind: s < 0
+    EXPECT_DOUBLE_EQ(shifted(1 - 0.5e-3).z, 1 - eps);
+    EXPECT_DOUBLE_EQ(shifted(0.5).z, 0.5);  // farther than eps: unchanged
+    EXPECT_DOUBLE_EQ(shifted(1).x, 0.3);  // along n_L only
+    // h = n_L . (corner - x) = -s: -eps in front, +eps behind
+    EXPECT_DOUBLE_EQ(lb_plane_shift_h(0.0, 0.0, eps), -eps);
+    EXPECT_DOUBLE_EQ(lb_plane_shift_h(0.5e-3, -0.5e-3, eps), eps);
+    EXPECT_DOUBLE_EQ(lb_plane_shift_h(-0.5, 0.5, eps), -0.5);
+    // only on the light (the 2 x 2 box around (1, 0, 1), grown by eps)
+    EXPECT_DOUBLE_EQ(lb_plane_shift_on_light(L, real3(0.3, 0.2, 1), eps).z, 1 - eps);
+    EXPECT_DOUBLE_EQ(lb_plane_shift_on_light(L, real3(-0.5e-3, 0.2, 1), eps).z, 1 - eps);  // within eps of the edge
+    EXPECT_DOUBLE_EQ(lb_plane_shift_on_light(L, real3(-0.3, 0.2, 1), eps).z, 1);  // beside the light: kept
+    EXPECT_DOUBLE_EQ(lb_plane_shift_on_light(L, real3(0.3, 1.2, 1), eps).z, 1);
+}
+
 }  // namespace

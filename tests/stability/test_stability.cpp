@@ -91,6 +91,52 @@ TEST(Stability, MetricsClosedForms)
     EXPECT_DOUBLE_EQ(stability::measure(Z, B).maxRelErr, 3);
 }
 
+// onLight() flags the pixels on the light and only those; measure() and
+// maxDiffRel() leave them out; onLightBound() is its closed form.
+TEST(Stability, PixelsOnTheLightAreLeftOutOfTheErrors)
+{
+    constexpr double kPi = 3.14159265358979323846;
+    Scene s;  // light standing on the receiver, a pixel row in its plane
+    s.height = 0;
+    s.rotation = kPi / 2;
+    s.width = s.length = 1;
+    s.res = 9;  // pixels 5/9 m apart: x = 0 and x = +-0.56 on the row y = 0
+    auto on = stability::onLight(s);
+    int n = 0;
+    for (size_t i = 0; i < on.size(); ++i)
+        if (on[i]) {
+            ++n;
+            EXPECT_EQ(i, 4u * 9 + 4) << "only the middle pixel lies on the lower edge, |x| <= 0.5";
+        }
+    EXPECT_EQ(n, 1);
+    s.width = 1.2;  // now x = +-0.56 lie on it too
+    n = 0;
+    for (bool b : stability::onLight(s)) n += b;
+    EXPECT_EQ(n, 3);
+    s.shape = LightShape::Disk;  // the inscribed disk touches the ground at x = 0 only
+    n = 0;
+    for (bool b : stability::onLight(s)) n += b;
+    EXPECT_EQ(n, 1);
+    s.height = 1e-6;  // lifted off the receiver: nothing on it
+    n = 0;
+    for (bool b : stability::onLight(s)) n += b;
+    EXPECT_EQ(n, 0);
+
+    Image R(2, 1), A(2, 1);
+    R.px = {10, 1e9};
+    A.px = {11, 5};
+    const std::vector<bool> skip = {false, true};
+    EXPECT_DOUBLE_EQ(stability::measure(R, A, skip).maxRelErr, 0.1);  // 1 / 10; the skipped pixel not the scale
+    EXPECT_DOUBLE_EQ(stability::maxDiffRel(A, R, 10, skip), 0.1);
+    A.px[1] = NAN;  // non-finite counts everywhere
+    EXPECT_EQ(stability::measure(R, A, skip).nonfinite, 1);
+
+    // (I_max / A) pi ln(1 + D^2 / eps^2): 1000 cd on 1 m^2, D^2 = 2, eps = 1 m
+    photometry::Table t = stability::luminaire("lambert");
+    s = Scene{};
+    EXPECT_NEAR(stability::onLightBound(s, t, 1), t.maxCd() * kPi * std::log(3.0), 1e-9 * t.maxCd());
+}
+
 TEST(Stability, CatalogueCoversTheIssue)
 {
     std::set<std::string> names;
