@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The main job: installs the dependencies, builds, lists the OpenCL devices
-# and runs point, SCT (cubature), robust, tuned and engine at equal time
+# and runs point, SCT (cubature), robust, tuned, engine and sh at equal time
 # against four Monte Carlo baselines on the seven luminaires, then names the
 # report.
 #
@@ -8,9 +8,9 @@
 #                                      published evaluation that answers in
 #                                      minutes (3 heights x 2 rotations, 32 x 32
 #                                      pixels, timed at 128 x 128; run and
-#                                      report 502 s of CPU without engine,
-#                                      engine's cells 328 s wall on the loaded
-#                                      2-core machine:
+#                                      report 502 s of CPU without engine and
+#                                      sh; engine's cells 328 s wall, sh's 504 s
+#                                      wall more on the shared 2-core machine:
 #                                      docs/studies/main-job-baselines.md)
 #   FULL=1 bash scripts/run-main.sh    experiments/paper.json: the whole
 #                                      published evaluation (6 heights x 5
