@@ -9,8 +9,8 @@
 #                                      minutes (3 heights x 2 rotations, 32 x 32
 #                                      pixels, timed at 128 x 128; run and
 #                                      report 502 s of CPU without engine and
-#                                      sh; engine's cells 328 s wall, sh's 504 s
-#                                      wall more on the shared 2-core machine:
+#                                      sh; engine's cells about 108 s of CPU
+#                                      more, sh's 358 s:
 #                                      docs/studies/main-job-baselines.md)
 #   FULL=1 bash scripts/run-main.sh    experiments/paper.json: the whole
 #                                      published evaluation (6 heights x 5
