@@ -9,8 +9,9 @@
 #                                      minutes (3 heights x 2 rotations, 32 x 32
 #                                      pixels, timed at 128 x 128; run and
 #                                      report 502 s of CPU without engine and
-#                                      sh; engine's cells about 108 s of CPU
-#                                      more, sh's 358 s:
+#                                      sh; the runs that added engine's and
+#                                      sh's cells, each with its report, 108 s
+#                                      and 358 s:
 #                                      docs/studies/main-job-baselines.md)
 #   FULL=1 bash scripts/run-main.sh    experiments/paper.json: the whole
 #                                      published evaluation (6 heights x 5
