@@ -1,12 +1,18 @@
 #!/usr/bin/env bash
 # The main job: installs the dependencies, builds, lists the OpenCL devices
-# and runs an evaluation of SCT (cubature) against MCI at equal time on the
-# seven luminaires, then names the report.
+# and runs point, SCT (cubature), robust, tuned, engine and sh at equal time
+# against four Monte Carlo baselines on the seven luminaires, then names the
+# report.
 #
 #   bash scripts/run-main.sh           experiments/main.json: a subset of the
 #                                      published evaluation that answers in
 #                                      minutes (3 heights x 2 rotations, 32 x 32
-#                                      pixels, timed at 128 x 128)
+#                                      pixels, timed at 128 x 128; run and
+#                                      report 502 s of CPU without engine and
+#                                      sh; the runs that added engine's and
+#                                      sh's cells, each with its report, 108 s
+#                                      and 358 s:
+#                                      docs/studies/main-job-baselines.md)
 #   FULL=1 bash scripts/run-main.sh    experiments/paper.json: the whole
 #                                      published evaluation (6 heights x 5
 #                                      rotations, MCI curve to N = 1024)

@@ -5,8 +5,8 @@
 
 Per luminaire and height: the geometric mean over the rotations of each method's NMSE and
 the mean FLIP; per method and height the equal-time verdicts against the strong MC (win:
-the method's NMSE below MC's 95 % interval over the seeds, loss: above, tie: inside) and
-the pairs off equal time; each method's median time at the timing resolution."""
+the method's NMSE below MC's 95 % interval over the seeds, loss: above, tie: inside), the
+same in FLIP, per baseline, the pairs at equal time and those off it apart; each method's median time at the timing resolution."""
 import argparse
 import json
 import math
@@ -57,12 +57,12 @@ def main():
                 f = [x for x in fl[(lum, h, m)] if x is not None]
                 cells.append(f"{g:.2g} / {statistics.mean(f):.3f}" if f else f"{g:.2g}")
             print(f"| {lum} | {h} | " + " | ".join(cells) + " |")
-    # equal time
+    # equal time, per baseline: NMSE and FLIP verdicts, pairs at equal time and off-time apart
     own = {}
     for r in recs:
         if r["role"] == "method":
             own[(r["scene"], r["spec"])] = r
-    ver = defaultdict(lambda: [0, 0, 0, 0])  # win tie loss off
+    ver = defaultdict(lambda: [0, 0, 0])  # (label, h, baseline, metric, on-time) -> win tie loss
     for r in recs:
         if r["role"] != "equal_time":
             continue
@@ -70,21 +70,23 @@ def main():
         m = own.get((r["scene"], et["label"]))
         if m is None:
             continue
-        lo, hi = r.get("ci95", {}).get("nmse", [r["nmse"], r["nmse"]])
-        v = ver[(et["label"], r["height"])]
-        if m["nmse"] < lo:
-            v[0] += 1
-        elif m["nmse"] > hi:
-            v[2] += 1
-        else:
-            v[1] += 1
-        if not et["ok"]:
-            v[3] += 1
-    print("\nEqual time against the MC (wins / ties / losses; pairs off equal time)\n")
-    print("| method | h | wins | ties | losses | off equal time |")
-    print("|---|---|---|---|---|---|")
-    for (m, h), v in sorted(ver.items()):
-        print(f"| {m} | {h} | {v[0]} | {v[1]} | {v[2]} | {v[3]} |")
+        base = r.get("baseline", {}).get("label", "MC")
+        for metric in ("nmse", "flip"):
+            if m.get(metric) is None or r.get(metric) is None:
+                continue
+            lo, hi = r.get("ci95", {}).get(metric, [r[metric], r[metric]])
+            v = ver[(et["label"], r["height"], base, metric, bool(et["ok"]))]
+            v[0 if m[metric] < lo else 2 if m[metric] > hi else 1] += 1
+    print("\nEqual time against each MC (wins / ties / losses: NMSE; FLIP), pairs at equal time | off-time\n")
+    print("| method | h | baseline | at equal time | off-time |")
+    print("|---|---|---|---|---|")
+    keys = sorted({k[:3] for k in ver})
+    for lab, h, base in keys:
+        cells = []
+        for ok in (True, False):
+            n, f = ver.get((lab, h, base, "nmse", ok)), ver.get((lab, h, base, "flip", ok))
+            cells.append(f"{'/'.join(map(str, n))}; {'/'.join(map(str, f))}" if n else "-")
+        print(f"| {lab} | {h} | {base} | {cells[0]} | {cells[1]} |")
     print("\nTime (ms, median over the scenes) at the timing resolution\n")
     for m in methods:
         print(f"- {m}: {statistics.median(tm[m]):.3f} ms")

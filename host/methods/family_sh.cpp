@@ -1,11 +1,14 @@
 // sh: the analytic spherical-harmonics method (kernels/sh.cl): the luminaire's
 // radiance fitted once in real SH (methods/sh_fit.h), integrated exactly with
 // the receiver cosine over the clipped light (kernels/common/sh.h); where the
-// fit's error exceeds `threshold`, robust's kernel instead (fallback=robust).
+// fit's error exceeds `threshold`, robust's kernel instead (fallback=robust);
+// per pixel, robust where the light subtends less than `near` (blended up to
+// 2 near).
 #include "methods/cubature_options.h"
 #include "methods/registry.h"
 #include "methods/spec.h"
 #include "methods/sh_fit.h"
+#include "photometry/lut.h"
 
 #include <fmt/format.h>
 
@@ -57,11 +60,17 @@ Plan shPlan(const MethodSpec& s, const Scene& scene, const photometry::Table& t,
     }
     Plan plan;
     plan.defines = fmt::format("-DLB_SH_L={}", fit.opt.L);
-    plan.args = {PlanArg::outputInts("stats", 2), PlanArg::integer("want_stats", 0)};
+    const double near = s.num("near");
     const MethodSpec robust = parseSpec("robust", scene.kind);
+    // near > 0: robust's general one-pixel kernel (its structural defines and its LUT) away from the light
+    if (near > 0) {
+        plan.defines += " -DLB_SH_NEAR -DLB_LUT " + CubatureOptions::parse(robust.values).defines();
+        plan.lum = [&t] { return photometry::buildLut(t).packed; };
+    }
+    plan.args = {PlanArg::outputInts("stats", 2), PlanArg::integer("want_stats", 0)};
     for (const auto& name : cubatureTunableNames()) plan.args.push_back(PlanArg::real(name, robust.num(name)));
     plan.args.push_back(PlanArg::realBuffer("zc", shLobes(fit, scene)));
-    plan.args.push_back(PlanArg::real("far_size", s.num("far")));
+    plan.args.push_back(PlanArg::real("far_size", near > 0 ? near : s.num("far")));
     plan.finish = shFinish(fit, threshold, false);
     return plan;
 }
@@ -89,7 +98,13 @@ void registerSh(Registry& r)
                       "robust: where the fit's relative error exceeds `threshold`, render robust instead"),
         Param::real("far", 0.02, 1e-4, 1, Scale::Log,
                     "radians: where the light's diagonal subtends less than 2 far, E blends into engine's formula "
-                    "(the exact table toward the centre times the form factor), fully below far",
+                    "(the exact table toward the centre times the form factor), fully below far; with near = 0 only",
+                    false),
+        Param::real("near", 1, 0, 10, Scale::Linear,
+                    "radians: where the light's diagonal subtends less than 2 near, E blends per pixel into robust "
+                    "(its general one-pixel kernel: robust's image), fully robust below near, and the fit's "
+                    "integral runs only where the light subtends more than near (docs/studies/sh-engine.md); 0: "
+                    "sh everywhere, with `far`'s blend",
                     false),
         Param::real("threshold", 0.3, 1e-4, 10, Scale::Log,
                     "the fit's relative L2 error of I over the sphere above which sh falls back", false),

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -101,11 +102,11 @@ TEST(Sh, LambertianIsExactAtDegreeZero)
 {
     LB_REQUIRE_RUNTIME(rt);
     for (const auto& sc : kScenes) {
-        double wf = worstCosn(*rt, sc, 1, "sh:L=0", Precision::Float);
+        double wf = worstCosn(*rt, sc, 1, "sh:L=0,near=0", Precision::Float);
         std::printf("[ sh ] L 0 h %g R %g: float %.3g", sc.height, sc.rotation, wf);
         EXPECT_LT(wf, 2e-4) << "h " << sc.height;
         if (rt->fp64()) {
-            double wd = worstCosn(*rt, sc, 1, "sh:L=0", Precision::Double);
+            double wd = worstCosn(*rt, sc, 1, "sh:L=0,near=0", Precision::Double);
             std::printf(", double %.3g", wd);
             EXPECT_LT(wd, 1e-4) << "h " << sc.height;
         }
@@ -124,10 +125,10 @@ TEST(Sh, CosNEmitterIsExactOnceTheDegreeHoldsIt)
     LB_REQUIRE_RUNTIME(rt);
     const Precision p = rt->fp64() ? Precision::Double : Precision::Float;
     for (const auto& sc : {kScenes[1], kScenes[2]}) {
-        double w1 = worstCosn(*rt, sc, 3, "sh:L=1,fallback=none", p);
-        double w2 = worstCosn(*rt, sc, 3, "sh:L=2", p);
-        double w4 = worstCosn(*rt, sc, 3, "sh:L=4", p);
-        double w4f = worstCosn(*rt, sc, 3, "sh:L=4", Precision::Float);
+        double w1 = worstCosn(*rt, sc, 3, "sh:L=1,fallback=none,near=0", p);
+        double w2 = worstCosn(*rt, sc, 3, "sh:L=2,near=0", p);
+        double w4 = worstCosn(*rt, sc, 3, "sh:L=4,near=0", p);
+        double w4f = worstCosn(*rt, sc, 3, "sh:L=4,near=0", Precision::Float);
         std::printf("[ sh ] cos3 h %g R %g: L 1 %.3g, L 2 %.3g, L 4 %.3g (float %.3g)\n", sc.height, sc.rotation, w1,
                     w2, w4, w4f);
         EXPECT_LT(w2, 2e-4);
@@ -151,12 +152,12 @@ TEST(Sh, ConstantRadianceOnAClippedTiltedLight)
     for (double R : {5 * M_PI / 8, 3 * M_PI / 4}) {
         Scene sc = test::scene(-0.2, R, 12);
         auto a = test::run(*rt, t, sc, "engine:specialize=none,lookup=exact", Precision::Float).image;
-        auto b = test::run(*rt, t, sc, "sh:L=0", Precision::Float).image;
+        auto b = test::run(*rt, t, sc, "sh:L=0,near=0", Precision::Float).image;
         double wf = test::worstRelDiff(a.px, b.px, 1.0, 2e-5, "sh clipped float");
         std::printf("[ sh ] clipped constant radiance R %g: float %.3g", R, wf);
         if (rt->fp64()) {
             auto c = test::run(*rt, t, sc, "engine:specialize=none,lookup=exact", Precision::Double).image;
-            auto d = test::run(*rt, t, sc, "sh:L=0", Precision::Double).image;
+            auto d = test::run(*rt, t, sc, "sh:L=0,near=0", Precision::Double).image;
             std::printf(", double %.3g", test::worstRelDiff(c.px, d.px, 1.0, 2e-6, "sh clipped double"));
         }
         std::printf("\n");
@@ -185,12 +186,54 @@ TEST(Sh, FallsBackToRobustWhereTheFitMisses)
     Scene sc = test::scene(1.1, M_PI / 2, 8);
     auto sh = test::run(*rt, t, sc, "sh", Precision::Float);
     auto robust = test::run(*rt, t, sc, "robust", Precision::Float);
-    auto own = test::run(*rt, t, sc, "sh:fallback=none", Precision::Float);
+    auto own = test::run(*rt, t, sc, "sh:fallback=none,near=0", Precision::Float);
     EXPECT_GT(sh.stats.value("sh_fit_error", 0.0), 0.1);
     EXPECT_TRUE(sh.stats.value("sh_fallback", false));
     EXPECT_FALSE(own.stats.value("sh_fallback", true));
     EXPECT_EQ(sh.image.px, robust.image.px);
     EXPECT_NE(own.image.px, robust.image.px);
+}
+
+// The per-pixel blend into robust (near): where the light's diagonal subtends
+// at least 2 near from a pixel, sh's own value (near=0: the same integral, so
+// equal to float rounding, 1e-6 of the peak); at most near, robust's general
+// kernel with its LUT (the same code, 1e-6 of the peak); between,
+// a convex blend of the two (between them, within 1e-6 of the peak). The
+// scene (h 0.1, 16^2) holds pixels of all three kinds; cos^2 keeps the
+// fallback off.
+TEST(Sh, NearBlendsIntoRobustAwayFromTheLight)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    auto t = methods::loadLuminaire("analytic:cos2");
+    Scene sc = test::scene(0.1, M_PI / 2, 16);
+    const double near = 1.0, diag = std::hypot(sc.width, sc.length);
+    auto blend = test::run(*rt, t, sc, "sh:L=4", Precision::Float).image.px;
+    auto own = test::run(*rt, t, sc, "sh:L=4,near=0", Precision::Float).image.px;
+    auto rob = test::run(*rt, t, sc, "robust:specialize=none", Precision::Float).image.px;
+    const double peak = *std::max_element(own.begin(), own.end());
+    int nsh = 0, nrob = 0, nmix = 0;
+    for (int row = 0; row < sc.res; ++row)
+        for (int col = 0; col < sc.res; ++col) {
+            const size_t i = row * sc.res + col;
+            const auto x = sc.pixel(row, col);
+            const double size = diag / std::sqrt(x[0] * x[0] + x[1] * x[1] + std::pow(sc.height + sc.length / 2, 2));
+            const double lo = std::min(own[i], rob[i]) - 1e-6 * peak, hi = std::max(own[i], rob[i]) + 1e-6 * peak;
+            if (size >= 2 * near) {
+                ++nsh;
+                EXPECT_NEAR(blend[i], own[i], 1e-6 * peak) << row << " " << col;
+            } else if (size <= near) {
+                ++nrob;
+                EXPECT_NEAR(blend[i], rob[i], 1e-6 * peak) << row << " " << col;
+            } else {
+                ++nmix;
+                EXPECT_TRUE(blend[i] >= lo && blend[i] <= hi) << row << " " << col;
+            }
+        }
+    std::printf("[ sh ] near=1: %d pixels sh, %d robust, %d blended\n", nsh, nrob, nmix);
+    EXPECT_GT(nsh, 0);
+    EXPECT_GT(nrob, 0);
+    EXPECT_GT(nmix, 0);
+    EXPECT_NE(own, rob);
 }
 
 }  // namespace
