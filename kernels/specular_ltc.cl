@@ -41,7 +41,7 @@
 #ifdef LB_LTC_RECT
 #define LB_ENTRY_FORM                                                                                          \
     LB_VFN(lb_ltc_rect_shade)(P, lum, ltc, LB_LANE_INDEX + (real)col0, row, &pix_span, &pix_view,             \
-                              (lb_cub_tunables[]){lb_cub_plain_tunables(plane_eps, horizon_eps)})
+                              lb_cub_plain_tunables(plane_eps, horizon_eps))
 #include "common/entry_straight.inc"
 #else
 LB_RENDER_KERNEL
