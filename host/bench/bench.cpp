@@ -459,6 +459,7 @@ nlohmann::json cubatureEqualTime(const equaltime::Protocol& p, const equaltime::
             {"ok", cr <= 1.0},
             {"equal_time_n", q.n},
             {"equal_time_extra", q.extra},
+            {"equal_time_scale", q.scale},
             {"verify_ms", q.partner.median_ms},
             {"paired_ms", q.method.median_ms},
             {"equal_time_ratio", q.ratio},

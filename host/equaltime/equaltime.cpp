@@ -84,11 +84,12 @@ struct Search {
         return ocl::Runtime::timeInterleaved(all, opt.rounds, 1);
     }
     // Keeps (n, extra) if its ratio q is closer to 1 than the best so far.
-    void consider(long n, double extra, double q, const ocl::Timing& tm, const ocl::Timing& tp)
+    void consider(long n, double extra, double q, const ocl::Timing& tm, const ocl::Timing& tp, double scale = 1)
     {
         if (best.n != 0 && !(std::fabs(std::log(q)) < std::fabs(std::log(best.ratio)))) return;
         best.n = n;
         best.extra = extra;
+        best.scale = scale;
         best.ratio = q;
         best.method = tm;
         best.partner = tp;
@@ -156,6 +157,33 @@ struct Search {
             (q < 1 ? q0 : q1) = q;
         }
     }
+    // Below N = 1 (Sides::scaled), while MC at N = 1 is too slow: the scale
+    // s aimed on t ~ a + b s^2, first at s^2 = 1 / ratio(1) (time as the
+    // pixels), then by the secant in s^2 through the two paired ratios
+    // nearest 1; three tries, s in [minScale, 0.999] to 3 decimals.
+    void subpixel()
+    {
+        if (!sides.scaled || !measured.count(1) || !(measured.at(1) > 1 + opt.tolerance)) return;
+        std::vector<std::pair<double, double>> pts = {{1.0, measured.at(1)}};  // (s^2, ratio)
+        double aim = 1 / measured.at(1);
+        for (int attempt = 0; attempt < opt.tries; ++attempt) {
+            const double sc = std::round(1000 * std::clamp(std::sqrt(std::max(aim, 0.0)), opt.minScale, 0.999)) / 1000;
+            if (std::any_of(pts.begin(), pts.end(), [&](auto p) { return std::fabs(p.first - sc * sc) < 1e-12; }))
+                break;  // aimed where it was timed already
+            const std::vector<ocl::Timing> tt = rounds({sides.scaled(sc)});
+            const double q = medianRatio(tt, 1);
+            best.candidates.push_back({{"n", 1}, {"scale", sc}, {"ratio", q}, {"ms", tt[1].median_ms}});
+            consider(1, 0, q, tt[0], tt[1], sc);
+            if (std::abs(q - 1) <= opt.tolerance || (q > 1 && sc <= opt.minScale)) break;
+            pts.emplace_back(sc * sc, q);
+            std::sort(pts.begin(), pts.end(),
+                      [](auto x, auto y) { return std::fabs(std::log(x.second)) < std::fabs(std::log(y.second)); });
+            const auto [x0, q0] = pts[0];
+            const auto [x1, q1] = pts[1];
+            const double slope = (q1 - q0) / (x1 - x0);
+            aim = slope > 0 ? x0 + (1 - q0) / slope : x0 / q0;  // flat by noise: t as the pixels
+        }
+    }
 };
 
 }  // namespace
@@ -184,6 +212,7 @@ Result search(const Sides& sides, const Options& options, const Curve& fit, doub
     }
     s.best.bracketed = s.bracketed();  // of the integer N
     s.fractional();
+    s.subpixel();
     s.best.ok = std::abs(s.best.ratio - 1) <= options.tolerance;
     return s.best;
 }

@@ -14,7 +14,12 @@
 // adjacent integers already: then no integer N matches more closely on this
 // device (`bracketed`). Where MC takes a fractional count (mc's `extra`: that
 // share of its tiles takes N + 1 points), the step between N and N + 1 is
-// closed by interpolating their paired ratios (two tries).
+// closed by interpolating their paired ratios (two tries). Where MC at N = 1
+// is slower than the tolerance allows and it can render below one sample per
+// pixel (Sides::scaled: mc's scale, the image rendered at a fraction of its
+// side and upsampled), the search goes on in the scale: its time ~ a + b
+// s^2, aimed at s^2 = 1 / ratio(N = 1), then by the secant in s^2 through the
+// two paired ratios nearest 1 (three tries).
 //
 // The module knows launches, not kernels: a caller hands it the method's
 // launch and a factory of MC's launches by sample count, so it is tested on
@@ -59,6 +64,9 @@ struct Sides {
     // the caller may build the kernel there and keep it in the returned launch.
     std::function<Launch(long n, double extra)> mc;
     bool fractional = false;  // MC takes a fractional sample count
+    // MC at N = 1 rendered at `scale` (< 1) of the image's side and
+    // upsampled; empty: the search stops at N = 1.
+    std::function<Launch(double scale)> scaled;
 };
 
 // Search: the aimed N and its neighbours until the ratio is within the
@@ -72,16 +80,18 @@ struct Options {
     int rounds = 11;  // alternating rounds per timing (>= 5)
     int tries = 3;  // aims of the integer search
     Mode mode = Mode::Search;
+    double minScale = 0.05;  // the least scale below N = 1 (Sides::scaled)
 };
 
 struct Result {
     long n = 0;  // N_eq
     double extra = 0;  // its fractional share (0 unless that is closer)
+    double scale = 1;  // below N = 1: the side's share MC renders (n 1, extra 0)
     double ratio = NAN;  // median over the rounds of t(MC) / t(method)
     ocl::Timing method, partner;  // the two sides over the same paired rounds
     bool ok = false;  // |ratio - 1| <= tolerance
     bool bracketed = false;  // no integer N is closer on this device
-    nlohmann::json candidates = nlohmann::json::array();  // [{"n", "extra"?, "ratio", "ms"}, ...] as timed
+    nlohmann::json candidates = nlohmann::json::array();  // [{"n", "extra"?, "scale"?, "ratio", "ms"}, ...] as timed
 };
 
 // The search above (in options.mode), from the measured points `fit` (>= 1

@@ -1,6 +1,7 @@
 #include "equaltime/protocol.h"
 
 #include "cl/runtime.h"
+#include "methods/mc_denoise.h"
 #include "methods/spec.h"
 #include "util/error.h"
 #include "util/json_file.h"
@@ -17,18 +18,21 @@ Options Protocol::options() const
     o.tolerance = tolerance;
     o.rounds = rounds;
     o.mode = mode;
+    o.minScale = methods::kMinScale;
     return o;
 }
 
 nlohmann::json Protocol::json() const
 {
-    return {{"time_res", timeRes}, {"reps", reps},          {"rounds", rounds}, {"tolerance", tolerance}, {"mc", mc},
-            {"fit", fit},          {"mode", modeName(mode)}};
+    return {
+        {"time_res", timeRes}, {"reps", reps},           {"rounds", rounds},    {"tolerance", tolerance}, {"mc", mc},
+        {"fit", fit},          {"mode", modeName(mode)}, {"subpixel", subpixel}};
 }
 
 const std::vector<std::string>& protocolKeys()
 {
-    static const std::vector<std::string> keys = {"time_res", "reps", "rounds", "tolerance", "mc", "fit", "mode"};
+    static const std::vector<std::string> keys = {"time_res", "reps", "rounds", "tolerance",
+                                                  "mc",       "fit",  "mode",   "subpixel"};
     return keys;
 }
 
@@ -74,12 +78,14 @@ void readProtocol(const util::JsonKeys& r, Protocol& p, const ReadRules& rules)
         if (p.fit.size() < 2) r.fail("fit", "expected at least two sample counts to fit t(N)");
     }
     if (r.has("mode")) p.mode = parseMode(r.string("mode"), r.name("mode"));
+    if (r.has("subpixel")) p.subpixel = r.boolean("subpixel");
 }
 
-std::string specAt(const std::string& mc, long n, double extra)
+std::string specAt(const std::string& mc, long n, double extra, double scale)
 {
     std::string s = mc + (mc.find(':') == std::string::npos ? ":" : ",") + "n=" + std::to_string(n);
     if (extra > 0) s += fmt::format(",extra={:.3f}", extra);
+    if (scale < 1) s += fmt::format(",scale={:.3f}", scale);
     return s;
 }
 
@@ -100,6 +106,8 @@ Result pairUp(const Protocol& p, const Frames& frames, const methods::MethodSpec
     sides.method = frames(method);
     sides.mc = [&](long n, double extra) { return frames(mcAt(n, extra)); };
     sides.fractional = mcAt(1, 0).has("extra");
+    if (p.subpixel && mcAt(1, 0).has("scale"))
+        sides.scaled = [&](double scale) { return frames(mcAt(1, 0).with("scale", fmt::format("{:.3f}", scale))); };
     return search(sides, p.options(), fit, targetMs);
 }
 

@@ -11,7 +11,9 @@
 //   "tolerance": 0.10,        // |ratio - 1| that counts as equal time
 //   "mc": "mc",               // the partner: an mc SPEC without n (the search sets it)
 //   "fit": [8, 32, 128],     // MC's sample counts timed for t(N), which aims the search
-//   "mode": "search"          // search | aim (below)
+//   "mode": "search",         // search | aim (below)
+//   "subpixel": false         // search: below N = 1, MC rendered at a share of
+//                             // the image's side and upsampled (mc's scale)
 //
 // Modes of equaltime::search: "search" pairs the aimed N and its neighbours
 // until the ratio is within the tolerance (three tries, then the fractional
@@ -45,6 +47,7 @@ struct Protocol {
     std::string mc = "mc";
     std::vector<long> fit = {8, 32, 128};
     Mode mode = Mode::Search;
+    bool subpixel = false;
 
     Options options() const;  // the search's
     nlohmann::json json() const;  // the keys above
@@ -79,8 +82,9 @@ Frames preparedFrames(ocl::Runtime& rt, const photometry::Table& table, const Sc
                       size_t lx = 8, size_t ly = 8);
 
 // The SPEC of MC `mc` (a SPEC without n) at n samples, + extra (mc's
-// fractional count, 3 decimals) where extra > 0: "mc:domain=solid,n=4".
-std::string specAt(const std::string& mc, long n, double extra = 0);
+// fractional count, 3 decimals) where extra > 0, + scale (3 decimals) where
+// below 1: "mc:domain=solid,n=4".
+std::string specAt(const std::string& mc, long n, double extra = 0, double scale = 1);
 
 // MC of the partner at n samples (+ extra: mc's fractional count).
 using McAt = std::function<methods::MethodSpec(long n, double extra)>;

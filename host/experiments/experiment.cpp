@@ -45,6 +45,7 @@ const std::vector<std::string> kKeys = {"name",
                                         "reps",
                                         "equal_time_tolerance",
                                         "equal_time_rounds",
+                                        "equal_time_subpixel",
                                         "save_images",
                                         "seeds",
                                         "time_res",
@@ -198,12 +199,13 @@ void readProtocol(const Reader& r, const Overrides& ov, Experiment& e)
     if (ov.reps) e.protocol.reps = util::checkRange(nameOf(ov, "reps"), *ov.reps, kMinExperimentReps, ocl::kMaxReps);
     if (ov.timeRes) e.protocol.timeRes = util::checkRange(nameOf(ov, "time_res"), *ov.timeRes, 0, kMaxRes);
     json flat = json::object();
-    for (const char* k : {"tolerance", "rounds", "fit"})
+    for (const char* k : {"tolerance", "rounds", "fit", "subpixel"})
         if (r.has(std::string("equal_time_") + k)) flat[k] = r.at(std::string("equal_time_") + k);
     equaltime::readProtocol(Reader{r.path, flat, "equal_time_"}, e.protocol, rules);
     if (!r.has("equal_time") || !r.at("equal_time").is_object()) return;
     const Reader q{r.path, r.at("equal_time"), "equal_time."};
-    std::set<std::string> known = {"methods", "tolerance", "rounds", "fit", "mode", "time_res", "reps", "mc"};
+    std::set<std::string> known = {"methods",  "tolerance", "rounds", "fit",     "mode",
+                                   "time_res", "reps",      "mc",     "subpixel"};
     q.onlyKnown(known);
     rules.elsewhere = {{"time_res", "the top-level \"time_res\" (it times every cell)"},
                        {"reps", "the top-level \"reps\" (it times every cell)"},

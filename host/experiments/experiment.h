@@ -10,7 +10,8 @@
 //                                            // and the protocol's keys (equaltime/protocol.h; fit: the N
 //                                            // t(N) is fitted on when mci_curve is empty); a bare list:
 //                                            // the methods. Top-level equal_time_tolerance,
-//                                            // equal_time_rounds, equal_time_fit: the same keys.
+//                                            // equal_time_rounds, equal_time_fit, equal_time_subpixel:
+//                                            // the same keys.
 //    "mci_curve": [1, 2, 4, ..., 1024],      // each baseline at these N on every scene (error-time curve)
 //    "mc": "mc",                             // the MC baseline(s) of the curve and of equal time: a SPEC,
 //                                            // or a list of SPECs and {"label": ..., "spec": ...}

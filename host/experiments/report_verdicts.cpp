@@ -117,7 +117,7 @@ Table verdictTable(const results::Results& doc, const Tallies& t)
 
 const char* reasonText(const std::string& cls)
 {
-    if (cls == "floor") return "MC's N = 1 floor exceeds the method's time";
+    if (cls == "floor") return "MC's floor (N = 1, or its least scale) exceeds the method's time";
     if (cls == "ceiling") return "MC's largest N is still faster than the method";
     if (cls == "step") return "no integer N closer (N and N + 1 bracket the method's time)";
     return "no N found within the tolerance";

@@ -3,6 +3,7 @@
 #include "experiments/experiment.h"
 #include "scene/scene.h"
 #include "equaltime/equaltime.h"
+#include "methods/mc_denoise.h"
 #include "methods/spec.h"
 #include "util/error.h"
 #include "util/fileio.h"
@@ -200,6 +201,7 @@ void to_json(json& j, const EqualTime& e)
              {"bracketed", e.bracketed},
              {"candidates", e.candidates},
              {"fit", e.fit}};
+    if (e.scale < 1) j["scale"] = num(e.scale);
 }
 
 void from_json(const json& j, EqualTime& e)
@@ -219,6 +221,7 @@ void from_json(const json& j, EqualTime& e)
         e.bracketed = field<bool>(j, "bracketed");
         e.candidates = field<json>(j, "candidates");
         e.fit = field<json>(j, "fit");
+        if (j.contains("scale")) e.scale = numField(j, "scale");
     } catch (const InputError& err) {
         throw InputError(fmt::format("key \"equal_time\": {}", err.what()));
     }
@@ -365,11 +368,19 @@ std::string offTimeClass(const Record& partner)
     const EqualTime& e = *partner.equalTime;
     const double n = partner.n ? double(*partner.n) : e.n;
     bool oneTooSlow = n <= 1;  // MC at N = 1 timed slower than the tolerance allows
+    bool scaled = false, leastTooSlow = false;  // below N = 1 (mc's scale): its least scale too slow
     if (e.candidates.is_array())
-        for (const auto& c : e.candidates)
-            if (c.is_object() && c.value("n", 0L) == 1 && !c.contains("extra") &&
-                c.value("ratio", 0.0) > 1 + e.tolerance)
+        for (const auto& c : e.candidates) {
+            if (!c.is_object()) continue;
+            const bool slow = c.value("ratio", 0.0) > 1 + e.tolerance;
+            if (c.contains("scale")) {
+                scaled = true;
+                leastTooSlow = leastTooSlow || (slow && c.value("scale", 1.0) <= methods::kMinScale + 1e-9);
+            } else if (c.value("n", 0L) == 1 && !c.contains("extra") && slow) {
                 oneTooSlow = true;
+            }
+        }
+    if (scaled) oneTooSlow = leastTooSlow;
     if (e.ratio > 1 && oneTooSlow) return "floor";
     if (e.ratio < 1 && n >= double(equaltime::kMaxN)) return "ceiling";
     if (e.bracketed) return "step";
@@ -382,7 +393,9 @@ std::string offTimeReason(const Record& partner)
     if (c.empty()) return "";
     const EqualTime& e = *partner.equalTime;
     const std::string ratio = fmt::format("t MC / t method = {:.3g}", e.ratio);
-    if (c == "floor") return fmt::format("MC's N = 1 floor exceeds the method's time ({})", ratio);
+    if (c == "floor")
+        return fmt::format("MC's {} floor exceeds the method's time ({})",
+                           e.scale < 1 ? fmt::format("scale = {:g}", methods::kMinScale) : std::string("N = 1"), ratio);
     if (c == "ceiling") return fmt::format("MC's largest N is still faster than the method ({})", ratio);
     if (c == "step")
         return fmt::format("no integer N closer: N = {:g} and its neighbour bracket the method's time ({})", e.n,

@@ -51,7 +51,8 @@ struct TimeMs {
 // pair a report shows.
 struct EqualTime {
     std::string label;  // the matched method as the experiment writes it
-    double n = 0;  // MC's mean sample count N + extra (the record's n is N)
+    double n = 0;  // MC's mean samples per image pixel: (N + extra) scale^2 as rendered (the record's n is N)
+    double scale = 1;  // below N = 1: the share of the image's side MC rendered (mc's scale)
     double method_ms = 0, partner_ms = 0;  // medians of the paired rounds
     double method_cv = 0, partner_cv = 0;  // their coefficients of variation
     double ratio = 0;  // the median over the rounds of partner / method

@@ -3,6 +3,7 @@
 #include "equaltime/equaltime.h"
 #include "experiments/results.h"
 #include "methods/analytic.h"
+#include "methods/mc_denoise.h"
 #include "methods/render.h"
 #include "metrics/flip.h"
 #include "metrics/metrics.h"
@@ -259,6 +260,7 @@ results::Record equalTimePartner(const SceneRun& sr, const Cell& c, double tM, e
         e, b, equaltime::preparedFrames(sr.rt, sr.table, ts, sr.prec),
         [&](const methods::MethodSpec& s) { return sr.render(s).timing.median_ms; }, c.parsed, pts, tM);
     auto s1 = mcAt(e, b, q.n, q.extra);
+    if (q.scale < 1) s1 = s1.with("scale", fmt::format("{:.3f}", q.scale));
     methods::RenderOptions imageOnly;
     imageOnly.reps = 1;
     auto r1 = methods::render(sr.rt, sr.table, sr.scene, s1, sr.prec, imageOnly);
@@ -269,7 +271,10 @@ results::Record equalTimePartner(const SceneRun& sr, const Cell& c, double tM, e
     r.n = q.n;
     results::EqualTime et;
     et.label = c.spec;
-    et.n = double(q.n) + q.extra;  // N + extra: MC's mean sample count
+    // N + extra: MC's mean sample count; below N = 1 per image pixel, as rendered at the time_res
+    const double px = double(methods::mcRenderRes(q.scale, ts.res)) / ts.res;
+    et.n = (double(q.n) + q.extra) * (q.scale < 1 ? px * px : 1.0);
+    et.scale = q.scale;
     et.method_ms = q.method.median_ms;  // the method and MC in the same paired rounds
     et.partner_ms = q.partner.median_ms;
     et.method_cv = q.method.cv;
@@ -329,6 +334,7 @@ public:
             in["equal_time_rounds"] = e_.protocol.rounds;  // the pairing's rounds decide its N
             in["equal_time_fit"] = e_.protocol.fit;
             if (e_.protocol.mode != equaltime::Mode::Search) in["equal_time_mode"] = modeName(e_.protocol.mode);
+            if (e_.protocol.subpixel) in["equal_time_subpixel"] = true;  // may pair below N = 1
             in["mci_curve"] = e_.mciCurve;  // the measured t(N) the search starts from
         } else {
             in["kernel"] = kernel(c.parsed);

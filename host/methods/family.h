@@ -84,12 +84,13 @@ struct LaunchContext {
     std::string options{};  // the program's -D options
     std::map<std::string, cl::Kernel> passKernels{};
     int frame = 0;  // launches since the last reset (stateful methods)
+    int imageRes = 0;  // pixels per side of the image; scene.res where Plan::renderRes renders fewer
     // A kernel of the family's program (Family::file built with `options`) by
     // name, made once: the pre-passes' kernels.
     cl::Kernel& pass(const std::string& name);
 
     bool dbl() const { return precision == Precision::Double; }
-    int res() const { return scene.res; }
+    int res() const { return scene.res; }  // the render kernel's pixels per side (Plan::renderRes)
     // A read-only buffer of reals (float or double as the kernel was built).
     cl::Buffer realBuffer(const std::vector<double>& v);
     // A device buffer of n reals / ints to be written by the kernel.
@@ -181,7 +182,12 @@ struct PlanArg {
 // - postPasses (an image filter): kernels run after Family::kernelName on
 //   every launch that reaches the image's last row, timed with it like the
 //   pre-passes; they find the image as named["out"] and leave the result
-//   there.
+//   there;
+// - renderRes (0: the scene's res): the render kernel and the passes run on
+//   a renderRes x renderRes image of the same receiver (LaunchContext::scene
+//   is that scene, named["out"] its image), and the post-passes leave the
+//   scene's image in named["image"] (mc's scale: MC below one sample per
+//   pixel, upsampled).
 struct Plan {
     using Passes = std::function<std::vector<StageEvent>(LaunchContext&)>;
     std::string defines;
@@ -193,6 +199,7 @@ struct Plan {
     std::string statsSwitch;
     Passes prePasses;
     Passes postPasses;
+    int renderRes = 0;
 };
 
 using PlanHook =

@@ -136,10 +136,15 @@ Plan mcPlan(const MethodSpec& s, const Scene& scene, const photometry::Table& t,
         // the unit square itself, common/disk_sample.h)
         if (scene.shape == LightShape::Disk && o.domain == "area") mapToDisk(st);
     }
-    plan.args = mcArgs(st, n, extra, samplingArgs(o, n, extra > 0, seed, scene.res, &t));
+    const int renderRes = mcRenderRes(s.num("scale"), scene.res);
+    if (renderRes != scene.res) plan.renderRes = renderRes;
+    plan.args = mcArgs(st, n, extra, samplingArgs(o, n, extra > 0, seed, renderRes, &t));
     plan.bind = [o](LaunchContext& c) { bindDenoise(c, o); };
     plan.postPasses = [](LaunchContext& c) {
-        return denoisePasses(c, mcOptions(c.spec), c.spec.num("atrous_sigma"), c.spec.integer("n"));
+        std::vector<StageEvent> ev =
+            denoisePasses(c, mcOptions(c.spec), c.spec.num("atrous_sigma"), c.spec.integer("n"));
+        if (c.res() != c.imageRes) ev.push_back(upsamplePass(c));
+        return ev;
     };
     return plan;
 }
@@ -159,6 +164,11 @@ void registerMc(Registry& r)
         Param::real("extra", 0, 0, 0.999, Scale::Linear,
                     "fractional sample count N + extra: that share of the work-group tiles, spread evenly, takes "
                     "the N + 1 point set (the equal-time MCI's fine step)",
+                    false),
+        Param::real("scale", 1, kMinScale, 1, Scale::Linear,
+                    "render at round(scale x res) pixels per side, then upsample bilinearly: MC below one sample "
+                    "per pixel (the equal-time search's step under N = 1, its protocol's subpixel); a filter runs "
+                    "at the smaller size, its footprint kept in metres",
                     false),
         Param::choice("pattern", "poisson", {"poisson", "halton", "stratified", "random"},
                       "point set of sequence=shared"),

@@ -95,4 +95,16 @@ std::vector<StageEvent> denoisePasses(LaunchContext& c, const McOptions& o, doub
     return ev;
 }
 
+int mcRenderRes(double scale, int res)
+{
+    return std::clamp(static_cast<int>(std::lround(scale * res)), 1, std::max(1, res));
+}
+
+StageEvent upsamplePass(LaunchContext& c)
+{
+    cl::Kernel& k =
+        c.bind(c.pass("lb_upsample"), c.named.at("out"), cl_int(c.res()), c.named.at("image"), cl_int(c.imageRes));
+    return {"upsample", c.rt.launch2D(k, c.imageRes, c.imageRes, 8, 8)};
+}
+
 }  // namespace lb::methods

@@ -43,4 +43,12 @@ void bindDenoise(LaunchContext& c, const McOptions& o);
 // variance), "denoise_l1" .. (a-trous levels, the last one's copy included).
 std::vector<StageEvent> denoisePasses(LaunchContext& c, const McOptions& o, double sigmaL, int n);
 
+// MC below one sample per pixel (mc's scale): the render's pixels per side
+// at `scale` of res, round(scale res), at least 1; kMinScale the key's least.
+inline constexpr double kMinScale = 0.05;
+int mcRenderRes(double scale, int res);
+// The bilinear upsampling (kernels/common/denoise.h, lb_upsample) of the
+// image rendered at c.res() to named["image"] at c.imageRes, stage "upsample".
+StageEvent upsamplePass(LaunchContext& c);
+
 }  // namespace lb::methods

@@ -165,31 +165,60 @@ Prepared::Prepared(ocl::Runtime& rt, const photometry::Table& table, const Scene
     if (dbl) options_ += " -DLB_DOUBLE";
     const int lanes = plan.lanes;
     if (lanes > 1) options_ += fmt::format(" -DLB_LANES={}", lanes);
+    renderScene_ = scene_;
+    if (plan.renderRes > 0) {
+        util::checkRange("the plan's render resolution (pixels per side)", plan.renderRes, 1, scene_.res);
+        if (!plan.postPasses) throw Error("Prepared: a plan that renders at another resolution needs post-passes");
+        renderScene_.res = plan.renderRes;
+    }
     double b0 = rt.buildSeconds();
-    ctx_.reset(new LaunchContext{
-        fam_, rt, spec_, scene_, table_, precision, rt.kernel(fam_.file, fam_.kernelName, options_), {}, {}, {}, {}});
+    ctx_.reset(new LaunchContext{fam_,
+                                 rt,
+                                 spec_,
+                                 renderScene_,
+                                 table_,
+                                 precision,
+                                 rt.kernel(fam_.file, fam_.kernelName, options_),
+                                 {},
+                                 {},
+                                 {},
+                                 {}});
+    ctx_->imageRes = scene_.res;
     ctx_->stats = nlohmann::json::object();  // {} above made it null
     ctx_->lanes = lanes;
     ctx_->options = options_;
     buildSeconds_ = rt.buildSeconds() - b0;
 
-    const size_t npx = static_cast<size_t>(scene_.res) * scene_.res;
-    cl::Buffer P = ctx_->realBuffer(scene_.params());
+    const size_t npx = static_cast<size_t>(renderScene_.res) * renderScene_.res;
+    cl::Buffer P = ctx_->realBuffer(renderScene_.params());
     P_ = P;
     std::vector<float> lum = plan.lum ? plan.lum() : table_.packed();
     cl::Buffer L(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, lum.size() * sizeof(float), lum.data());
     ctx_->buffers.push_back(L);
     ctx_->named["P"] = P;  // for the pre-passes' kernels
     ctx_->named["lum"] = L;
-    out_ = ctx_->outputReals(npx);
-    ctx_->named["out"] = out_;  // for the post-passes
+    cl::Buffer rendered = ctx_->outputReals(npx);
+    ctx_->named["out"] = rendered;  // for the post-passes
+    out_ = rendered;
+    if (renderScene_.res != scene_.res) {
+        out_ = ctx_->outputReals(static_cast<size_t>(scene_.res) * scene_.res);
+        ctx_->named["image"] = out_;  // the post-passes' result
+    }
     ctx_->kernel.setArg(0, P);
     ctx_->kernel.setArg(1, L);
-    ctx_->kernel.setArg(2, out_);
+    ctx_->kernel.setArg(2, rendered);
     ctx_->kernel.setArg(3, cl_int(0));
     bindPlan(*ctx_, plan);
     plan_ = std::move(plan);
     statsSwitch(false);
+}
+
+Prepared::~Prepared()
+{
+    try {
+        if (ctx_) ctx_->rt.queue().finish();
+    } catch (...) {  // a failed device: nothing left to wait for
+    }
 }
 
 void Prepared::statsSwitch(bool on)
@@ -203,10 +232,17 @@ cl::Event Prepared::launch(int row0, int rows)
         auto ev = plan_.prePasses(*ctx_);
         passEvents_.insert(passEvents_.end(), ev.begin(), ev.end());
     }
+    if (renderScene_.res != scene_.res) {
+        if (row0 != 0 || rows != scene_.res)
+            throw Error(fmt::format("Prepared::launch: {} renders at {} pixels per side and launches whole frames, "
+                                    "not rows {} .. {}",
+                                    spec_.name, renderScene_.res, row0, row0 + rows));
+        rows = renderScene_.res;
+    }
     ctx_->kernel.setArg(3, cl_int(row0));
-    const size_t cols = (scene_.res + ctx_->lanes - 1) / ctx_->lanes;
+    const size_t cols = (renderScene_.res + ctx_->lanes - 1) / ctx_->lanes;
     cl::Event ev = ctx_->rt.launch2D(ctx_->kernel, cols, rows, lx_, ly_);
-    if (plan_.postPasses && row0 + rows >= scene_.res) {
+    if (plan_.postPasses && row0 + rows >= renderScene_.res) {
         auto post = plan_.postPasses(*ctx_);
         passEvents_.insert(passEvents_.end(), post.begin(), post.end());
     }
@@ -264,7 +300,10 @@ void Prepared::setScene(const Scene& scene)
     if (scene.res != scene_.res) throw Error("Prepared::setScene: the resolution must stay");
     scene.validate();
     scene_ = scene;
-    auto P = scene_.params();
+    const int rr = renderScene_.res;
+    renderScene_ = scene;
+    renderScene_.res = rr;
+    auto P = renderScene_.params();
     if (ctx_->dbl()) {
         ctx_->rt.queue().enqueueWriteBuffer(P_, CL_TRUE, 0, P.size() * sizeof(double), P.data());
     } else {

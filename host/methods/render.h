@@ -23,6 +23,8 @@ public:
     // spec: a method resolved by parseSpec (its family is spec.family()).
     Prepared(ocl::Runtime& rt, const photometry::Table& table, const Scene& scene, const MethodSpec& spec,
              Precision precision);
+    // Waits for what it enqueued (post-passes a caller did not wait for).
+    ~Prepared();
     Prepared(const Prepared&) = delete;
     Prepared& operator=(const Prepared&) = delete;
 
@@ -34,7 +36,9 @@ public:
     const Scene& scene() const { return scene_; }
 
     // Rows row0 .. row0 + rows of the image (statistics as last switched),
-    // work-groups of lx x ly (setLocal; default 8 x 8).
+    // work-groups of lx x ly (setLocal; default 8 x 8). A plan that renders
+    // at another resolution (Plan::renderRes) launches whole frames only
+    // (row0 0, rows the scene's res).
     cl::Event launch(int row0, int rows);
     // One launch of the whole image and its device time in ms: the render
     // kernel plus, for multi-pass methods, the pre-passes it ran (RSM,
@@ -68,11 +72,12 @@ private:
     const Family& fam_;
     MethodSpec spec_;
     Scene scene_;
+    Scene renderScene_;  // scene_ at the plan's renderRes (the kernels' P)
     photometry::Table table_;  // the scene's: a TILT=INCLUDE factor applied (photometry::tiltedFor)
     std::string options_;
     double buildSeconds_ = 0;
     size_t lx_ = 8, ly_ = 8;
-    cl::Buffer out_, P_;
+    cl::Buffer out_, P_;  // out_: the image at the scene's res (named["image"] where rendered at another)
     std::vector<StageEvent> passEvents_;
     Plan plan_;  // its passes, statistics switch and finish
     nlohmann::json stageMs_ = nlohmann::json::object();

@@ -270,6 +270,8 @@ void readEqualTime(const Reader& r, TuneExperiment& e)
     rules.maxTimeRes = 4096;
     rules.kind = e.sceneKeys.kind;
     equaltime::readProtocol(q, e.equalTime, rules);
+    if (e.equalTime.subpixel)
+        q.fail("subpixel", "tune pairs MC at N >= 1 (its time model is t(N)); subpixel is for run and bench");
     if (!q.has("rounds")) e.equalTime.rounds = e.equalTime.reps;
 }
 

@@ -17,7 +17,10 @@
  *   flat receiver there are no normal or depth edges: the luminance weight is
  *   the only stop.
  * lb_var_spatial: where the render left a pixel no variance (one sample: mc.cl
- *   writes -1), SVGF's spatial estimate from the 7 x 7 moments; in place. */
+ *   writes -1), SVGF's spatial estimate from the 7 x 7 moments; in place.
+ * lb_upsample: the image rendered at rin pixels per side (mc's scale),
+ *   bilinear to rout (denoise_math.h); one pixel per work-item, a 2D launch
+ *   over rout x rout (PoCL vectorises the work-items' loads). */
 
 #if LB_REAL_IS_DOUBLE
 typedef double8 lb_dn8;
@@ -170,4 +173,10 @@ __kernel void lb_var_spatial(__global const real* in, __global real* var, int re
     s1 *= inv;
     lb_dn8 est = fmax(s2 * inv - s1 * s1, (lb_dn8)R(0));
     vstore8(v < R(0) ? est : v, 0, var + at);
+}
+
+__kernel void lb_upsample(__global const real* in, int rin, __global real* out, int rout)
+{
+    const int c = (int)get_global_id(0), r = (int)get_global_id(1);
+    if (c < rout && r < rout) out[r * rout + c] = lb_upsample_px(in, rin, rout, c, r);
 }

@@ -22,7 +22,12 @@
  *   filtered with the squared weights for the next level.
  * lb_var_spatial_px: SVGF's spatial variance where a pixel has none (one
  *   sample): the 7 x 7 box of the luminance's first and second moments,
- *   E[c^2] - E[c]^2, over the pixels inside the image. */
+ *   E[c^2] - E[c]^2, over the pixels inside the image.
+ * lb_upsample_px: bilinear upsampling of an rin x rin image to rout x rout
+ *   pixels of the same square (MC rendered below one sample per pixel, mc's
+ *   scale): pixel centres aligned, the output centre (c + 1/2) rin / rout -
+ *   1/2 in input pixels, clamped to the input's outer centres (constant
+ *   beyond them). An affine image comes back exactly between those centres. */
 
 #ifdef __OPENCL_C_VERSION__
 #define LB_DN_CONST __constant
@@ -142,4 +147,17 @@ LB_FN real lb_var_spatial_px(__global const real* in, int res, int c, int r)
         }
     s1 /= n;
     return fmax(s2 / n - s1 * s1, R(0));
+}
+
+LB_FN real lb_upsample_px(__global const real* in, int rin, int rout, int c, int r)
+{
+    const real s = (real)rin / (real)rout, top = (real)(rin - 1);
+    const real x = fmin(fmax(((real)c + R(0.5)) * s - R(0.5), R(0)), top);
+    const real y = fmin(fmax(((real)r + R(0.5)) * s - R(0.5), R(0)), top);
+    const int x0 = (int)x, y0 = (int)y; /* x, y >= 0: truncation is floor */
+    const int x1 = x0 + 1 < rin ? x0 + 1 : x0, y1 = y0 + 1 < rin ? y0 + 1 : y0;
+    const real fx = x - (real)x0, fy = y - (real)y0;
+    const real a = in[y0 * rin + x0] + fx * (in[y0 * rin + x1] - in[y0 * rin + x0]);
+    const real b = in[y1 * rin + x0] + fx * (in[y1 * rin + x1] - in[y1 * rin + x0]);
+    return a + fy * (b - a);
 }

@@ -20,6 +20,7 @@ struct Model {
     double methodMs;
     std::function<double(double)> mcMs;
     bool fractional = true;
+    std::function<double(double)> scaledMs{};  // MC at N = 1 and scale s (empty: none below N = 1)
     int methodLaunches = 0;
     int mcBuilds = 0;
 
@@ -37,6 +38,12 @@ struct Model {
             return [this, base] { return base * drift(); };
         };
         s.fractional = fractional;
+        if (scaledMs)
+            s.scaled = [this](double scale) -> equaltime::Launch {
+                ++mcBuilds;
+                const double base = scaledMs(scale);
+                return [this, base] { return base * drift(); };
+            };
         return s;
     }
 };
@@ -109,6 +116,36 @@ TEST(EqualTime, AMethodFasterThanOneSampleGetsNOne)
     EXPECT_FALSE(r.ok);
     EXPECT_TRUE(r.bracketed);
     EXPECT_EQ(m.mcBuilds, 1);  // N = 1 too slow: the search stops there (no N is faster), no N = 2 timed
+}
+
+// Below N = 1: MC at N = 1 and scale s costs 0.2 + 1.8 s^2 ms (a fixed
+// share, the upsampling and launch, and the rest as the pixels), the method
+// 1 ms, so s_eq = sqrt(0.8 / 1.8) = 0.6667. The first aim takes time as the
+// pixels: s^2 = 1 / ratio(1) = 1 / 2, s = 0.707 (3 decimals), ratio
+// 0.2 + 1.8 x 0.499849 = 1.0997, off by more than 2 %; the secant in s^2
+// through (1, 2) and (0.499849, 1.0997) has the model's slope 1.8 and aims
+// at s^2 = 0.4444, s = 0.667: ratio 0.2 + 1.8 x 0.444889 = 1.0008.
+TEST(EqualTime, BelowOneSampleTheScaleIsSearched)
+{
+    Model m{1.0, [](double n) { return 1.9 + 0.1 * n; }};
+    m.scaledMs = [](double s) { return 0.2 + 1.8 * s * s; };
+    const equaltime::Result r = equaltime::search(m.sides(), tight(), {{1, 2.0}, {8, 2.7}}, 1.0);
+    EXPECT_EQ(r.n, 1);
+    EXPECT_EQ(r.extra, 0);
+    EXPECT_NEAR(r.scale, 0.667, 1e-12);
+    EXPECT_NEAR(r.ratio, 0.2 + 1.8 * 0.667 * 0.667, 1e-9);
+    EXPECT_TRUE(r.ok);
+    ASSERT_EQ(r.candidates.size(), 3u);  // N = 1, then two scales
+    EXPECT_NEAR(r.candidates[1]["scale"].get<double>(), 0.707, 1e-12);
+    EXPECT_EQ(m.mcBuilds, 3);
+
+    // a method faster than MC at the least scale: the scale's floor, off
+    Model fast{0.1, [](double n) { return 1.9 + 0.1 * n; }};
+    fast.scaledMs = m.scaledMs;
+    const equaltime::Result f = equaltime::search(fast.sides(), tight(), {{1, 2.0}, {8, 2.7}}, 0.1);
+    EXPECT_NEAR(f.scale, tight().minScale, 1e-12);
+    EXPECT_NEAR(f.ratio, (0.2 + 1.8 * 0.05 * 0.05) / 0.1, 1e-9);
+    EXPECT_FALSE(f.ok);
 }
 
 TEST(EqualTime, SolveAndInterpolateOnTheMeasuredCurve)

@@ -84,6 +84,42 @@ TEST(EqualTimeProtocol, RunFindsThePartnerThroughTheProtocol)
     EXPECT_EQ(dev.methodLaunches, e.protocol.rounds + 1);  // one set of rounds and its warm-up
 }
 
+// With "subpixel", MC slower at N = 1 than the method is rendered at a
+// share of the image's side: MC at N = 1 takes 2.5 scale^2 ms here, the
+// method 1.25 ms, so the first aim, scale^2 = 1 / 2 (time as the pixels),
+// scale 0.707, is within the tolerance: 2.5 x 0.499849 / 1.25 = 0.9997.
+// Without it the search stops at N = 1, off time.
+TEST(EqualTimeProtocol, SubpixelGoesBelowOneSample)
+{
+    experiments::Baseline b{"MC", "mc", methods::parseSpec("mc").canonical()};
+    for (bool subpixel : {true, false}) {
+        experiments::Experiment e;
+        e.protocol.subpixel = subpixel;
+        std::map<std::string, int> builds;
+        equaltime::Frames frames = [&](const methods::MethodSpec& s) -> equaltime::Launch {
+            ++builds[s.canonical()];
+            const double ms =
+                s.name == "mc" ? 2.5 * double(s.integer("n")) * s.num("scale") * s.num("scale") : kMethodMs;
+            return [ms] { return ms; };
+        };
+        auto timeOf = [](const methods::MethodSpec& s) { return 2.5 * double(s.integer("n")); };
+        equaltime::Curve fit;
+        const equaltime::Result q =
+            experiments::findPartner(e, b, frames, timeOf, methods::parseSpec("cubature"), fit, kMethodMs);
+        EXPECT_EQ(q.n, 1);
+        if (subpixel) {
+            EXPECT_NEAR(q.scale, 0.707, kTol);
+            EXPECT_NEAR(q.ratio, 2.5 * 0.707 * 0.707 / kMethodMs, kTol);
+            EXPECT_TRUE(q.ok);
+            EXPECT_EQ(builds[canonical("mc:n=1,scale=0.707")], 1);
+        } else {
+            EXPECT_EQ(q.scale, 1);
+            EXPECT_NEAR(q.ratio, 2.0, kTol);
+            EXPECT_FALSE(q.ok);
+        }
+    }
+}
+
 TEST(EqualTimeProtocol, BenchPairsTheCubatureThroughTheProtocol)
 {
     const equaltime::Protocol p = bench::benchProtocol(true, 5);
@@ -185,12 +221,15 @@ TEST(EqualTimeProtocol, ReaderChecksEachKey)
     EXPECT_EQ(p.options().mode, equaltime::Mode::Aim);
     EXPECT_EQ(p.options().tolerance, 0.2);
     EXPECT_EQ(read(p.json()).json(), p.json());  // json() reads back as itself
+    EXPECT_FALSE(p.subpixel);
+    EXPECT_TRUE(read({{"subpixel", true}}).subpixel);
     for (const auto& [j, what] :
          std::vector<std::pair<nlohmann::json, std::string>>{{{{"mc", "mc:n=4"}}, "without n"},
                                                              {{{"mc", "cubature"}}, "without n"},
                                                              {{{"mode", "fast"}}, "search or aim"},
                                                              {{{"tolerance", 0}}, "tolerance"},
-                                                             {{{"rounds", 0}}, "rounds"}}) {
+                                                             {{{"rounds", 0}}, "rounds"},
+                                                             {{{"subpixel", "yes"}}, "subpixel"}}) {
         const std::string msg = test::inputErrorOf([&] { read(j); });
         EXPECT_NE(msg.find(what), std::string::npos) << what << " in: " << msg;
         EXPECT_NE(msg.find("f.json"), std::string::npos) << msg;

@@ -6,7 +6,9 @@
 // bits against std::exp2.
 #include "math/kmath.h"
 #include "methods/mc_denoise.h"
+#include "methods/render_helpers.h"
 #include "methods/spec.h"
+#include "test_tables.h"
 #include "testutil.h"
 
 #include <fmt/format.h>
@@ -267,6 +269,109 @@ TEST(Denoise, GaussShapeKeys)
     EXPECT_THROW(methods::parseSpec("mc:gauss_radius=16"), InputError);
     EXPECT_THROW(methods::parseSpec("mc:denoise=atrous,gauss_sigma=2"), InputError);
     EXPECT_NO_THROW(methods::parseSpec("mc:denoise=gauss16,gauss_radius=16,gauss_sigma=5"));
+}
+
+// The bilinear upsampling (lb_upsample, mc's scale) of an affine image: a
+// coarse image sampled from f(x, y) = 6 + 2 x - 3 y at its pixel centres
+// comes back as f at each output centre clamped to the outer coarse centres
+// (closed form), on the host in double (1e-12: a handful of double
+// operations on values of order 10) and on the device in float (1e-5
+// relative: the interpolation weights' float rounding, ~1e-7 each, over
+// values 3 .. 8 whose differences it scales) and double (1e-12); and a
+// rough image against the host's lb_upsample_px, output sizes not a multiple
+// of 8, 1 pixel to 101.
+template <class T>
+void upsampleIsBilinear(ocl::Runtime& rt, double tol)
+{
+    Device<T> d{rt};
+    const char* prec = d.dbl() ? "double" : "float";
+    auto f = [](double x, double y) { return 6 + 2 * x - 3 * y; };
+    for (auto [rin, rout] : std::vector<std::pair<int, int>>{{37, 101}, {1, 9}, {256, 512}, {5, 64}}) {
+        std::vector<double> coarse(static_cast<size_t>(rin) * rin), want(static_cast<size_t>(rout) * rout);
+        for (int r = 0; r < rin; ++r)
+            for (int c = 0; c < rin; ++c) coarse[r * rin + c] = f((c + 0.5) / rin, (r + 0.5) / rin);
+        auto clampC = [&](double x) { return std::clamp(x, 0.5 / rin, (rin - 0.5) / rin); };
+        for (int r = 0; r < rout; ++r)
+            for (int c = 0; c < rout; ++c) want[r * rout + c] = f(clampC((c + 0.5) / rout), clampC((r + 0.5) / rout));
+        std::vector<double> host(want.size());
+        for (int r = 0; r < rout; ++r)
+            for (int c = 0; c < rout; ++c) host[r * rout + c] = f64::lb_upsample_px(coarse.data(), rin, rout, c, r);
+        test::worstRelDiff(want, host, 0, 1e-12, fmt::format("upsample {} -> {} host", rin, rout));
+        cl::Buffer in = d.buf(coarse), out = d.buf(want);
+        cl::Kernel k = d.kernel("lb_upsample");
+        k.setArg(0, in);
+        k.setArg(1, cl_int(rin));
+        k.setArg(2, out);
+        k.setArg(3, cl_int(rout));
+        rt.launch2D(k, rout, rout, 8, 8).wait();
+        const double w = test::worstRelDiff(want, d.read(out, want.size()), 0, tol,
+                                            fmt::format("upsample {} -> {} {}", rin, rout, prec));
+        std::printf("upsample %d -> %d, %s: worst relative difference %.2e from the affine image\n", rin, rout, prec,
+                    w);
+    }
+    const auto rough = testImage(37, 5);
+    std::vector<double> want(101 * 101);
+    for (int r = 0; r < 101; ++r)
+        for (int c = 0; c < 101; ++c) want[r * 101 + c] = f64::lb_upsample_px(rough.data(), 37, 101, c, r);
+    cl::Buffer in = d.buf(rough), out = d.buf(want);
+    cl::Kernel k = d.kernel("lb_upsample");
+    k.setArg(0, in);
+    k.setArg(1, cl_int(37));
+    k.setArg(2, out);
+    k.setArg(3, cl_int(101));
+    rt.launch2D(k, 101, 101, 8, 8).wait();
+    // relative to the image's largest value: the float coordinate (c + 1/2) rin / rout - 1/2 is off by
+    // up to an ulp of rin (2^-18 at 37), times the jump between two neighbours (up to the largest value)
+    test::worstRelDiff(want, d.read(out, want.size()), 1.0, tol, fmt::format("upsample rough {}", prec));
+}
+
+TEST(Denoise, UpsampleIsBilinearFloat)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    upsampleIsBilinear<float>(*rt, 1e-5);
+}
+
+TEST(Denoise, UpsampleIsBilinearDouble)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    if (!rt->fp64()) GTEST_SKIP() << "no fp64";
+    upsampleIsBilinear<double>(*rt, 1e-12);
+}
+
+// mc at scale s renders the image MC renders at round(s res) pixels per side
+// (same seed, same filter in metres: the filter's footprint follows the
+// rendered size), upsampled: the scaled render against the host's upsampling
+// of the small render, float (1e-5: the upsampling's float rounding, above)
+// and double (1e-12); a scaled plan launches whole frames only.
+TEST(Denoise, ScaledMcIsTheUpsampledSmallRender)
+{
+    LB_REQUIRE_RUNTIME(rt);
+    const auto t = methods::test_tables::lumpy();
+    for (auto p : {methods::Precision::Float, methods::Precision::Double}) {
+        if (p == methods::Precision::Double && !rt->fp64()) continue;
+        const double tol = p == methods::Precision::Double ? 1e-12 : 1e-5;
+        for (const char* base :
+             {"mc:n=2,domain=solid,sequence=sobol", "mc:n=1,domain=solid,sequence=sobol,denoise=gauss16",
+              "mc:n=1,domain=solid,sequence=sobol,denoise=atrous"}) {
+            const int res = 61, small = methods::mcRenderRes(0.6, res);
+            ASSERT_EQ(small, 37);
+            const Image lo = test::run(*rt, t, test::scene(1.1, 2.356, small), base, p).image;
+            const auto hi = test::run(*rt, t, test::scene(1.1, 2.356, res), std::string(base) + ",scale=0.6", p);
+            std::vector<double> want(static_cast<size_t>(res) * res);
+            for (int r = 0; r < res; ++r)
+                for (int c = 0; c < res; ++c) want[r * res + c] = f64::lb_upsample_px(lo.px.data(), small, res, c, r);
+            ASSERT_EQ(hi.image.width, res);
+            const double w = test::worstRelDiff(want, hi.image.px, 1e-3, tol,
+                                                fmt::format("{},scale=0.6 {}", base, methods::precisionName(p)));
+            std::printf("%s,scale=0.6 (%s): worst relative difference %.2e from the upsampled %d^2 render\n", base,
+                        methods::precisionName(p).c_str(), w, small);
+            EXPECT_TRUE(hi.stats.contains("stage_ms") && hi.stats["stage_ms"].contains("upsample"));
+        }
+    }
+    methods::Prepared prep(*rt, t, test::scene(1.1, 2.356, 64), methods::parseSpec("mc:n=1,scale=0.5"),
+                           methods::Precision::Float);
+    EXPECT_THROW(prep.launch(0, 32), Error);
+    EXPECT_NO_THROW(prep.launch(0, 64).wait());
 }
 
 }  // namespace

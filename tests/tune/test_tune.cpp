@@ -315,7 +315,8 @@ TEST(Tune, BadEqualTimeKeysAreRefused)
              {"equal_time", {{"fit", {8}}}, "at least two"},
              {"equal_time", {{"mci_n", {1, 8}}}, "\"fit\""},
              {"equal_time", {{"mode", "fast"}}, "search or aim"},
-             {"equal_time", {{"time_res", 0}}, "time_res"}}) {
+             {"equal_time", {{"time_res", 0}}, "time_res"},
+             {"equal_time", {{"subpixel", true}}, "subpixel is for run and bench"}}) {
         std::string msg = smokeRefusal({{"objective", obj}, {"equal_time", keys}});
         EXPECT_NE(msg.find("equal_time"), std::string::npos) << msg;
         EXPECT_NE(msg.find(what), std::string::npos) << what << " in: " << msg;
