@@ -158,31 +158,61 @@ struct Search {
         }
     }
     // Below N = 1 (Sides::scaled), while MC at N = 1 is too slow: the scale
-    // s aimed on t ~ a + b s^2, first at s^2 = 1 / ratio(1) (time as the
-    // pixels), then by the secant in s^2 through the two paired ratios
-    // nearest 1; three tries, s in [minScale, 0.999] to 3 decimals.
+    // s searched in x = s^2 on the paired ratios of scaled launches alone (a
+    // scaled frame adds its upsampling, so N = 1's ratio is not on their
+    // line). The first try times x = 1 / ratio(1) (time as the pixels) and
+    // half of it in one set of rounds; then, while off: between the nearest
+    // ratios below and above 1, linear interpolation; else along the line
+    // through the two nearest 1 where it rises; else x / ratio. s in
+    // [minScale, 0.999] to 3 decimals; tries + 1 sets of rounds at most.
     void subpixel()
     {
         if (!sides.scaled || !measured.count(1) || !(measured.at(1) > 1 + opt.tolerance)) return;
-        std::vector<std::pair<double, double>> pts = {{1.0, measured.at(1)}};  // (s^2, ratio)
-        double aim = 1 / measured.at(1);
+        auto scaleOf = [&](double x) {
+            return std::round(1000 * std::clamp(std::sqrt(std::max(x, 0.0)), opt.minScale, 0.999)) / 1000;
+        };
+        std::map<double, double> pts;  // scale -> paired ratio
+        auto timeScales = [&](std::vector<double> scales) {
+            std::vector<Launch> ls;
+            for (double sc : scales) ls.push_back(sides.scaled(sc));
+            const std::vector<ocl::Timing> tt = rounds(ls);
+            for (size_t k = 0; k < scales.size(); ++k) {
+                const double q = medianRatio(tt, k + 1);
+                pts[scales[k]] = q;
+                best.candidates.push_back({{"n", 1}, {"scale", scales[k]}, {"ratio", q}, {"ms", tt[k + 1].median_ms}});
+                consider(1, 0, q, tt[0], tt[k + 1], scales[k]);
+            }
+        };
+        const double x1 = 1 / measured.at(1);
+        std::vector<double> first = {scaleOf(x1)};
+        if (scaleOf(x1 / 2) != first[0]) first.push_back(scaleOf(x1 / 2));
+        timeScales(first);
         for (int attempt = 0; attempt < opt.tries; ++attempt) {
-            const double sc = std::round(1000 * std::clamp(std::sqrt(std::max(aim, 0.0)), opt.minScale, 0.999)) / 1000;
-            if (std::any_of(pts.begin(), pts.end(), [&](auto p) { return std::fabs(p.first - sc * sc) < 1e-12; }))
-                break;  // aimed where it was timed already
-            const std::vector<ocl::Timing> tt = rounds({sides.scaled(sc)});
-            const double q = medianRatio(tt, 1);
-            best.candidates.push_back({{"n", 1}, {"scale", sc}, {"ratio", q}, {"ms", tt[1].median_ms}});
-            consider(1, 0, q, tt[0], tt[1], sc);
-            if (std::abs(q - 1) <= opt.tolerance || (q > 1 && sc <= opt.minScale)) break;
-            pts.emplace_back(sc * sc, q);
-            std::sort(pts.begin(), pts.end(),
-                      [](auto x, auto y) { return std::fabs(std::log(x.second)) < std::fabs(std::log(y.second)); });
-            const auto [x0, q0] = pts[0];
-            const auto [x1, q1] = pts[1];
-            const double slope = (q1 - q0) / (x1 - x0);
-            aim = slope > 0 ? x0 + (1 - q0) / slope : x0 / q0;  // flat by noise: t as the pixels
+            if (std::abs(best.ratio - 1) <= opt.tolerance) break;
+            const double sc = scaleOf(scaleAim(pts));
+            if (pts.count(sc)) break;  // aimed where it was timed: nothing closer on this device
+            timeScales({sc});
         }
+    }
+    // The next x = s^2 from the timed (scale, ratio) points (subpixel above).
+    static double scaleAim(const std::map<double, double>& pts)
+    {
+        std::vector<std::pair<double, double>> p;  // (x, ratio)
+        for (auto [sc, q] : pts) p.emplace_back(sc * sc, q);
+        std::optional<std::pair<double, double>> lo, hi;  // nearest 1 from below and above
+        for (auto pt : p) {
+            if (pt.second < 1 && (!lo || pt.second > lo->second)) lo = pt;
+            if (pt.second >= 1 && (!hi || pt.second < hi->second)) hi = pt;
+        }
+        if (lo && hi && hi->first != lo->first)
+            return lo->first + (1 - lo->second) * (hi->first - lo->first) / (hi->second - lo->second);
+        std::sort(p.begin(), p.end(),
+                  [](auto a, auto b) { return std::fabs(std::log(a.second)) < std::fabs(std::log(b.second)); });
+        if (p.size() > 1 && std::fabs(p[1].first - p[0].first) > 0.05 * p[0].first) {
+            const double slope = (p[1].second - p[0].second) / (p[1].first - p[0].first);
+            if (slope > 0) return p[0].first + (1 - p[0].second) / slope;
+        }
+        return p[0].first / p[0].second;
     }
 };
 

@@ -17,9 +17,11 @@
 // closed by interpolating their paired ratios (two tries). Where MC at N = 1
 // is slower than the tolerance allows and it can render below one sample per
 // pixel (Sides::scaled: mc's scale, the image rendered at a fraction of its
-// side and upsampled), the search goes on in the scale: its time ~ a + b
-// s^2, aimed at s^2 = 1 / ratio(N = 1), then by the secant in s^2 through the
-// two paired ratios nearest 1 (three tries).
+// side and upsampled), the search goes on in the scale, on the paired ratios
+// of scaled launches (time ~ a + b s^2, a the upsampling's): s^2 = 1 /
+// ratio(N = 1) and half of it first, then interpolation between the ratios
+// nearest 1 from below and above, or the line through the two nearest
+// (three more tries).
 //
 // The module knows launches, not kernels: a caller hands it the method's
 // launch and a factory of MC's launches by sample count, so it is tested on

@@ -382,6 +382,7 @@ std::string offTimeClass(const Record& partner)
         }
     if (scaled) oneTooSlow = leastTooSlow;
     if (e.ratio > 1 && oneTooSlow) return "floor";
+    if (scaled) return "unmatched";  // below N = 1 the scale is continuous: no step
     if (e.ratio < 1 && n >= double(equaltime::kMaxN)) return "ceiling";
     if (e.bracketed) return "step";
     return "unmatched";
@@ -400,7 +401,8 @@ std::string offTimeReason(const Record& partner)
     if (c == "step")
         return fmt::format("no integer N closer: N = {:g} and its neighbour bracket the method's time ({})", e.n,
                            ratio);
-    return fmt::format("the search found no N within +-{:g} % ({})", 100 * e.tolerance, ratio);
+    return fmt::format("the search found no {} within +-{:g} % ({})", e.scale < 1 ? "scale" : "N", 100 * e.tolerance,
+                       ratio);
 }
 
 size_t dedupe(std::vector<Record>& records)

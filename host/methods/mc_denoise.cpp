@@ -104,7 +104,8 @@ StageEvent upsamplePass(LaunchContext& c)
 {
     cl::Kernel& k =
         c.bind(c.pass("lb_upsample"), c.named.at("out"), cl_int(c.res()), c.named.at("image"), cl_int(c.imageRes));
-    return {"upsample", c.rt.launch2D(k, c.imageRes, c.imageRes, 8, 8)};
+    // eight pixels of a row per work-item (kernels/common/denoise.h)
+    return {"upsample", c.rt.launch2D(k, (static_cast<size_t>(c.imageRes) + 7) / 8, c.imageRes, 8, 8)};
 }
 
 }  // namespace lb::methods

@@ -19,8 +19,8 @@
  * lb_var_spatial: where the render left a pixel no variance (one sample: mc.cl
  *   writes -1), SVGF's spatial estimate from the 7 x 7 moments; in place.
  * lb_upsample: the image rendered at rin pixels per side (mc's scale),
- *   bilinear to rout (denoise_math.h); one pixel per work-item, a 2D launch
- *   over rout x rout (PoCL vectorises the work-items' loads). */
+ *   bilinear to rout (denoise_math.h); eight pixels of a row per work-item
+ *   as the filters (the row's input rows and weight computed once). */
 
 #if LB_REAL_IS_DOUBLE
 typedef double8 lb_dn8;
@@ -177,6 +177,27 @@ __kernel void lb_var_spatial(__global const real* in, __global real* var, int re
 
 __kernel void lb_upsample(__global const real* in, int rin, __global real* out, int rout)
 {
-    const int c = (int)get_global_id(0), r = (int)get_global_id(1);
-    if (c < rout && r < rout) out[r * rout + c] = lb_upsample_px(in, rin, rout, c, r);
+    int c0, r, n = lb_dn_lanes(rout, &c0, &r);
+    if (n < 8 || rin < 2) {
+        for (int i = 0; i < n; ++i) out[r * rout + c0 + i] = lb_upsample_px(in, rin, rout, c0 + i, r);
+        return;
+    }
+    /* the row's two input rows and weight, uniform over the lanes; the
+     * columns' as lb_upsample_px computes them, lane by lane */
+    const real s = (real)rin / (real)rout, top = (real)(rin - 1);
+    const real y = fmin(fmax(((real)r + R(0.5)) * s - R(0.5), R(0)), top);
+    const int y0 = (int)y, y1 = y0 + 1 < rin ? y0 + 1 : y0;
+    const real fy = y - (real)y0;
+    __global const real* ra = in + y0 * rin;
+    __global const real* rb = in + y1 * rin;
+    real v[8];
+    for (int i = 0; i < 8; ++i) {
+        const real x = fmin(fmax(((real)(c0 + i) + R(0.5)) * s - R(0.5), R(0)), top);
+        const int x0 = (int)x, x1 = x0 + 1 < rin ? x0 + 1 : x0;
+        const real fx = x - (real)x0;
+        const real a = ra[x0] + fx * (ra[x1] - ra[x0]);
+        const real b = rb[x0] + fx * (rb[x1] - rb[x0]);
+        v[i] = a + fy * (b - a);
+    }
+    vstore8(vload8(0, v), 0, out + r * rout + c0);
 }

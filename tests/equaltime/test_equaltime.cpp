@@ -120,11 +120,11 @@ TEST(EqualTime, AMethodFasterThanOneSampleGetsNOne)
 
 // Below N = 1: MC at N = 1 and scale s costs 0.2 + 1.8 s^2 ms (a fixed
 // share, the upsampling and launch, and the rest as the pixels), the method
-// 1 ms, so s_eq = sqrt(0.8 / 1.8) = 0.6667. The first aim takes time as the
-// pixels: s^2 = 1 / ratio(1) = 1 / 2, s = 0.707 (3 decimals), ratio
-// 0.2 + 1.8 x 0.499849 = 1.0997, off by more than 2 %; the secant in s^2
-// through (1, 2) and (0.499849, 1.0997) has the model's slope 1.8 and aims
-// at s^2 = 0.4444, s = 0.667: ratio 0.2 + 1.8 x 0.444889 = 1.0008.
+// 1 ms, so s_eq = sqrt(0.8 / 1.8) = 0.6667. The first try takes time as the
+// pixels, s^2 = 1 / ratio(1) = 1 / 2, s = 0.707 (3 decimals), and half of
+// it, s = 0.5: ratios 0.2 + 1.8 x 0.499849 = 1.0997 and 0.65, both off by
+// more than 2 %; they bracket 1, and the interpolation between them, on the
+// model's line, aims at s^2 = 0.4444, s = 0.667: ratio 1.0008.
 TEST(EqualTime, BelowOneSampleTheScaleIsSearched)
 {
     Model m{1.0, [](double n) { return 1.9 + 0.1 * n; }};
@@ -135,11 +135,14 @@ TEST(EqualTime, BelowOneSampleTheScaleIsSearched)
     EXPECT_NEAR(r.scale, 0.667, 1e-12);
     EXPECT_NEAR(r.ratio, 0.2 + 1.8 * 0.667 * 0.667, 1e-9);
     EXPECT_TRUE(r.ok);
-    ASSERT_EQ(r.candidates.size(), 3u);  // N = 1, then two scales
+    ASSERT_EQ(r.candidates.size(), 4u);  // N = 1, then three scales
     EXPECT_NEAR(r.candidates[1]["scale"].get<double>(), 0.707, 1e-12);
-    EXPECT_EQ(m.mcBuilds, 3);
+    EXPECT_NEAR(r.candidates[2]["scale"].get<double>(), 0.5, 1e-12);
+    EXPECT_EQ(m.mcBuilds, 4);
 
-    // a method faster than MC at the least scale: the scale's floor, off
+    // a method faster than MC at the least scale: the scale's floor, off (the
+    // line through the first two aims below 0, then the floor itself, then
+    // the floor again: the search stops)
     Model fast{0.1, [](double n) { return 1.9 + 0.1 * n; }};
     fast.scaledMs = m.scaledMs;
     const equaltime::Result f = equaltime::search(fast.sides(), tight(), {{1, 2.0}, {8, 2.7}}, 0.1);

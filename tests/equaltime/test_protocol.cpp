@@ -87,7 +87,8 @@ TEST(EqualTimeProtocol, RunFindsThePartnerThroughTheProtocol)
 // With "subpixel", MC slower at N = 1 than the method is rendered at a
 // share of the image's side: MC at N = 1 takes 2.5 scale^2 ms here, the
 // method 1.25 ms, so the first aim, scale^2 = 1 / 2 (time as the pixels),
-// scale 0.707, is within the tolerance: 2.5 x 0.499849 / 1.25 = 0.9997.
+// scale 0.707, is within the tolerance: 2.5 x 0.499849 / 1.25 = 0.9997
+// (its companion, scale 0.5, timed in the same rounds: 0.5).
 // Without it the search stops at N = 1, off time.
 TEST(EqualTimeProtocol, SubpixelGoesBelowOneSample)
 {

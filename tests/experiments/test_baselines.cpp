@@ -7,6 +7,7 @@
 #include "experiments/report.h"
 #include "experiments/report_verdicts.h"
 #include "experiments/results.h"
+#include "methods/mc_denoise.h"
 #include "methods/spec.h"
 #include "util/error.h"
 
@@ -186,6 +187,19 @@ TEST(Baselines, OffTimePairsAreNoVerdictAndSayWhy)
     EXPECT_EQ(results::offTimeClass(step), "step");
     step.equalTime->bracketed = false;
     EXPECT_EQ(results::offTimeClass(step), "unmatched");
+    // below N = 1 (mc's scale): the floor is the least scale, and no step
+    Record scaled = partnerRec("cubature", "strong", kStrong, 1, 1, 1.3);
+    scaled.equalTime->scale = 0.4;
+    scaled.equalTime->bracketed = true;
+    scaled.equalTime->candidates = {{{"n", 1}, {"ratio", 4}, {"ms", 4}},
+                                    {{"n", 1}, {"scale", 0.5}, {"ratio", 1.5}, {"ms", 1.5}},
+                                    {{"n", 1}, {"scale", 0.4}, {"ratio", 1.3}, {"ms", 1.3}}};
+    EXPECT_EQ(results::offTimeClass(scaled), "unmatched");
+    EXPECT_NE(results::offTimeReason(scaled).find("no scale within"), std::string::npos);
+    scaled.equalTime->scale = methods::kMinScale;
+    scaled.equalTime->candidates.push_back({{"n", 1}, {"scale", methods::kMinScale}, {"ratio", 1.3}, {"ms", 1.3}});
+    EXPECT_EQ(results::offTimeClass(scaled), "floor");
+    EXPECT_NE(results::offTimeReason(scaled).find("scale = 0.05 floor"), std::string::npos);
     // inside the tolerance (0.15): a verdict, and no reason
     const Record on = partnerRec("cubature", "strong", kStrong, 1, 4, 1.14);
     EXPECT_EQ(results::verdict(m, on), results::Verdict::Win);

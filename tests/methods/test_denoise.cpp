@@ -303,7 +303,7 @@ void upsampleIsBilinear(ocl::Runtime& rt, double tol)
         k.setArg(1, cl_int(rin));
         k.setArg(2, out);
         k.setArg(3, cl_int(rout));
-        rt.launch2D(k, rout, rout, 8, 8).wait();
+        d.run(k, rout);
         const double w = test::worstRelDiff(want, d.read(out, want.size()), 0, tol,
                                             fmt::format("upsample {} -> {} {}", rin, rout, prec));
         std::printf("upsample %d -> %d, %s: worst relative difference %.2e from the affine image\n", rin, rout, prec,
@@ -319,7 +319,7 @@ void upsampleIsBilinear(ocl::Runtime& rt, double tol)
     k.setArg(1, cl_int(37));
     k.setArg(2, out);
     k.setArg(3, cl_int(101));
-    rt.launch2D(k, 101, 101, 8, 8).wait();
+    d.run(k, 101);
     // relative to the image's largest value: the float coordinate (c + 1/2) rin / rout - 1/2 is off by
     // up to an ulp of rin (2^-18 at 37), times the jump between two neighbours (up to the largest value)
     test::worstRelDiff(want, d.read(out, want.size()), 1.0, tol, fmt::format("upsample rough {}", prec));
