@@ -96,7 +96,7 @@ def main():
     ap.add_argument("--json", help="write the counts here")
     a = ap.parse_args()
     rows = tally(load(a.results))
-    print("| method | pairs | off-time (at the N = 1 floor) | NMSE wins / ties / losses | FLIP wins / ties / losses "
+    print("| method | pairs | off-time (at the floor) | NMSE wins / ties / losses | FLIP wins / ties / losses "
           "| NMSE / MC's (geo. mean, on time) | MC samples per pixel (pairs below 1) | MC time / method time, median (range) "
           "| off-time pairs: NMSE, FLIP w / t / l |")
     print("|---|---|---|---|---|---|---|---|---|")

@@ -10,9 +10,10 @@ in one command (docs/mc-baselines.md, "Filters at equal time").
    16-pixel radius, sigma 8) at 1440^2 and 2880^2, the squares with the pixels
    of 1920 x 1080 and 3840 x 2160; MIREL h 1.1 R 3pi/4; the median of REPS
    launches each (lumibench render --json: OpenCL profiling events).
-2. The filters' verdicts: experiments/mc-baselines/strong-gauss.json and
-   strong-atrous.json, shard SHARD of the 42 scenes (default 1/7: 6 scenes),
-   through lumibench run, tallied by filter_verdicts.py.
+2. The filters' verdicts: experiments/mc-baselines/strong-gauss-subpixel.json
+   and strong-atrous-subpixel.json (MC below one sample per pixel where N = 1
+   is slower than the method), shard SHARD of the 42 scenes (default 1/7: 6
+   scenes), through lumibench run, tallied by filter_verdicts.py.
 
 Writes OUT_DIR/table1.json (device, driver, commit, every time) and
 OUT_DIR/verdicts-{gauss,atrous}.json, each atomically. On a lent H100 the whole
@@ -93,7 +94,7 @@ def verdicts(args, out_dir):
         return
     for name in ("gauss", "atrous"):
         run_dir = os.path.join(out_dir, f"strong-{name}")
-        cmd = [lbrun.BIN, "run", os.path.join(HERE, f"strong-{name}.json"), "--out", run_dir, "--shard", shard,
+        cmd = [lbrun.BIN, "run", os.path.join(HERE, f"strong-{name}-subpixel.json"), "--out", run_dir, "--shard", shard,
                "--luminaires", lbrun.ZUMTOBEL, "--no-report", "--quiet"]
         if args.device is not None:
             cmd += ["--device", str(args.device)]

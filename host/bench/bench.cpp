@@ -378,7 +378,9 @@ Limits deviceLimits(Bench& b)
 // at N = 1: each pass's time per pixel (Prepared::stageMs, the medians of the
 // same launches), the machine's limit for it (bytes over bandwidth, flops
 // over the nominal peak; the larger), and the passes over the MC pass of the
-// same launches (goals: the Gaussian <= 1, the a-trous filter <= 3).
+// same launches (goals: the Gaussian <= 1, the a-trous filter <= 3); and the
+// upsampling of MC below one sample per pixel (scale 0.5: the image rendered
+// at half its side) over the full-size MC pass of the first row (goal <= 0.25).
 nlohmann::json filterTimes(Bench& b)
 {
     const Limits lim = deviceLimits(b);
@@ -394,14 +396,17 @@ nlohmann::json filterTimes(Bench& b)
             *reals = 2, *flops = 3.0 * radius + 1;
         else if (stage == "denoise_var")
             *reals = 3, *flops = 49 * 3 + 5;
+        else if (stage == "upsample")  // one written, a quarter read (the four taps' rows cached); two lerps, x
+            *reals = 1.25, *flops = 12;
         else
             *reals = 4, *flops = 25 * 14 + 30;
     };
     const size_t realBytes = 4;  // float
     nlohmann::json out = {
         {"bandwidth_gbps", lim.gbps}, {"peak_gflops", lim.gflops}, {"filters", nlohmann::json::array()}};
-    for (auto [filter, goal] : {std::pair<const char*, double>{"gauss16", 1.0}, {"atrous", 3.0}}) {
-        const std::string spec = fmt::format("mc:n=1,domain=solid,sequence=sobol,denoise={}", filter);
+    for (auto [key, goal] :
+         {std::pair<const char*, double>{"denoise=gauss16", 1.0}, {"denoise=atrous", 3.0}, {"scale=0.5", 0.25}}) {
+        const std::string spec = fmt::format("mc:n=1,domain=solid,sequence=sobol,{}", key);
         methods::Prepared p(b.rt, b.table, b.scene, methods::parseSpec(spec), methods::Precision::Float);
         p.setLocal(b.opt.lx, b.opt.ly);
         const auto t = p.time(b.protocol.rounds);
@@ -421,7 +426,9 @@ nlohmann::json filterTimes(Bench& b)
                               {"bytes_per_pixel", reals * realBytes},
                               {"flops_per_pixel", flops}});
         }
-        const double mc = st["eval"].get<double>();
+        // the upsampling against the full-size pass: the first row's
+        const bool scaled = std::string(key).rfind("scale=", 0) == 0;
+        const double mc = scaled ? out["filters"][0]["mc_ms"].get<double>() : st["eval"].get<double>();
         out["filters"].push_back({{"spec", spec},
                                   {"total_ms", t.median_ms},
                                   {"mc_ms", mc},

@@ -74,7 +74,7 @@ void addBenchCommand(CLI::App& app)
     cmd->add_option("--device", o->device, "OpenCL device index >= 0 (lumibench devices)");
     cmd->add_flag("--quick", o->quick, "Fewer methods and fit points (smoke tests)");
     cmd->add_option("--equal-time", o->equalTime,
-                    "The equal-time protocol as a JSON object: rounds, tolerance, mc, fit, mode "
+                    "The equal-time protocol as a JSON object: rounds, tolerance, mc, fit, mode, subpixel "
                     "(docs/experiments.md; reps and time_res are --reps and --res)");
     cmd->add_flag("--filters", o->filters, "Only the image filters' rows (mc:denoise=...; the header and one section)");
     cmd->add_flag("--json", o->json, "Print one JSON document to stdout");

@@ -35,7 +35,7 @@ TEST(Spec, DefaultsAndValues)
         s.canonical(),
         "mc:atrous_sigma=4,cosine_warp=0,denoise=none,domain=area,extra=0,gauss_radius=0,gauss_sigma=0,lookup=lut,"
         "min_solid=0.001,mis_split=0.5,n=40,"
-        "paper=0,pattern=halton,seed=0,sequence=shared,shift=0,specialize=auto");
+        "paper=0,pattern=halton,scale=1,seed=0,sequence=shared,shift=0,specialize=auto");
     EXPECT_EQ(s.paramsJson()["n"], 40);
     EXPECT_EQ(parseSpec("reference").num("tol"), 1e-5);
     EXPECT_EQ(parseSpec("point:").name, "point");
@@ -87,7 +87,7 @@ TEST(Spec, ErrorsNameWhatIsValid)
     // Unknown key: the valid keys are listed.
     e = errorOf("mc:samples=3");
     EXPECT_NE(e.find("unknown parameter 'samples'"), std::string::npos) << e;
-    EXPECT_NE(e.find("n, extra, pattern, seed"), std::string::npos) << e;
+    EXPECT_NE(e.find("n, extra, scale, pattern, seed"), std::string::npos) << e;
     // cp has no skew (np and mrp do); its keys are listed
     e = errorOf("cp:skew=0.1");
     EXPECT_NE(e.find("unknown parameter 'skew'"), std::string::npos) << e;
