@@ -280,6 +280,20 @@ TEST(Denoise, GaussShapeKeys)
 // values 3 .. 8 whose differences it scales) and double (1e-12); and a
 // rough image against the host's lb_upsample_px, output sizes not a multiple
 // of 8, 1 pixel to 101.
+// lb_upsample of an rin x rin image to rout x rout on the device.
+template <class T>
+std::vector<double> upsampleOn(Device<T>& d, const std::vector<double>& im, int rin, int rout)
+{
+    cl::Buffer in = d.buf(im), out = d.buf(std::vector<double>(static_cast<size_t>(rout) * rout));
+    cl::Kernel k = d.kernel("lb_upsample");
+    k.setArg(0, in);
+    k.setArg(1, cl_int(rin));
+    k.setArg(2, out);
+    k.setArg(3, cl_int(rout));
+    d.run(k, rout);
+    return d.read(out, static_cast<size_t>(rout) * rout);
+}
+
 template <class T>
 void upsampleIsBilinear(ocl::Runtime& rt, double tol)
 {
@@ -297,14 +311,7 @@ void upsampleIsBilinear(ocl::Runtime& rt, double tol)
         for (int r = 0; r < rout; ++r)
             for (int c = 0; c < rout; ++c) host[r * rout + c] = f64::lb_upsample_px(coarse.data(), rin, rout, c, r);
         test::worstRelDiff(want, host, 0, 1e-12, fmt::format("upsample {} -> {} host", rin, rout));
-        cl::Buffer in = d.buf(coarse), out = d.buf(want);
-        cl::Kernel k = d.kernel("lb_upsample");
-        k.setArg(0, in);
-        k.setArg(1, cl_int(rin));
-        k.setArg(2, out);
-        k.setArg(3, cl_int(rout));
-        d.run(k, rout);
-        const double w = test::worstRelDiff(want, d.read(out, want.size()), 0, tol,
+        const double w = test::worstRelDiff(want, upsampleOn(d, coarse, rin, rout), 0, tol,
                                             fmt::format("upsample {} -> {} {}", rin, rout, prec));
         std::printf("upsample %d -> %d, %s: worst relative difference %.2e from the affine image\n", rin, rout, prec,
                     w);
@@ -313,16 +320,9 @@ void upsampleIsBilinear(ocl::Runtime& rt, double tol)
     std::vector<double> want(101 * 101);
     for (int r = 0; r < 101; ++r)
         for (int c = 0; c < 101; ++c) want[r * 101 + c] = f64::lb_upsample_px(rough.data(), 37, 101, c, r);
-    cl::Buffer in = d.buf(rough), out = d.buf(want);
-    cl::Kernel k = d.kernel("lb_upsample");
-    k.setArg(0, in);
-    k.setArg(1, cl_int(37));
-    k.setArg(2, out);
-    k.setArg(3, cl_int(101));
-    d.run(k, 101);
     // relative to the image's largest value: the float coordinate (c + 1/2) rin / rout - 1/2 is off by
     // up to an ulp of rin (2^-18 at 37), times the jump between two neighbours (up to the largest value)
-    test::worstRelDiff(want, d.read(out, want.size()), 1.0, tol, fmt::format("upsample rough {}", prec));
+    test::worstRelDiff(want, upsampleOn(d, rough, 37, 101), 1.0, tol, fmt::format("upsample rough {}", prec));
 }
 
 TEST(Denoise, UpsampleIsBilinearFloat)
